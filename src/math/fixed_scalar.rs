@@ -1,0 +1,500 @@
+//! `Fixed<Frac>`: a 64-bit fixed-point scalar with chosen, documented semantics.
+//!
+//! The value is `bits / 2^F`, where `F = Frac::U32` is the number of fractional bits and
+//! `bits` is an `i64` held in a [`fixed::FixedI64`]. The engine default is [`Fx`]
+//! (I32F32: F = 32, range ±2.1·10⁹, resolution 2.3·10⁻¹⁰).
+//!
+//! # Policy (identical in debug and release, on every target)
+//!
+//! | operation | rounding | out of range |
+//! |---|---|---|
+//! | `+`, `-`, unary `-` | exact | saturates to `MIN`/`MAX`, counted |
+//! | `*` | to nearest, ties toward +∞ | saturates, counted |
+//! | `/` | to nearest, ties away from zero | saturates, counted |
+//! | `/ 0` | `MAX` for x > 0, `MIN` for x < 0, `0` for x = 0 | counted |
+//! | conversions | to nearest | saturates, counted; NaN gives 0 |
+//!
+//! "Counted" means the thread's [saturation counter](super::saturation) goes up by one. The
+//! `fixed` crate's own operators are never used on the simulation path: they panic on
+//! overflow in debug, wrap in release, and round `*` toward −∞.
+
+use core::cmp::Ordering;
+use core::fmt;
+use core::marker::PhantomData;
+use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+use fixed::FixedI64;
+use fixed::types::extra::{LeEqU64, U16, U24, U32};
+use serde::de::{self, Deserializer, Visitor};
+use serde::{Deserialize, Serialize, Serializer};
+
+use super::real::{ParseRealError, Real};
+use super::saturation::record_saturation;
+use super::{exp, sqrt, trig};
+
+/// The fractional-bit count of a [`Fixed`] type: a `typenum` unsigned from the `fixed`
+/// crate (`U16`, `U24`, `U32`, …).
+pub trait FracBits: LeEqU64 + Send + Sync + 'static {}
+
+impl<T: LeEqU64 + Send + Sync + 'static> FracBits for T {}
+
+/// A fixed-point number with `Frac::U32` fractional bits in an `i64`. See the module
+/// documentation for the arithmetic policy.
+#[repr(transparent)]
+pub struct Fixed<Frac: FracBits>(FixedI64<Frac>);
+
+/// The engine's default scalar: I32F32.
+pub type Fx = Fixed<U32>;
+/// I32F32 by its format name; the same type as [`Fx`].
+pub type FxI32F32 = Fixed<U32>;
+/// I48F16: a larger range (±1.4·10¹⁴) and a coarser resolution (1.5·10⁻⁵).
+pub type FxI48F16 = Fixed<U16>;
+/// I40F24: range ±5.5·10¹¹, resolution 6·10⁻⁸.
+pub type FxI40F24 = Fixed<U24>;
+
+/// π·2⁶¹, correctly rounded: the source of π for every fractional width.
+const PI_Q61: i64 = 7_244_019_458_077_122_842;
+
+/// Narrows an `i128` to `i64`, saturating and counting when it does not fit.
+#[inline(always)]
+pub(crate) fn saturate_i128(value: i128) -> i64 {
+    if value > i64::MAX as i128 {
+        record_saturation();
+        i64::MAX
+    } else if value < i64::MIN as i128 {
+        record_saturation();
+        i64::MIN
+    } else {
+        value as i64
+    }
+}
+
+/// Product of two raw values with `frac` fractional bits: `(a·b + 2^(frac−1)) >> frac`,
+/// i.e. rounded to nearest with ties toward +∞, saturated and counted.
+#[inline(always)]
+pub(crate) fn mul_bits(a: i64, b: i64, frac: u32) -> i64 {
+    let product = a as i128 * b as i128;
+    saturate_i128((product + (1i128 << (frac - 1))) >> frac)
+}
+
+/// Quotient of two raw values with `frac` fractional bits: `round(a·2^frac / b)`, ties away
+/// from zero, saturated and counted. `b = 0` gives `MAX`, `MIN` or `0` by the sign of `a`.
+#[inline(always)]
+pub(crate) fn div_bits(a: i64, b: i64, frac: u32) -> i64 {
+    if b == 0 {
+        record_saturation();
+        return match a.cmp(&0) {
+            Ordering::Greater => i64::MAX,
+            Ordering::Less => i64::MIN,
+            Ordering::Equal => 0,
+        };
+    }
+    let numerator = (a.unsigned_abs() as u128) << frac;
+    let divisor = b.unsigned_abs() as u128;
+    let magnitude = (numerator + (divisor >> 1)) / divisor;
+    let negative = (a < 0) != (b < 0);
+    if negative {
+        if magnitude > 1u128 << 63 {
+            record_saturation();
+            i64::MIN
+        } else {
+            (magnitude as i128).wrapping_neg() as i64
+        }
+    } else if magnitude > i64::MAX as u128 {
+        record_saturation();
+        i64::MAX
+    } else {
+        magnitude as i64
+    }
+}
+
+impl<Frac: FracBits> Fixed<Frac> {
+    /// Number of fractional bits.
+    pub const FRAC_BITS: u32 = {
+        assert!(
+            Frac::U32 >= 8 && Frac::U32 <= 60,
+            "fixstep supports 8 to 60 fractional bits"
+        );
+        Frac::U32
+    };
+
+    /// The value whose raw representation is `bits` (value = bits / 2^F).
+    #[inline(always)]
+    pub const fn from_bits(bits: i64) -> Self {
+        Fixed(FixedI64::from_bits(bits))
+    }
+
+    /// The raw representation.
+    #[inline(always)]
+    pub const fn to_bits(self) -> i64 {
+        self.0.to_bits()
+    }
+
+    /// The same value as the `fixed` crate's type.
+    #[inline(always)]
+    pub const fn to_fixed(self) -> FixedI64<Frac> {
+        self.0
+    }
+
+    /// Wraps a value of the `fixed` crate's type.
+    #[inline(always)]
+    pub const fn from_fixed(value: FixedI64<Frac>) -> Self {
+        Fixed(value)
+    }
+
+    /// Converts any number the `fixed` crate can convert (integers, floats, other fixed
+    /// types), rounded to nearest and saturated; NaN gives zero. For scene loading.
+    pub fn from_num<Src: fixed::traits::ToFixed + Copy>(value: Src) -> Self {
+        match value.checked_to_fixed::<FixedI64<Frac>>() {
+            Some(v) => Fixed(v),
+            None => {
+                record_saturation();
+                Fixed(value.saturating_to_fixed())
+            }
+        }
+    }
+
+    /// π·2^F rounded to nearest, from the Q61 constant.
+    const fn pi_bits(multiple_log2: u32) -> i64 {
+        let shift = 61 - Frac::U32 - multiple_log2;
+        (PI_Q61 + (1i64 << (shift - 1))) >> shift
+    }
+}
+
+impl<Frac: FracBits> Clone for Fixed<Frac> {
+    #[inline(always)]
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<Frac: FracBits> Copy for Fixed<Frac> {}
+
+impl<Frac: FracBits> Default for Fixed<Frac> {
+    #[inline(always)]
+    fn default() -> Self {
+        Self::from_bits(0)
+    }
+}
+
+impl<Frac: FracBits> PartialEq for Fixed<Frac> {
+    #[inline(always)]
+    fn eq(&self, other: &Self) -> bool {
+        self.to_bits() == other.to_bits()
+    }
+}
+
+impl<Frac: FracBits> Eq for Fixed<Frac> {}
+
+impl<Frac: FracBits> PartialOrd for Fixed<Frac> {
+    #[inline(always)]
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl<Frac: FracBits> Ord for Fixed<Frac> {
+    #[inline(always)]
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.to_bits().cmp(&other.to_bits())
+    }
+}
+
+impl<Frac: FracBits> fmt::Debug for Fixed<Frac> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl<Frac: FracBits> fmt::Display for Fixed<Frac> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl<Frac: FracBits> Add for Fixed<Frac> {
+    type Output = Self;
+    /// Saturating, counted.
+    #[inline(always)]
+    fn add(self, rhs: Self) -> Self {
+        match self.to_bits().checked_add(rhs.to_bits()) {
+            Some(bits) => Self::from_bits(bits),
+            None => {
+                record_saturation();
+                Self::from_bits(self.to_bits().saturating_add(rhs.to_bits()))
+            }
+        }
+    }
+}
+
+impl<Frac: FracBits> Sub for Fixed<Frac> {
+    type Output = Self;
+    /// Saturating, counted.
+    #[inline(always)]
+    fn sub(self, rhs: Self) -> Self {
+        match self.to_bits().checked_sub(rhs.to_bits()) {
+            Some(bits) => Self::from_bits(bits),
+            None => {
+                record_saturation();
+                Self::from_bits(self.to_bits().saturating_sub(rhs.to_bits()))
+            }
+        }
+    }
+}
+
+impl<Frac: FracBits> Neg for Fixed<Frac> {
+    type Output = Self;
+    /// Saturating: −MIN is MAX, counted.
+    #[inline(always)]
+    fn neg(self) -> Self {
+        match self.to_bits().checked_neg() {
+            Some(bits) => Self::from_bits(bits),
+            None => {
+                record_saturation();
+                Self::from_bits(i64::MAX)
+            }
+        }
+    }
+}
+
+impl<Frac: FracBits> Mul for Fixed<Frac> {
+    type Output = Self;
+    /// Rounded to nearest (ties toward +∞), saturating, counted.
+    #[inline(always)]
+    fn mul(self, rhs: Self) -> Self {
+        Self::from_bits(mul_bits(self.to_bits(), rhs.to_bits(), Self::FRAC_BITS))
+    }
+}
+
+impl<Frac: FracBits> Div for Fixed<Frac> {
+    type Output = Self;
+    /// Rounded to nearest (ties away from zero), saturating; `x / 0` is `MAX`, `MIN` or 0.
+    #[inline(always)]
+    fn div(self, rhs: Self) -> Self {
+        Self::from_bits(div_bits(self.to_bits(), rhs.to_bits(), Self::FRAC_BITS))
+    }
+}
+
+macro_rules! assign_op {
+    ($Trait:ident, $method:ident, $op:tt) => {
+        impl<Frac: FracBits> $Trait for Fixed<Frac> {
+            #[inline(always)]
+            fn $method(&mut self, rhs: Self) {
+                *self = *self $op rhs;
+            }
+        }
+    };
+}
+assign_op!(AddAssign, add_assign, +);
+assign_op!(SubAssign, sub_assign, -);
+assign_op!(MulAssign, mul_assign, *);
+assign_op!(DivAssign, div_assign, /);
+
+impl<Frac: FracBits> Real for Fixed<Frac> {
+    const NAME: &'static str = match Frac::U32 {
+        16 => "I48F16",
+        24 => "I40F24",
+        32 => "I32F32",
+        _ => "I64Fx",
+    };
+    const ZERO: Self = Self::from_bits(0);
+    const ONE: Self = Self::from_bits(1 << Self::FRAC_BITS);
+    const TWO: Self = Self::from_bits(2 << Self::FRAC_BITS);
+    const HALF: Self = Self::from_bits(1 << (Self::FRAC_BITS - 1));
+    const PI: Self = Self::from_bits(Self::pi_bits(0));
+    const FRAC_PI_2: Self = Self::from_bits(Self::pi_bits(0) >> 1);
+    const TAU: Self = Self::from_bits(Self::pi_bits(1));
+    const MAX: Self = Self::from_bits(i64::MAX);
+    const MIN: Self = Self::from_bits(i64::MIN);
+    const EPSILON: Self = Self::from_bits(1);
+
+    #[inline]
+    fn from_int(value: i32) -> Self {
+        Self::from_bits(saturate_i128((value as i128) << Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn from_ratio(num: i64, den: i64) -> Self {
+        Self::from_bits(div_bits(num, den, Self::FRAC_BITS))
+    }
+
+    fn from_f64(value: f64) -> Self {
+        if value.is_nan() {
+            record_saturation();
+            return Self::ZERO;
+        }
+        Self::from_num(value)
+    }
+
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self.0.to_num::<f64>()
+    }
+
+    fn parse_decimal(text: &str) -> Result<Self, ParseRealError> {
+        text.trim()
+            .parse::<FixedI64<Frac>>()
+            .map(Fixed)
+            .map_err(|e| ParseRealError {
+                text: text.to_owned(),
+                reason: e.to_string(),
+            })
+    }
+
+    #[inline(always)]
+    fn canonical_bits(self) -> u64 {
+        self.to_bits() as u64
+    }
+
+    #[inline(always)]
+    fn total_cmp(&self, other: &Self) -> Ordering {
+        self.cmp(other)
+    }
+
+    #[inline(always)]
+    fn abs(self) -> Self {
+        match self.to_bits().checked_abs() {
+            Some(bits) => Self::from_bits(bits),
+            None => {
+                record_saturation();
+                Self::MAX
+            }
+        }
+    }
+
+    #[inline]
+    fn sqrt(self) -> Self {
+        Self::from_bits(sqrt::sqrt_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn rsqrt(self) -> Self {
+        Self::from_bits(sqrt::rsqrt_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn sin(self) -> Self {
+        Self::from_bits(trig::sin_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn cos(self) -> Self {
+        Self::from_bits(trig::cos_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn sin_cos(self) -> (Self, Self) {
+        let (s, c) = trig::sin_cos_bits(self.to_bits(), Self::FRAC_BITS);
+        (Self::from_bits(s), Self::from_bits(c))
+    }
+
+    #[inline]
+    fn atan2(self, x: Self) -> Self {
+        Self::from_bits(trig::atan2_bits(
+            self.to_bits(),
+            x.to_bits(),
+            Self::FRAC_BITS,
+        ))
+    }
+
+    #[inline]
+    fn asin(self) -> Self {
+        Self::from_bits(trig::asin_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn acos(self) -> Self {
+        Self::from_bits(trig::acos_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn exp(self) -> Self {
+        Self::from_bits(exp::exp_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn ln(self) -> Self {
+        Self::from_bits(exp::ln_bits(self.to_bits(), Self::FRAC_BITS))
+    }
+
+    #[inline]
+    fn powf(self, y: Self) -> Self {
+        Self::from_bits(exp::powf_bits(self.to_bits(), y.to_bits(), Self::FRAC_BITS))
+    }
+}
+
+impl<Frac: FracBits> Serialize for Fixed<Frac> {
+    /// Binary formats: the raw `i64` bits (bincode writes them as 8 little-endian bytes).
+    /// Human-readable formats: a plain number when it converts back to exactly these bits,
+    /// otherwise the shortest exact decimal string.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        if serializer.is_human_readable() {
+            let text = self.0.to_string();
+            match text.parse::<f64>() {
+                Ok(v) if Self::from_num(v) == *self => serializer.serialize_f64(v),
+                _ => serializer.serialize_str(&text),
+            }
+        } else {
+            serializer.serialize_i64(self.to_bits())
+        }
+    }
+}
+
+impl<'de, Frac: FracBits> Deserialize<'de> for Fixed<Frac> {
+    /// Binary formats: the raw `i64` bits. Human-readable formats: a number (integer or
+    /// float) or a decimal string, rounded to nearest; out-of-range values are an error.
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        if deserializer.is_human_readable() {
+            deserializer.deserialize_any(HumanVisitor(PhantomData))
+        } else {
+            i64::deserialize(deserializer).map(Self::from_bits)
+        }
+    }
+}
+
+struct HumanVisitor<Frac>(PhantomData<Frac>);
+
+impl<Frac: FracBits> Visitor<'_> for HumanVisitor<Frac> {
+    type Value = Fixed<Frac>;
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "a number in the range of {}",
+            <Fixed<Frac> as Real>::NAME
+        )
+    }
+
+    fn visit_i64<E: de::Error>(self, v: i64) -> Result<Self::Value, E> {
+        v.checked_to_fixed_or(self)
+    }
+
+    fn visit_u64<E: de::Error>(self, v: u64) -> Result<Self::Value, E> {
+        v.checked_to_fixed_or(self)
+    }
+
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Self::Value, E> {
+        if !v.is_finite() {
+            return Err(E::custom(format_args!("{v} is not a finite number")));
+        }
+        v.checked_to_fixed_or(self)
+    }
+
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<Self::Value, E> {
+        Fixed::<Frac>::parse_decimal(v).map_err(E::custom)
+    }
+}
+
+/// Range-checked conversion for the human-readable visitor.
+trait CheckedToFixedOr: fixed::traits::ToFixed + fmt::Display + Copy {
+    fn checked_to_fixed_or<Frac: FracBits, E: de::Error>(
+        self,
+        visitor: HumanVisitor<Frac>,
+    ) -> Result<Fixed<Frac>, E> {
+        self.checked_to_fixed::<FixedI64<Frac>>()
+            .map(Fixed)
+            .ok_or_else(|| E::invalid_value(de::Unexpected::Other(&self.to_string()), &visitor))
+    }
+}
+
+impl<T: fixed::traits::ToFixed + fmt::Display + Copy> CheckedToFixedOr for T {}

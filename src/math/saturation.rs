@@ -1,0 +1,38 @@
+//! The saturation counter.
+//!
+//! Every fixed-point operation that leaves the representable range clamps to the nearest
+//! bound and adds one to this counter; so does a division by zero. The world reads the
+//! counter around a tick and reports it (the `saturations` metric). The counter is
+//! diagnostic: it is kept per thread, outside the simulated state, and never enters a
+//! checksum. It costs nothing on the common path, since it is only touched on saturation.
+
+use std::cell::Cell;
+
+thread_local! {
+    static SATURATIONS: Cell<u64> = const { Cell::new(0) };
+}
+
+/// Records one saturation event. Called only on the cold path of an operator.
+#[cold]
+#[inline(never)]
+pub(crate) fn record_saturation() {
+    SATURATIONS.with(|c| c.set(c.get().wrapping_add(1)));
+}
+
+/// The number of saturation events on this thread since it started or since the last
+/// [`reset_saturation_count`].
+pub fn saturation_count() -> u64 {
+    SATURATIONS.with(Cell::get)
+}
+
+/// Sets this thread's saturation counter back to zero.
+pub fn reset_saturation_count() {
+    SATURATIONS.with(|c| c.set(0));
+}
+
+/// Runs `f` and returns its result with the number of saturations it caused on this thread.
+pub fn count_saturations<T>(f: impl FnOnce() -> T) -> (T, u64) {
+    let before = saturation_count();
+    let value = f();
+    (value, saturation_count().wrapping_sub(before))
+}
