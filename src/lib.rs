@@ -1,1 +1,14 @@
+//! fixstep: a deterministic fixed-point 3D physics engine.
+//!
+//! Every simulated quantity is fixed point ([`math::Fx`], I32F32 by default), iteration order
+//! is deterministic, and the same scene with the same inputs gives the same bits on every
+//! machine. Data flows one way: [`scene`] → [`world`] → stages → state → checksum and
+//! [`replay`].
+
+pub mod cli;
+pub mod codec;
 pub mod math;
+pub mod particles;
+pub mod replay;
+pub mod scene;
+pub mod world;

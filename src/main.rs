@@ -1,1 +1,5 @@
-fn main() {}
+//! The `fixstep` binary: see [`fixstep::cli`].
+
+fn main() {
+    std::process::exit(fixstep::cli::main())
+}

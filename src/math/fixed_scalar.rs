@@ -431,7 +431,9 @@ impl<Frac: FracBits> Serialize for Fixed<Frac> {
         if serializer.is_human_readable() {
             let text = self.0.to_string();
             match text.parse::<f64>() {
-                Ok(v) if Self::from_num(v) == *self => serializer.serialize_f64(v),
+                Ok(v) if fixed::traits::ToFixed::checked_to_fixed(v) == Some(self.0) => {
+                    serializer.serialize_f64(v)
+                }
                 _ => serializer.serialize_str(&text),
             }
         } else {

@@ -4,12 +4,20 @@
 pub mod exp;
 pub mod fixed_scalar;
 pub mod float_scalar;
+pub mod mat3;
+pub mod quat;
 pub mod real;
+pub mod rng;
 pub mod saturation;
 pub mod sqrt;
+pub mod state_hash;
 pub mod trig;
 pub mod vec3;
 
 pub use fixed_scalar::{Fixed, FracBits, Fx, FxI32F32, FxI40F24, FxI48F16};
+pub use mat3::Mat3;
+pub use quat::Quat;
 pub use real::{ParseRealError, Real};
+pub use rng::Pcg32;
+pub use state_hash::StateHasher;
 pub use vec3::Vec3;

@@ -219,6 +219,7 @@ impl<R: Real> Div<R> for Vec3<R> {
     type Output = Self;
     /// Divides by `s` through one reciprocal (one division, three multiplies).
     #[inline]
+    #[allow(clippy::suspicious_arithmetic_impl)] // v / s = v · (1/s), on purpose
     fn div(self, s: R) -> Self {
         self * s.recip()
     }

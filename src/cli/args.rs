@@ -1,0 +1,91 @@
+//! The command line, as clap sees it. This interface is a contract: scripts and tests use it.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+
+/// Deterministic fixed-point physics: run scenes, record and verify replays.
+///
+/// With no command, runs the showcase scene.
+#[derive(Debug, Parser)]
+#[command(name = "fixstep", version)]
+pub struct Cli {
+    /// What to do (default: `run showcase`).
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// List the built-in scenes.
+    Scenes,
+    /// Run a scene, print stage timings and the final checksum.
+    Run(RunArgs),
+    /// Simulate replays again and compare every checkpoint (exit 1 on a desync, 2 on a bad
+    /// file).
+    Verify {
+        /// Replay files.
+        #[arg(required = true, value_name = "FILE.replay")]
+        files: Vec<PathBuf>,
+    },
+    /// Describe a replay: header, scene, ticks, checkpoints.
+    Info {
+        /// A replay file.
+        #[arg(value_name = "FILE.replay")]
+        file: PathBuf,
+    },
+    /// Record replays again with this build (after a deliberate change to the physics).
+    Rerecord {
+        /// Replay files, rewritten in place.
+        #[arg(required = true, value_name = "FILE.replay")]
+        files: Vec<PathBuf>,
+    },
+}
+
+/// Arguments of `fixstep run`.
+#[derive(Debug, Args)]
+pub struct RunArgs {
+    /// A built-in scene name (see `fixstep scenes`) or a RON scene file.
+    #[arg(value_name = "SCENE|FILE.ron", default_value = "showcase")]
+    pub scene: String,
+    /// Ticks to run (default: the scene's `ticks`).
+    #[arg(long, value_name = "N")]
+    pub ticks: Option<u64>,
+    /// Seed of the world's generator, decimal or 0x-prefixed hex (default: the scene's).
+    #[arg(long, value_name = "S", value_parser = parse_seed)]
+    pub seed: Option<u64>,
+    /// Write a replay of the run to this file.
+    #[arg(long, value_name = "OUT.replay")]
+    pub record: Option<PathBuf>,
+    /// Write metrics as CSV to this file.
+    #[arg(long, value_name = "OUT.csv")]
+    pub metrics: Option<PathBuf>,
+    /// Write a metrics row every K ticks (and after the last tick).
+    #[arg(long, value_name = "K", default_value_t = 1,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+}
+
+impl Default for RunArgs {
+    /// `fixstep run showcase`.
+    fn default() -> Self {
+        Self {
+            scene: "showcase".to_owned(),
+            ticks: None,
+            seed: None,
+            record: None,
+            metrics: None,
+            every: 1,
+        }
+    }
+}
+
+/// A seed: decimal, or hexadecimal after `0x`.
+fn parse_seed(text: &str) -> Result<u64, String> {
+    let parsed = match text.strip_prefix("0x").or_else(|| text.strip_prefix("0X")) {
+        Some(hex) => u64::from_str_radix(hex, 16),
+        None => text.parse(),
+    };
+    parsed.map_err(|e| format!("`{text}` is not a 64-bit seed: {e}"))
+}

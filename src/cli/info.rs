@@ -1,0 +1,99 @@
+//! `fixstep info`: what a replay holds, without simulating it.
+
+use std::path::Path;
+
+use super::output::print_line;
+use super::status::Status;
+use crate::math::Fx;
+use crate::particles::{ForceDesc, ParticlesDesc};
+use crate::replay::format::FORMAT_VERSION;
+use crate::replay::{Replay, StateVersionCheck};
+use crate::world::STATE_VERSION;
+use crate::world::checksum::hex;
+
+/// Prints the header fields, a scene summary and the checkpoints of a replay.
+pub fn info(path: &Path) -> Result<Status, String> {
+    let replay =
+        Replay::read_with(path, StateVersionCheck::CurrentOrOlder).map_err(|e| e.to_string())?;
+    let header = replay
+        .header()
+        .map_err(|e| format!("{}: cannot encode the replay: {e}", path.display()))?;
+    let scene = replay.scene();
+    let gravity = scene.gravity;
+    let mut lines = vec![
+        format!("file: {}", path.display()),
+        format!("format version: {FORMAT_VERSION}"),
+        format!(
+            "state version: {} (this build: {STATE_VERSION})",
+            header.state_version
+        ),
+        format!("scalar: {}", header.scalar),
+        format!("scene: {}", scene.name),
+        format!("description: {}", scene.description),
+        format!("tick rate: {} Hz", scene.tick_rate),
+        format!("substeps: {}", scene.substeps),
+        format!("seed: {:#x}", scene.seed),
+        format!(
+            "gravity: ({}, {}, {}) m/s²",
+            gravity.x, gravity.y, gravity.z
+        ),
+        format!("particles: {}", particles_summary(scene.particles.as_ref())),
+        format!("ticks: {}", replay.ticks()),
+        format!("input ticks: {}", replay.inputs().len()),
+        format!(
+            "checkpoints: {} (every {} ticks)",
+            replay.checkpoints().len(),
+            replay.checksum_every()
+        ),
+        format!(
+            "sections: scene {} bytes (hash {}), inputs {} bytes (hash {})",
+            header.scene_len,
+            hex(header.scene_hash),
+            header.inputs_len,
+            hex(header.inputs_hash)
+        ),
+        format!("final checksum: {}", hex(replay.final_checksum())),
+    ];
+    if header.state_version != STATE_VERSION {
+        lines.push(format!(
+            "note: recorded with state version {}; `fixstep rerecord` records it again",
+            header.state_version
+        ));
+    }
+    for line in lines {
+        print_line(&line)?;
+    }
+    Ok(Status::Ok)
+}
+
+/// Particle count, templates, emitters and forces of the scene's particle section.
+fn particles_summary(particles: Option<&ParticlesDesc<Fx>>) -> String {
+    let Some(desc) = particles else {
+        return "none".to_owned();
+    };
+    let forces: Vec<&str> = desc.forces.iter().map(force_name).collect();
+    format!(
+        "{} initial, {} templates, {} emitters, {} forces ({}), {:?} integrator, capacity {}",
+        desc.particles.len(),
+        desc.templates.len(),
+        desc.emitters.len(),
+        desc.forces.len(),
+        forces.join(", "),
+        desc.integrator,
+        desc.capacity
+    )
+}
+
+/// A force generator's kind, for the summary.
+fn force_name(force: &ForceDesc<Fx>) -> &'static str {
+    match force {
+        ForceDesc::Gravity { .. } => "gravity",
+        ForceDesc::LinearDrag { .. } => "linear drag",
+        ForceDesc::QuadraticDrag { .. } => "quadratic drag",
+        ForceDesc::Damping { .. } => "damping",
+        ForceDesc::AnchoredSpring { .. } => "anchored spring",
+        ForceDesc::Spring { .. } => "spring",
+        ForceDesc::PointGravity { .. } => "point gravity",
+        ForceDesc::User { .. } => "user",
+    }
+}

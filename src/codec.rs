@@ -1,0 +1,77 @@
+//! The one binary encoding of fixstep: replay files and snapshots.
+//!
+//! bincode 2.0.1 with its serde bridge, little-endian fixed-width integers (every `u64` is 8
+//! bytes, every length a `u64`), and a size limit. Fixed-width encoding is canonical: each
+//! value has exactly one encoding, unlike bincode's default varints. A length field larger
+//! than the limit is refused before anything is allocated. Switching encodings later is a
+//! change to this file alone.
+
+use core::fmt;
+
+use bincode::config::{Configuration, Fixint, LittleEndian, Limit};
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+
+/// The largest encoded value accepted or produced: 256 MiB.
+pub const SIZE_LIMIT: usize = 256 << 20;
+
+type Config = Configuration<LittleEndian, Fixint, Limit<SIZE_LIMIT>>;
+
+fn config() -> Config {
+    bincode::config::standard()
+        .with_little_endian()
+        .with_fixed_int_encoding()
+        .with_limit::<SIZE_LIMIT>()
+}
+
+/// Why bytes could not be encoded or decoded.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CodecError(pub String);
+
+impl fmt::Display for CodecError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for CodecError {}
+
+/// Encodes `value` canonically.
+pub fn encode<T: Serialize + ?Sized>(value: &T) -> Result<Vec<u8>, CodecError> {
+    bincode::serde::encode_to_vec(value, config()).map_err(|e| CodecError(e.to_string()))
+}
+
+/// Decodes one value from the start of `bytes`; returns it with the number of bytes used.
+pub fn decode_prefix<T: DeserializeOwned>(bytes: &[u8]) -> Result<(T, usize), CodecError> {
+    bincode::serde::decode_from_slice(bytes, config()).map_err(|e| CodecError(describe(e)))
+}
+
+/// Decodes a value that must use exactly all of `bytes`.
+pub fn decode_exact<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, CodecError> {
+    let (value, used) = decode_prefix(bytes)?;
+    if used != bytes.len() {
+        return Err(CodecError(format!(
+            "{} unexpected bytes after the end of the value",
+            bytes.len() - used
+        )));
+    }
+    Ok(value)
+}
+
+/// A short, user-facing description of a decode failure.
+fn describe(error: bincode::error::DecodeError) -> String {
+    use bincode::error::DecodeError as E;
+    match error {
+        E::UnexpectedEnd { additional } => {
+            format!("truncated: {additional} more bytes needed")
+        }
+        E::LimitExceeded => format!("a length field exceeds the {SIZE_LIMIT}-byte limit"),
+        E::UnexpectedVariant { found, type_name, .. } => {
+            format!("invalid variant {found} for {type_name}")
+        }
+        E::Utf8 { .. } => "a string is not valid UTF-8".to_owned(),
+        E::InvalidBooleanValue(v) => format!("invalid boolean byte {v}"),
+        E::OutsideUsizeRange(v) => format!("length {v} is out of range"),
+        other => other.to_string(),
+    }
+}

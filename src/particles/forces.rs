@@ -1,0 +1,247 @@
+//! Force generators in compiled form, and the evaluation of the acceleration a(x, v) of
+//! every particle.
+//!
+//! Evaluation is a pure function of the positions and velocities it is given (plus masses,
+//! groups, the tick's external forces and gravity), so RK4 can evaluate it at its stages.
+//! It runs in three passes over the slots, each in ascending slot order:
+//!
+//! 1. `F_i ← external force of the tick`;
+//! 2. every force generator in scene order adds to `F_i` (drag, springs, user forces);
+//! 3. `a_i ← F_i / m_i + Σ acceleration fields` (gravity, point gravity), fields in scene
+//!    order; pinned and dead slots get `a_i = 0`.
+
+use serde::{Deserialize, Serialize};
+
+use super::damping::Damping;
+use super::desc::SpringDesc;
+use super::storage::Attributes;
+use super::user_force::{ParticleView, UserForceRegistry};
+use crate::math::{Real, Vec3};
+use crate::world::Handle;
+
+/// The compiled force list of a system, split by how each entry acts.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub(crate) struct ForceSet<R: Real> {
+    /// Mass-independent accelerations, in scene order.
+    pub fields: Vec<AccelerationField<R>>,
+    /// Forces, in scene order.
+    pub generators: Vec<ForceGenerator<R>>,
+    /// Velocity damping, applied after each step, in scene order.
+    pub dampings: Vec<Damping<R>>,
+}
+
+/// An acceleration that does not depend on the particle's mass.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub(crate) enum AccelerationField<R: Real> {
+    /// a = scale · g, m/s².
+    Gravity { scale: R, group: Option<u16> },
+    /// a = −GM r (|r|² + ε²)^{−3/2}, m/s², r = x − centre.
+    PointGravity {
+        centre: Vec3<R>,
+        gm: R,
+        softening_squared: R,
+        group: Option<u16>,
+    },
+}
+
+/// A generator of forces (N).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub(crate) enum ForceGenerator<R: Real> {
+    /// F = −k v.
+    LinearDrag { coefficient: R, group: Option<u16> },
+    /// F = −k |v| v.
+    QuadraticDrag { coefficient: R, group: Option<u16> },
+    /// A damped spring from a fixed anchor to a particle.
+    AnchoredSpring {
+        particle: Handle,
+        anchor: Vec3<R>,
+        spring: SpringDesc<R>,
+    },
+    /// A damped spring between two particles.
+    Spring {
+        first: Handle,
+        second: Handle,
+        spring: SpringDesc<R>,
+    },
+    /// A registered [`ParticleForce`](super::ParticleForce); `scene_index` is its position in
+    /// the scene's force list, for error messages.
+    User { name: String, scene_index: u32 },
+}
+
+/// True when a generator restricted to `restriction` acts on a particle of `group`.
+#[inline(always)]
+pub(crate) fn applies_to(restriction: Option<u16>, group: u16) -> bool {
+    restriction.is_none_or(|g| g == group)
+}
+
+/// Force on the first end of a damped spring, N:
+/// F = −(k (ℓ − ℓ₀) + c (v_rel · û)) û, with `offset` d = x₁ − x₂ (m), ℓ = |d|, û = d/ℓ and
+/// `relative_velocity` v_rel = v₁ − v₂ (m/s). The second end feels −F. Zero when the ends
+/// coincide, since the spring then has no axis.
+#[inline]
+pub(crate) fn spring_force<R: Real>(
+    spring: &SpringDesc<R>,
+    offset: Vec3<R>,
+    relative_velocity: Vec3<R>,
+) -> Vec3<R> {
+    let length_squared = offset.length_squared();
+    if length_squared == R::ZERO {
+        return Vec3::ZERO;
+    }
+    let length = length_squared.sqrt();
+    let axis = offset * length.recip();
+    let tension = spring.stiffness * (length - spring.rest_length)
+        + spring.damping * relative_velocity.dot(axis);
+    axis * -tension
+}
+
+/// Softened point-gravity acceleration, m/s²: a = −GM r (|r|² + ε²)^{−3/2}, with `offset`
+/// r = x − centre (m), `gm` in m³/s² and `softening_squared` ε² in m². One `rsqrt`, no
+/// division.
+#[inline]
+pub(crate) fn point_gravity_acceleration<R: Real>(
+    offset: Vec3<R>,
+    gm: R,
+    softening_squared: R,
+) -> Vec3<R> {
+    let inv_distance = (offset.length_squared() + softening_squared).rsqrt();
+    offset * -(gm * inv_distance * inv_distance * inv_distance)
+}
+
+/// Everything force evaluation needs besides the positions and velocities, fixed for one
+/// step.
+pub(crate) struct ForceField<'a, R: Real> {
+    forces: &'a ForceSet<R>,
+    user_forces: &'a UserForceRegistry<R>,
+    attributes: &'a Attributes<R>,
+    /// World gravity g, m/s².
+    gravity: Vec3<R>,
+    /// Σ scale · g over the gravity fields without a group restriction, m/s².
+    uniform_gravity: Vec3<R>,
+}
+
+impl<'a, R: Real> ForceField<'a, R> {
+    /// The field of `forces` acting on the particles described by `attributes`, under the
+    /// world gravity `gravity` (m/s²).
+    pub fn new(
+        forces: &'a ForceSet<R>,
+        user_forces: &'a UserForceRegistry<R>,
+        attributes: &'a Attributes<R>,
+        gravity: Vec3<R>,
+    ) -> Self {
+        let uniform_gravity = forces
+            .fields
+            .iter()
+            .fold(Vec3::ZERO, |sum, field| match *field {
+                AccelerationField::Gravity { scale, group: None } => sum + gravity * scale,
+                _ => sum,
+            });
+        Self {
+            forces,
+            user_forces,
+            attributes,
+            gravity,
+            uniform_gravity,
+        }
+    }
+
+    /// Writes a_i(x, v) (m/s²) for every slot into `out`, given positions `x` (m) and
+    /// velocities `v` (m/s) of every slot. All three slices have the slot count as length.
+    pub fn accelerations(&self, x: &[Vec3<R>], v: &[Vec3<R>], out: &mut [Vec3<R>]) {
+        let attributes = self.attributes;
+        out.copy_from_slice(&attributes.external_forces);
+        for generator in &self.forces.generators {
+            self.add_forces(generator, x, v, out);
+        }
+        for (i, acceleration) in out.iter_mut().enumerate() {
+            let inv_mass = attributes.inv_masses[i];
+            if inv_mass == R::ZERO {
+                *acceleration = Vec3::ZERO;
+                continue;
+            }
+            let mut total = *acceleration * inv_mass + self.uniform_gravity;
+            let group = attributes.groups[i];
+            for field in &self.forces.fields {
+                match *field {
+                    AccelerationField::Gravity {
+                        scale,
+                        group: Some(only),
+                    } if only == group => total += self.gravity * scale,
+                    AccelerationField::PointGravity {
+                        centre,
+                        gm,
+                        softening_squared,
+                        group: restriction,
+                    } if applies_to(restriction, group) => {
+                        total += point_gravity_acceleration(x[i] - centre, gm, softening_squared);
+                    }
+                    _ => {}
+                }
+            }
+            *acceleration = total;
+        }
+    }
+
+    /// Adds the forces (N) of one generator to `forces`.
+    fn add_forces(
+        &self,
+        generator: &ForceGenerator<R>,
+        x: &[Vec3<R>],
+        v: &[Vec3<R>],
+        forces: &mut [Vec3<R>],
+    ) {
+        let attributes = self.attributes;
+        match *generator {
+            ForceGenerator::LinearDrag { coefficient, group } => {
+                for (i, force) in forces.iter_mut().enumerate() {
+                    if attributes.is_movable(i) && applies_to(group, attributes.groups[i]) {
+                        *force -= v[i] * coefficient;
+                    }
+                }
+            }
+            ForceGenerator::QuadraticDrag { coefficient, group } => {
+                for (i, force) in forces.iter_mut().enumerate() {
+                    if attributes.is_movable(i) && applies_to(group, attributes.groups[i]) {
+                        *force -= v[i] * (coefficient * v[i].length());
+                    }
+                }
+            }
+            ForceGenerator::AnchoredSpring {
+                particle,
+                anchor,
+                ref spring,
+            } => {
+                if let Some(i) = attributes.resolve(particle) {
+                    forces[i] += spring_force(spring, x[i] - anchor, v[i]);
+                }
+            }
+            ForceGenerator::Spring {
+                first,
+                second,
+                ref spring,
+            } => {
+                if let (Some(i), Some(j)) = (attributes.resolve(first), attributes.resolve(second))
+                {
+                    let force = spring_force(spring, x[i] - x[j], v[i] - v[j]);
+                    forces[i] += force;
+                    forces[j] -= force;
+                }
+            }
+            ForceGenerator::User { ref name, .. } => {
+                if let Some(user_force) = self.user_forces.get(name) {
+                    let view = ParticleView {
+                        positions: x,
+                        velocities: v,
+                        inv_masses: &attributes.inv_masses,
+                        groups: &attributes.groups,
+                        alive: &attributes.alive,
+                    };
+                    user_force.accumulate(&view, forces);
+                }
+            }
+        }
+    }
+}

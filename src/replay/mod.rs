@@ -1,0 +1,25 @@
+//! Replays: record a run, write it to a file, read it back and verify it bit for bit.
+//!
+//! A replay file holds a scene, the inputs fed to it and the world checksums at regular
+//! checkpoints (layout in [`format`]). [`verify`] simulates the scene and inputs again and
+//! compares every checkpoint; [`rerecord`] records them again after a deliberate change to
+//! the engine.
+
+mod atomic;
+mod decode;
+mod encode;
+mod error;
+mod feed;
+mod file;
+pub mod format;
+mod record;
+mod verify;
+
+pub use atomic::{AtomicFile, write_atomic};
+pub use decode::{MAX_FILE_LEN, StateVersionCheck};
+pub use error::{ReplayError, ReplayErrorKind};
+pub use feed::InputFeed;
+pub use file::Replay;
+pub use format::{Checkpoint, ReplayHeader, Section, content_hash};
+pub use record::{DEFAULT_CHECKSUM_EVERY, Recorder, record, rerecord};
+pub use verify::{VerifyOutcome, verify};

@@ -1,0 +1,129 @@
+//! The scene: everything needed to build a world, in a human-readable form (RON files) that
+//! also travels inside replay files.
+
+use serde::{Deserialize, Serialize};
+
+use super::error::SceneError;
+use crate::math::{Fx, Real, Vec3};
+use crate::particles::{ParticleSystem, ParticlesDesc};
+use crate::world::{Settings, TickInput, World};
+
+/// Highest tick rate a scene may ask for, Hz.
+pub const MAX_TICK_RATE: u32 = 10_000;
+/// Most substeps per tick a scene may ask for.
+pub const MAX_SUBSTEPS: u32 = 1_000;
+
+/// A scene: world settings, subsystem descriptions and an optional input script.
+///
+/// In RON every field but `name` may be left out; see `scenes/` for examples.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "", deny_unknown_fields)]
+pub struct Scene<R: Real = Fx> {
+    /// Short name, as listed by `fixstep scenes`.
+    pub name: String,
+    /// One line saying what the scene shows.
+    #[serde(default)]
+    pub description: String,
+    /// Gravitational acceleration, m/s². Default (0, −9.81, 0): y is up.
+    #[serde(default = "default_gravity")]
+    pub gravity: Vec3<R>,
+    /// Ticks per simulated second. Default 60.
+    #[serde(default = "default_tick_rate")]
+    pub tick_rate: u32,
+    /// Substeps per tick. Default 1.
+    #[serde(default = "default_substeps")]
+    pub substeps: u32,
+    /// Seed of the world's random generator.
+    #[serde(default)]
+    pub seed: u64,
+    /// How many ticks `fixstep run` simulates when not told otherwise. Default 600.
+    #[serde(default = "default_ticks")]
+    pub ticks: u64,
+    /// Particles, emitters and their forces.
+    #[serde(default)]
+    pub particles: Option<ParticlesDesc<R>>,
+    /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
+    #[serde(default)]
+    pub script: Vec<TickInput<R>>,
+}
+
+fn default_gravity<R: Real>() -> Vec3<R> {
+    Vec3::new(R::ZERO, -R::from_ratio(981, 100), R::ZERO)
+}
+
+fn default_tick_rate() -> u32 {
+    60
+}
+
+fn default_substeps() -> u32 {
+    1
+}
+
+fn default_ticks() -> u64 {
+    600
+}
+
+impl<R: Real> Scene<R> {
+    /// An empty scene with default settings.
+    pub fn empty(name: &str) -> Self {
+        Self {
+            name: name.to_owned(),
+            description: String::new(),
+            gravity: default_gravity(),
+            tick_rate: default_tick_rate(),
+            substeps: default_substeps(),
+            seed: 0,
+            ticks: default_ticks(),
+            particles: None,
+            script: Vec::new(),
+        }
+    }
+
+    /// Checks every field and builds the world at tick 0.
+    pub fn build(&self) -> Result<World<R>, SceneError> {
+        if !(1..=MAX_TICK_RATE).contains(&self.tick_rate) {
+            return Err(SceneError::new(
+                "tick_rate",
+                format!("must be 1 to {MAX_TICK_RATE} (got {})", self.tick_rate),
+            ));
+        }
+        if !(1..=MAX_SUBSTEPS).contains(&self.substeps) {
+            return Err(SceneError::new(
+                "substeps",
+                format!("must be 1 to {MAX_SUBSTEPS} (got {})", self.substeps),
+            ));
+        }
+        for (i, input) in self.script.iter().enumerate() {
+            if i > 0 && input.tick <= self.script[i - 1].tick {
+                return Err(SceneError::new(
+                    format!("script[{i}].tick"),
+                    format!(
+                        "ticks must increase (got {} after {})",
+                        input.tick,
+                        self.script[i - 1].tick
+                    ),
+                ));
+            }
+        }
+        let settings = Settings {
+            gravity: self.gravity,
+            tick_rate: self.tick_rate,
+            substeps: self.substeps,
+        };
+        let mut world = World::new(settings, self.seed);
+        if let Some(desc) = &self.particles {
+            world.set_particles(
+                ParticleSystem::from_desc(desc).map_err(|e| e.within("particles"))?,
+            );
+        }
+        Ok(world)
+    }
+
+    /// The scripted inputs for `tick`, if any.
+    pub fn script_at(&self, tick: u64) -> Option<&TickInput<R>> {
+        self.script
+            .binary_search_by_key(&tick, |input| input.tick)
+            .ok()
+            .map(|i| &self.script[i])
+    }
+}

@@ -1,0 +1,42 @@
+//! Scene errors: which field is wrong, and how.
+
+use core::fmt;
+
+/// A scene that cannot be built. `field` is a path such as `particles.emitters[2].rate`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SceneError {
+    /// Path of the offending field from the scene root.
+    pub field: String,
+    /// What is wrong with it.
+    pub message: String,
+}
+
+impl SceneError {
+    /// An error about `field`.
+    pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+
+    /// The same error seen from one level up: `prefix.field`.
+    pub fn within(mut self, prefix: &str) -> Self {
+        self.field = if self.field.is_empty() {
+            prefix.to_owned()
+        } else if self.field.starts_with('[') {
+            format!("{prefix}{}", self.field)
+        } else {
+            format!("{prefix}.{}", self.field)
+        };
+        self
+    }
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "field `{}`: {}", self.field, self.message)
+    }
+}
+
+impl std::error::Error for SceneError {}

@@ -1,0 +1,53 @@
+//! Reading scene files (RON) and naming what is wrong with them.
+
+use std::path::Path;
+
+use ron::extensions::Extensions;
+
+use super::description::Scene;
+use crate::math::Real;
+
+/// Sections a future build may simulate; a file that uses one gets a clear refusal rather
+/// than a generic "unknown field".
+const UNSUPPORTED_SECTIONS: [(&str, &str); 4] = [
+    ("rigid", "rigid bodies"),
+    ("joints", "joints"),
+    ("soft", "soft bodies"),
+    ("fluid", "fluids"),
+];
+
+/// Parses a scene from RON text. `origin` names the file in error messages.
+///
+/// `Some(…)` may be left out around optional sections (RON's `implicit_some`).
+pub fn parse_scene<R: Real>(text: &str, origin: &str) -> Result<Scene<R>, String> {
+    let options = ron::Options::default().with_default_extension(Extensions::IMPLICIT_SOME);
+    options.from_str::<Scene<R>>(text).map_err(|e| {
+        let position = format!("line {}, column {}", e.span.start.line, e.span.start.col);
+        if let ron::Error::NoSuchStructField { found: field, .. } = &e.code
+            && let Some((_, what)) = UNSUPPORTED_SECTIONS.iter().find(|(name, _)| name == field)
+        {
+            return format!(
+                "{origin}: {position}: field `{field}`: this build of fixstep does not simulate {what}"
+            );
+        }
+        format!("{origin}: {position}: {}", e.code)
+    })
+}
+
+/// Reads and parses a scene file, and checks that it builds a world.
+pub fn load_scene_file<R: Real>(path: &Path) -> Result<Scene<R>, String> {
+    let origin = path.display().to_string();
+    if path.is_dir() {
+        return Err(format!("{origin}: is a directory, not a scene file"));
+    }
+    let bytes = std::fs::read(path).map_err(|e| format!("{origin}: cannot read: {e}"))?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "{origin}: byte offset {}: not valid UTF-8 text",
+            e.utf8_error().valid_up_to()
+        )
+    })?;
+    let scene = parse_scene(&text, &origin)?;
+    scene.build().map_err(|e| format!("{origin}: {e}"))?;
+    Ok(scene)
+}

@@ -1,0 +1,49 @@
+//! Reporting figures for a world at one tick, as `f64`. Never fed back into the simulation.
+
+/// One metrics row (`fixstep run --metrics`).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Metrics {
+    /// Ticks completed.
+    pub tick: u64,
+    /// Simulated time, s.
+    pub time: f64,
+    /// Σ ½ m v², J.
+    pub kinetic_energy: f64,
+    /// Gravitational, point-gravity and spring potential energy, J.
+    pub potential_energy: f64,
+    /// Σ m v, kg·m/s.
+    pub momentum: [f64; 3],
+    /// The largest speed of any simulated point, m/s.
+    pub max_speed: f64,
+    /// Fixed-point saturations since the world was built.
+    pub saturations: u64,
+    /// Live particles.
+    pub particles: u64,
+}
+
+impl Metrics {
+    /// The CSV header: the fixed columns, then one column per subsystem figure.
+    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles";
+
+    /// The row as CSV, in [`Metrics::CSV_HEADER`] order.
+    pub fn csv_row(&self) -> String {
+        format!(
+            "{},{},{},{},{},{},{},{},{},{}",
+            self.tick,
+            self.time,
+            self.kinetic_energy,
+            self.potential_energy,
+            self.momentum[0],
+            self.momentum[1],
+            self.momentum[2],
+            self.max_speed,
+            self.saturations,
+            self.particles
+        )
+    }
+
+    /// Total mechanical energy, J.
+    pub fn total_energy(&self) -> f64 {
+        self.kinetic_energy + self.potential_energy
+    }
+}

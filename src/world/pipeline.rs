@@ -1,0 +1,380 @@
+//! The world: simulated state, its subsystems, and the tick.
+
+use serde::{Deserialize, Serialize};
+
+use super::checksum::{Checksum, Part};
+use super::input::{Command, PlayerInput, TickInput};
+use super::metrics::Metrics;
+use super::stage::{Stage, StageTimings};
+use crate::math::rng::Pcg32;
+use crate::math::saturation::count_saturations;
+use crate::math::state_hash::StateHasher;
+use crate::math::{Fx, Real, Vec3};
+use crate::particles::ParticleSystem;
+
+/// The version of the simulated state. It names the physics as much as the layout: bump it
+/// whenever a change alters any committed checksum, then re-record `replays/`.
+pub const STATE_VERSION: u32 = 1;
+
+/// The RNG stream of the world's generator (the seed comes from the scene).
+const RNG_STREAM: u64 = 0x6669_7873_7465_7021; // "fixstep!"
+
+/// Settings that inputs may change during a run, so they are part of the state.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct Settings<R: Real = Fx> {
+    /// Gravitational acceleration, m/s².
+    pub gravity: Vec3<R>,
+    /// Ticks per simulated second.
+    pub tick_rate: u32,
+    /// Substeps per tick; each advances the subsystems by 1 / (tick_rate · substeps) s.
+    pub substeps: u32,
+}
+
+/// Everything that determines the future of a world. Snapshots copy it whole; checksums
+/// hash it canonically.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct WorldState<R: Real = Fx> {
+    /// Ticks completed since the scene was loaded.
+    pub tick: u64,
+    /// Gravity, tick rate and substeps.
+    pub settings: Settings<R>,
+    /// The world's seeded generator; subsystems draw from it in stage order.
+    pub rng: Pcg32,
+    /// A running hash of every [`Command::Payload`] applied, with its tick and player.
+    pub payload_digest: u64,
+    /// Particles, when the scene has any.
+    pub particles: Option<ParticleSystem<R>>,
+}
+
+/// What happened during one tick, besides the state change. Not part of the state.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TickReport {
+    /// Commands whose target did not exist.
+    pub ignored_commands: u32,
+    /// Fixed-point operations that saturated during the tick.
+    pub saturations: u64,
+}
+
+/// A deterministic physics world.
+///
+/// A tick ([`World::step`]) runs these stages, in order:
+/// 1. [`Stage::ApplyInputs`]: the tick's commands, players in ascending index, each player's
+///    commands in order.
+/// 2. [`Stage::Particles`]: per substep, emit, age, accumulate forces and integrate.
+/// 3. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
+///
+/// A stage whose subsystem is absent from the scene is skipped without a loop or an
+/// allocation.
+#[derive(Debug)]
+pub struct World<R: Real = Fx> {
+    state: WorldState<R>,
+    /// Length of one substep, 1 / (tick_rate · substeps) s; derived from the settings.
+    substep_dt: R,
+    timings: Option<Box<StageTimings>>,
+    saturations_total: u64,
+}
+
+impl<R: Real> World<R> {
+    /// A world with no subsystems.
+    pub fn new(settings: Settings<R>, seed: u64) -> Self {
+        Self::from_state(WorldState {
+            tick: 0,
+            settings,
+            rng: Pcg32::new(seed, RNG_STREAM),
+            payload_digest: 0,
+            particles: None,
+        })
+    }
+
+    /// A world continuing from `state`.
+    pub fn from_state(state: WorldState<R>) -> Self {
+        let substep_dt = substep_dt(&state.settings);
+        Self {
+            state,
+            substep_dt,
+            timings: None,
+            saturations_total: 0,
+        }
+    }
+
+    /// Adds a particle system (replacing any previous one).
+    pub fn set_particles(&mut self, particles: ParticleSystem<R>) {
+        self.state.particles = Some(particles);
+    }
+
+    /// The simulated state.
+    pub fn state(&self) -> &WorldState<R> {
+        &self.state
+    }
+
+    /// The particle system, if the scene has one.
+    pub fn particles(&self) -> Option<&ParticleSystem<R>> {
+        self.state.particles.as_ref()
+    }
+
+    /// The particle system, mutable (for registering user forces).
+    pub fn particles_mut(&mut self) -> Option<&mut ParticleSystem<R>> {
+        self.state.particles.as_mut()
+    }
+
+    /// Ticks completed.
+    pub fn tick(&self) -> u64 {
+        self.state.tick
+    }
+
+    /// Simulated time, tick / tick_rate seconds.
+    pub fn time(&self) -> R {
+        R::from_ratio(
+            self.state.tick as i64,
+            i64::from(self.state.settings.tick_rate),
+        )
+    }
+
+    /// The current settings.
+    pub fn settings(&self) -> &Settings<R> {
+        &self.state.settings
+    }
+
+    /// Starts collecting per-stage wall-clock timings (kept outside the state).
+    pub fn enable_timing(&mut self) {
+        self.timings.get_or_insert_with(Box::default);
+    }
+
+    /// Per-stage timings, when enabled.
+    pub fn timings(&self) -> Option<&StageTimings> {
+        self.timings.as_deref()
+    }
+
+    /// Saturations counted over every tick this world has run.
+    pub fn saturations_total(&self) -> u64 {
+        self.saturations_total
+    }
+
+    /// Advances one tick with the given inputs (their `tick` field is not checked here; a
+    /// driver passes the inputs for [`World::tick`]).
+    pub fn step(&mut self, input: &TickInput<R>) -> TickReport {
+        let (ignored_commands, saturations) = count_saturations(|| {
+            let mut timings = self.timings.take();
+            let ignored = self.run_stage(&mut timings, Stage::ApplyInputs, |w| {
+                w.apply_inputs(input)
+            });
+            if self.state.particles.is_some() {
+                self.run_stage(&mut timings, Stage::Particles, Self::step_particles);
+            }
+            self.run_stage(&mut timings, Stage::EndTick, Self::end_tick);
+            self.timings = timings;
+            ignored
+        });
+        self.saturations_total += saturations;
+        TickReport {
+            ignored_commands,
+            saturations,
+        }
+    }
+
+    /// Runs one stage, timing it when timing is enabled.
+    #[inline]
+    fn run_stage<T>(
+        &mut self,
+        timings: &mut Option<Box<StageTimings>>,
+        stage: Stage,
+        f: impl FnOnce(&mut Self) -> T,
+    ) -> T {
+        match timings {
+            Some(t) => t.time(stage, || f(self)),
+            None => f(self),
+        }
+    }
+
+    /// Stage 1: applies commands, players in ascending index, commands in order. Returns
+    /// how many commands had no target.
+    fn apply_inputs(&mut self, input: &TickInput<R>) -> u32 {
+        let mut ignored = 0;
+        let mut apply = |player: &PlayerInput<R>| {
+            for command in &player.commands {
+                if !self.apply_command(player.player, command) {
+                    ignored += 1;
+                }
+            }
+        };
+        if input.players.is_sorted_by_key(|p| p.player) {
+            input.players.iter().for_each(&mut apply);
+        } else {
+            // Inputs not in canonical order (a hand-made file): sort, keeping each player's
+            // entries in file order.
+            let mut players: Vec<&PlayerInput<R>> = input.players.iter().collect();
+            players.sort_by_key(|p| p.player);
+            players.into_iter().for_each(apply);
+        }
+        ignored
+    }
+
+    /// Applies one command; false when its target does not exist.
+    fn apply_command(&mut self, player: u8, command: &Command<R>) -> bool {
+        match *command {
+            Command::SetGravity { gravity } => {
+                self.state.settings.gravity = gravity;
+                true
+            }
+            Command::Payload(value) => {
+                let mut h = StateHasher::new();
+                h.write_u64(self.state.payload_digest);
+                h.write_u64(self.state.tick);
+                h.write_u8(player);
+                h.write_u32(value);
+                self.state.payload_digest = h.finish();
+                true
+            }
+            Command::ApplyForce { target, force, .. } => self
+                .state
+                .particles
+                .as_mut()
+                .is_some_and(|p| p.apply_force(target, force)),
+            Command::ApplyImpulse {
+                target, impulse, ..
+            } => self
+                .state
+                .particles
+                .as_mut()
+                .is_some_and(|p| p.apply_impulse(target, impulse)),
+            Command::SetVelocity { target, velocity } => self
+                .state
+                .particles
+                .as_mut()
+                .is_some_and(|p| p.set_velocity(target, velocity)),
+            Command::Spawn {
+                template,
+                position,
+                velocity,
+            } => self
+                .state
+                .particles
+                .as_mut()
+                .and_then(|p| p.spawn(template, position, velocity))
+                .is_some(),
+            Command::Remove { target } => self
+                .state
+                .particles
+                .as_mut()
+                .is_some_and(|p| p.remove(target)),
+            Command::MoveKinematic { target, position } => self
+                .state
+                .particles
+                .as_mut()
+                .is_some_and(|p| p.move_pinned(target, position)),
+            Command::SetEmitter { emitter, on } => self
+                .state
+                .particles
+                .as_mut()
+                .is_some_and(|p| p.set_emitter(emitter, on)),
+        }
+    }
+
+    /// Stage 2: the particle system, once per substep.
+    fn step_particles(&mut self) {
+        let WorldState {
+            settings,
+            rng,
+            particles,
+            ..
+        } = &mut self.state;
+        if let Some(particles) = particles {
+            for _ in 0..settings.substeps {
+                particles.step(self.substep_dt, settings.gravity, rng);
+            }
+        }
+    }
+
+    /// Stage 3: clears per-tick accumulators and advances the tick counter.
+    fn end_tick(&mut self) {
+        if let Some(particles) = &mut self.state.particles {
+            particles.end_tick();
+        }
+        self.state.tick += 1;
+        self.substep_dt = substep_dt(&self.state.settings);
+    }
+
+    /// The checksum of the current state (see [`super::checksum`] for what is hashed).
+    pub fn checksum(&self) -> Checksum {
+        let mut parts = Vec::with_capacity(2);
+        parts.push((Part::Core, self.core_checksum()));
+        if let Some(particles) = &self.state.particles {
+            let mut h = StateHasher::new();
+            particles.hash_state(&mut h);
+            parts.push((Part::Particles, h.finish()));
+        }
+        let mut h = StateHasher::new();
+        h.write_u32(STATE_VERSION);
+        for (part, sum) in &parts {
+            h.write_u8(part.code());
+            h.write_u64(*sum);
+        }
+        Checksum {
+            tick: self.state.tick,
+            total: h.finish(),
+            parts,
+        }
+    }
+
+    fn core_checksum(&self) -> u64 {
+        let s = &self.state;
+        let mut h = StateHasher::new();
+        h.write_u64(s.tick);
+        h.write_vec3(s.settings.gravity);
+        h.write_u32(s.settings.tick_rate);
+        h.write_u32(s.settings.substeps);
+        s.rng.hash_state(&mut h);
+        h.write_u64(s.payload_digest);
+        h.finish()
+    }
+
+    /// Reporting figures for the current state, as `f64`.
+    pub fn metrics(&self) -> Metrics {
+        let mut m = Metrics {
+            tick: self.state.tick,
+            time: self.time().to_f64(),
+            saturations: self.saturations_total,
+            ..Metrics::default()
+        };
+        if let Some(p) = &self.state.particles {
+            m.kinetic_energy += p.kinetic_energy().to_f64();
+            m.potential_energy += p.potential_energy(self.state.settings.gravity).to_f64();
+            let momentum = p.momentum().to_f64();
+            for (total, part) in m.momentum.iter_mut().zip(momentum) {
+                *total += part;
+            }
+            m.max_speed = m.max_speed.max(p.max_speed().to_f64());
+            m.particles = u64::from(p.live_count());
+        }
+        m
+    }
+
+    /// A copy of the complete state, to restore later.
+    pub fn snapshot(&self) -> WorldState<R> {
+        self.state.clone()
+    }
+
+    /// Puts the world back in the snapshotted state. Registered user forces are kept.
+    pub fn restore(&mut self, snapshot: &WorldState<R>) {
+        let mut state = snapshot.clone();
+        state.particles = match (self.state.particles.take(), state.particles.take()) {
+            (Some(mut current), Some(restored)) => {
+                current.restore_from(restored);
+                Some(current)
+            }
+            (_, restored) => restored,
+        };
+        self.substep_dt = substep_dt(&state.settings);
+        self.state = state;
+    }
+}
+
+/// 1 / (tick_rate · substeps) seconds.
+fn substep_dt<R: Real>(settings: &Settings<R>) -> R {
+    R::from_ratio(
+        1,
+        i64::from(settings.tick_rate) * i64::from(settings.substeps),
+    )
+}

@@ -1,0 +1,181 @@
+//! Scene files: every file in `scenes/` loads and builds, the built-in ones match the
+//! built-in scenes, and malformed files are refused with one line naming the file.
+//!
+//! `FIXSTEP_BLESS=1 cargo test --test cli_scene_files` rewrites `scenes/<builtin>.ron` from
+//! the built-in scenes (scripts/rerecord.sh does this).
+
+mod replay_support;
+
+use std::path::{Path, PathBuf};
+
+use fixstep::math::Fx;
+use fixstep::replay::write_atomic;
+use fixstep::scene::{BUILTIN_SCENES, Scene, builtin_scene, load_scene_file};
+use replay_support::{TempPath, fixstep};
+use ron::extensions::Extensions;
+use ron::ser::PrettyConfig;
+
+fn scenes_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
+}
+
+/// The RON text of a built-in scene file.
+fn builtin_file_text(name: &str, scene: &Scene<Fx>) -> String {
+    let options = ron::Options::default().with_default_extension(Extensions::IMPLICIT_SOME);
+    let body = options
+        .to_string_pretty(scene, PrettyConfig::new())
+        .expect("scenes serialise");
+    format!(
+        "// The built-in scene `{name}`, written by `FIXSTEP_BLESS=1 cargo test --test \
+         cli_scene_files`.\n// Run it with `fixstep run scenes/{name}.ron`.\n{}\n",
+        compact_vectors(&body)
+    )
+}
+
+/// Puts each `(x: .., y: .., z: ..)` vector that the pretty printer spread over five lines
+/// on one line.
+fn compact_vectors(text: &str) -> String {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::with_capacity(lines.len());
+    let mut i = 0;
+    while i < lines.len() {
+        let window = lines.get(i..i + 5);
+        if let Some([open, x, y, z, close]) = window
+            && open.ends_with('(')
+            && x.trim_start().starts_with("x: ")
+            && y.trim_start().starts_with("y: ")
+            && z.trim_start().starts_with("z: ")
+            && close.trim_start().starts_with(')')
+        {
+            let components = [x, y, z].map(|c| c.trim().trim_end_matches(','));
+            out.push(format!(
+                "{open}{}{}",
+                components.join(", "),
+                close.trim_start()
+            ));
+            i += 5;
+        } else {
+            out.push(lines[i].to_owned());
+            i += 1;
+        }
+    }
+    out.join("\n")
+}
+
+#[test]
+fn builtin_scene_files_match_the_builtins() {
+    let bless = std::env::var_os("FIXSTEP_BLESS").is_some();
+    for (name, _) in BUILTIN_SCENES {
+        let scene = builtin_scene::<Fx>(name).expect("built in");
+        let path = scenes_dir().join(format!("{name}.ron"));
+        if bless {
+            write_atomic(&path, builtin_file_text(name, &scene).as_bytes())
+                .expect("write scene file");
+        }
+        let loaded = load_scene_file::<Fx>(&path).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            loaded, scene,
+            "{name}.ron differs from the built-in scene; regenerate it with \
+             FIXSTEP_BLESS=1 cargo test --test cli_scene_files"
+        );
+    }
+}
+
+#[test]
+fn every_scene_file_parses_and_builds() {
+    let mut count = 0;
+    for entry in std::fs::read_dir(scenes_dir()).expect("scenes/ exists") {
+        let path = entry.expect("readable entry").path();
+        assert_eq!(
+            path.extension().and_then(|e| e.to_str()),
+            Some("ron"),
+            "only scene files belong in scenes/: {}",
+            path.display()
+        );
+        let scene = load_scene_file::<Fx>(&path).unwrap_or_else(|e| panic!("{e}"));
+        scene
+            .build()
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        count += 1;
+    }
+    assert!(
+        count > BUILTIN_SCENES.len(),
+        "a hand-written example is missing"
+    );
+}
+
+#[test]
+fn a_scene_file_runs_like_its_builtin() {
+    let (name, _) = BUILTIN_SCENES[1];
+    let file = scenes_dir().join(format!("{name}.ron"));
+    let from_file = fixstep(&["run", file.to_str().expect("UTF-8"), "--ticks", "40"]);
+    let builtin = fixstep(&["run", name, "--ticks", "40"]);
+    assert_eq!(from_file.code, 0, "{from_file:?}");
+    assert_eq!(
+        from_file.stdout.lines().last(),
+        builtin.stdout.lines().last()
+    );
+}
+
+/// `fixstep run` on a file holding `text` fails with one line naming it and `parts`.
+fn assert_scene_rejected(text: &[u8], parts: &[&str]) {
+    let file = TempPath::with_bytes("scene.ron", text);
+    let mut all = vec![file.str()];
+    all.extend_from_slice(parts);
+    fixstep(&["run", file.str()]).assert_error(&all);
+}
+
+#[test]
+fn ron_syntax_error_names_line_and_column() {
+    assert_scene_rejected(
+        b"(\n    name: \"broken\",\n    tick_rate: 60\n    substeps: 2,\n)\n",
+        &["line 4, column"],
+    );
+}
+
+#[test]
+fn unknown_field() {
+    assert_scene_rejected(b"(name: \"x\", bogus_field: 3)", &["bogus_field"]);
+}
+
+#[test]
+fn rigid_section_is_not_simulated_by_this_build() {
+    assert_scene_rejected(
+        b"(name: \"x\", rigid: (bodies: []))",
+        &["this build of fixstep does not simulate rigid bodies"],
+    );
+}
+
+#[test]
+fn zero_tick_rate_names_the_field() {
+    assert_scene_rejected(b"(name: \"x\", tick_rate: 0)", &["tick_rate"]);
+}
+
+#[test]
+fn unregistered_user_force_names_the_field() {
+    assert_scene_rejected(
+        b"(name: \"x\", particles: (forces: [Gravity(), User(name: \"wind\")]))",
+        &[
+            "particles.forces[1].name",
+            "no user force is registered as `wind`",
+        ],
+    );
+}
+
+#[test]
+fn invalid_utf8() {
+    assert_scene_rejected(b"(name: \"\xff\xfe\")", &["not valid UTF-8"]);
+}
+
+#[test]
+fn a_directory() {
+    let dir = TempPath::new("dir.ron");
+    std::fs::create_dir(dir.path()).expect("create");
+    fixstep(&["run", dir.str()]).assert_error(&[dir.str(), "is a directory"]);
+}
+
+#[test]
+fn a_missing_file() {
+    let missing = TempPath::new("missing.ron");
+    fixstep(&["run", missing.str()]).assert_error(&[missing.str(), "cannot read"]);
+}
