@@ -21,7 +21,14 @@ fn values(lo: f64, hi: f64, seed: u64) -> Vec<f64> {
         .collect()
 }
 
-fn unary<T: Copy>(c: &mut Criterion, name: &str, input: &[f64], to: fn(f64) -> T, op: fn(T) -> T, label: &str) {
+fn unary<T: Copy>(
+    c: &mut Criterion,
+    name: &str,
+    input: &[f64],
+    to: fn(f64) -> T,
+    op: fn(T) -> T,
+    label: &str,
+) {
     let xs: Vec<T> = input.iter().map(|&v| to(v)).collect();
     let mut group = c.benchmark_group(name);
     group.throughput(Throughput::Elements(N as u64));
@@ -37,7 +44,15 @@ fn unary<T: Copy>(c: &mut Criterion, name: &str, input: &[f64], to: fn(f64) -> T
     group.finish();
 }
 
-fn binary<T: Copy>(c: &mut Criterion, name: &str, a: &[f64], b_in: &[f64], to: fn(f64) -> T, op: fn(T, T) -> T, label: &str) {
+fn binary<T: Copy>(
+    c: &mut Criterion,
+    name: &str,
+    a: &[f64],
+    b_in: &[f64],
+    to: fn(f64) -> T,
+    op: fn(T, T) -> T,
+    label: &str,
+) {
     let xs: Vec<T> = a.iter().map(|&v| to(v)).collect();
     let ys: Vec<T> = b_in.iter().map(|&v| to(v)).collect();
     let mut group = c.benchmark_group(name);
@@ -81,22 +96,50 @@ fn scalar_ops(c: &mut Criterion) {
     binary(c, "div", &a, &b, f64_of, |x, y| x / y, "f64");
 
     unary(c, "sqrt", &positive, fx, Real::sqrt, "I32F32");
-    unary(c, "sqrt", &positive, fixed_crate, |x| x.sqrt(), "fixed-crate");
+    unary(
+        c,
+        "sqrt",
+        &positive,
+        fixed_crate,
+        |x| x.sqrt(),
+        "fixed-crate",
+    );
     unary(c, "sqrt", &positive, f32_of, f32::sqrt, "f32");
     unary(c, "sqrt", &positive, f64_of, f64::sqrt, "f64");
 
-    unary(c, "sin_cos", &angles, fx, |x| {
-        let (s, c) = x.sin_cos();
-        s + c
-    }, "I32F32");
-    unary(c, "sin_cos", &angles, f32_of, |x| {
-        let (s, c) = x.sin_cos();
-        s + c
-    }, "f32");
-    unary(c, "sin_cos", &angles, f64_of, |x| {
-        let (s, c) = x.sin_cos();
-        s + c
-    }, "f64");
+    unary(
+        c,
+        "sin_cos",
+        &angles,
+        fx,
+        |x| {
+            let (s, c) = x.sin_cos();
+            s + c
+        },
+        "I32F32",
+    );
+    unary(
+        c,
+        "sin_cos",
+        &angles,
+        f32_of,
+        |x| {
+            let (s, c) = x.sin_cos();
+            s + c
+        },
+        "f32",
+    );
+    unary(
+        c,
+        "sin_cos",
+        &angles,
+        f64_of,
+        |x| {
+            let (s, c) = x.sin_cos();
+            s + c
+        },
+        "f64",
+    );
 
     binary(c, "atan2", &a, &angles, fx, Real::atan2, "I32F32");
     binary(c, "atan2", &a, &angles, f32_of, f32::atan2, "f32");
@@ -113,7 +156,10 @@ fn multiply_add(c: &mut Criterion) {
     let b = values(-10.0, 10.0, 6);
     let mut group = c.benchmark_group("multiply_add");
     group.throughput(Throughput::Elements(N as u64));
-    let (ax, bx): (Vec<Fx>, Vec<Fx>) = (a.iter().map(|&v| fx(v)).collect(), b.iter().map(|&v| fx(v)).collect());
+    let (ax, bx): (Vec<Fx>, Vec<Fx>) = (
+        a.iter().map(|&v| fx(v)).collect(),
+        b.iter().map(|&v| fx(v)).collect(),
+    );
     group.bench_function("I32F32", |bench| {
         bench.iter(|| {
             let mut acc = Fx::ZERO;
@@ -123,7 +169,10 @@ fn multiply_add(c: &mut Criterion) {
             acc
         })
     });
-    let (a32, b32): (Vec<f32>, Vec<f32>) = (a.iter().map(|&v| v as f32).collect(), b.iter().map(|&v| v as f32).collect());
+    let (a32, b32): (Vec<f32>, Vec<f32>) = (
+        a.iter().map(|&v| v as f32).collect(),
+        b.iter().map(|&v| v as f32).collect(),
+    );
     group.bench_function("f32", |bench| {
         bench.iter(|| {
             let mut acc = 0.0f32;
@@ -146,8 +195,14 @@ fn multiply_add(c: &mut Criterion) {
 }
 
 fn vectors<R: Real>(from: fn(f64) -> R) -> Vec<Vec3<R>> {
-    let (x, y, z) = (values(-50.0, 50.0, 7), values(-50.0, 50.0, 8), values(-50.0, 50.0, 9));
-    (0..N).map(|i| Vec3::new(from(x[i]), from(y[i]), from(z[i]))).collect()
+    let (x, y, z) = (
+        values(-50.0, 50.0, 7),
+        values(-50.0, 50.0, 8),
+        values(-50.0, 50.0, 9),
+    );
+    (0..N)
+        .map(|i| Vec3::new(from(x[i]), from(y[i]), from(z[i])))
+        .collect()
 }
 
 fn quats<R: Real>(from: fn(f64) -> R) -> Vec<Quat<R>> {

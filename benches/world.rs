@@ -27,7 +27,9 @@ fn tick_cost(c: &mut Criterion) {
         },
         1,
     );
-    group.bench_function("empty_world", |b| b.iter(|| black_box(empty.step(black_box(&input)))));
+    group.bench_function("empty_world", |b| {
+        b.iter(|| black_box(empty.step(black_box(&input))))
+    });
 
     let mut absent = Scene::<Fx>::empty("absent").build().expect("valid scene");
     group.bench_function("absent_particles", |b| {

@@ -8,7 +8,7 @@
 
 use core::fmt;
 
-use bincode::config::{Configuration, Fixint, LittleEndian, Limit};
+use bincode::config::{Configuration, Fixint, Limit, LittleEndian};
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
@@ -66,7 +66,9 @@ fn describe(error: bincode::error::DecodeError) -> String {
             format!("truncated: {additional} more bytes needed")
         }
         E::LimitExceeded => format!("a length field exceeds the {SIZE_LIMIT}-byte limit"),
-        E::UnexpectedVariant { found, type_name, .. } => {
+        E::UnexpectedVariant {
+            found, type_name, ..
+        } => {
             format!("invalid variant {found} for {type_name}")
         }
         E::Utf8 { .. } => "a string is not valid UTF-8".to_owned(),

@@ -126,9 +126,18 @@ fn multiply_ties_round_toward_positive_infinity() {
 fn constants_are_correctly_rounded() {
     let pi_q32 = (std::f64::consts::PI * 4294967296.0).round() as i64;
     assert_eq!(Fx::PI.to_bits(), pi_q32);
-    assert_eq!(Fx::TAU.to_bits(), (std::f64::consts::TAU * 4294967296.0).round() as i64);
-    assert_eq!(FxI48F16::PI.to_bits(), (std::f64::consts::PI * 65536.0).round() as i64);
-    assert_eq!(FxI40F24::PI.to_bits(), (std::f64::consts::PI * 16777216.0).round() as i64);
+    assert_eq!(
+        Fx::TAU.to_bits(),
+        (std::f64::consts::TAU * 4294967296.0).round() as i64
+    );
+    assert_eq!(
+        FxI48F16::PI.to_bits(),
+        (std::f64::consts::PI * 65536.0).round() as i64
+    );
+    assert_eq!(
+        FxI40F24::PI.to_bits(),
+        (std::f64::consts::PI * 16777216.0).round() as i64
+    );
     assert_eq!(Fx::ONE.to_bits(), 1 << 32);
     assert_eq!(Fx::HALF + Fx::HALF, Fx::ONE);
     assert_eq!(Fx::from_ratio(1, 3).to_bits(), 1431655765);
@@ -147,7 +156,10 @@ fn conversions_saturate_and_reject_nan() {
     assert_eq!(Fx::from_int(i32::MIN).to_f64(), i32::MIN as f64);
     assert_eq!(FxI48F16::from_int(i32::MAX).to_f64(), i32::MAX as f64);
     assert_eq!(saturation_count(), 3);
-    assert_eq!(Fx::parse_decimal(" -9.81 ").unwrap(), Fx::from_ratio(-981, 100));
+    assert_eq!(
+        Fx::parse_decimal(" -9.81 ").unwrap(),
+        Fx::from_ratio(-981, 100)
+    );
     let err = Fx::parse_decimal("nine").unwrap_err();
     assert!(err.to_string().contains("`nine` is not a number"), "{err}");
 }
@@ -182,9 +194,20 @@ fn human_readable_encoding_accepts_numbers_and_strings() {
     assert_eq!(parsed.g, Fx::from_f64(-9.81));
     assert_eq!(parsed.h, FxI48F16::HALF);
     let integer: Scene = ron::from_str("(g: 3, h: -2)").unwrap();
-    assert_eq!((integer.g, integer.h), (Fx::from_int(3), FxI48F16::from_int(-2)));
+    assert_eq!(
+        (integer.g, integer.h),
+        (Fx::from_int(3), FxI48F16::from_int(-2))
+    );
     // Writing and reading back gives the same bits, whether or not the value is exact in f64.
-    for bits in [0, 1, -1, 1 << 40, i64::MAX, i64::MIN, Fx::from_f64(-9.81).to_bits()] {
+    for bits in [
+        0,
+        1,
+        -1,
+        1 << 40,
+        i64::MAX,
+        i64::MIN,
+        Fx::from_f64(-9.81).to_bits(),
+    ] {
         let scene = Scene {
             g: Fx::from_bits(bits),
             h: FxI48F16::from_bits(bits),
@@ -192,9 +215,20 @@ fn human_readable_encoding_accepts_numbers_and_strings() {
         let text = ron::to_string(&scene).unwrap();
         assert_eq!(ron::from_str::<Scene>(&text).unwrap(), scene, "{text}");
     }
-    assert_eq!(ron::to_string(&Scene { g: Fx::HALF, h: FxI48F16::ZERO }).unwrap(), "(g:0.5,h:0.0)");
-    let too_big = ron::from_str::<Scene>("(g: 1e12, h: 0)").unwrap_err().to_string();
+    assert_eq!(
+        ron::to_string(&Scene {
+            g: Fx::HALF,
+            h: FxI48F16::ZERO
+        })
+        .unwrap(),
+        "(g:0.5,h:0.0)"
+    );
+    let too_big = ron::from_str::<Scene>("(g: 1e12, h: 0)")
+        .unwrap_err()
+        .to_string();
     assert!(too_big.contains("range of I32F32"), "{too_big}");
-    let not_finite = ron::from_str::<Scene>("(g: inf, h: 0)").unwrap_err().to_string();
+    let not_finite = ron::from_str::<Scene>("(g: inf, h: 0)")
+        .unwrap_err()
+        .to_string();
     assert!(not_finite.contains("not a finite number"), "{not_finite}");
 }

@@ -169,7 +169,7 @@ impl<R: Real> Mat3<R> {
         if det.abs() <= R::EPSILON * R::from_int(8) {
             return None;
         }
-        Some(Self::adjugate_rows(scaled).scale_each(det.recip(), scale))
+        Some(Self::adjugate(scaled).scale_each(det.recip(), scale))
     }
 
     /// A safe inverse for an inertia tensor (symmetric positive semi-definite): never
@@ -186,11 +186,15 @@ impl<R: Real> Mat3<R> {
     ///   infinite moment of inertia: the body does not turn about that axis.
     /// - M = 0 (a point mass): the zero matrix.
     ///
-    /// The fallback is exact for a diagonal tensor (body inertia in principal axes, as the
-    /// engine stores it): each moment below τ times the largest is treated as infinite,
-    /// e.g. the axial moment of a solid rod whose radius is below about 1/600 of its length. For a
-    /// non-diagonal degenerate tensor it only guarantees a bounded result; diagonalise
-    /// first. A negative or non-symmetric input gets the same safe treatment.
+    /// The fallback is exact for a diagonal tensor (a body-frame tensor in principal axes):
+    /// each moment below τ times the largest is treated as infinite, e.g. the axial moment
+    /// of a solid rod whose radius is below about 1/600 of its length. For a non-diagonal
+    /// degenerate tensor it only guarantees a bounded result; diagonalise first. A negative
+    /// or non-symmetric input gets the same safe treatment.
+    ///
+    /// Entries of the result reach at most about 1/(τ·max|Mᵢⱼ|); only where that exceeds
+    /// the format's range (max|Mᵢⱼ| below about 2⁻¹⁵ in I32F32) can they saturate, counted
+    /// like any other overflow.
     pub fn safe_inverse_symmetric(self) -> Self {
         let Some(Normalised { scaled, scale }) = self.normalised() else {
             return Self::ZERO;
@@ -198,7 +202,7 @@ impl<R: Real> Mat3<R> {
         let threshold = R::EPSILON.sqrt();
         let det = scaled.determinant();
         if det >= threshold {
-            let full = Self::adjugate_rows(scaled).scale_each(det.recip(), scale);
+            let full = Self::adjugate(scaled).scale_each(det.recip(), scale);
             let [_, c1, c2] = full.cols;
             return Self::from_symmetric(full.diagonal(), c1.x, c2.x, c2.y);
         }
@@ -236,7 +240,7 @@ impl<R: Real> Mat3<R> {
 
     /// adj(M) = the matrix with rows (c₁ × c₂, c₂ × c₀, c₀ × c₁) for columns c₀, c₁, c₂:
     /// M adj(M) = adj(M) M = det(M) I.
-    fn adjugate_rows(self) -> Self {
+    fn adjugate(self) -> Self {
         let [c0, c1, c2] = self.cols;
         Self::from_rows(c1.cross(c2), c2.cross(c0), c0.cross(c1))
     }

@@ -162,8 +162,8 @@ impl<R: Real> Quat<R> {
     ///    q₂ = q₁ (1 − ½(1 − 1/|q₁|²)) = q₁/|q₁| + O(δ²), which leaves each component
     ///    within about an ulp of q/|q| and |q₂|² within a few ulp of 1.
     ///
-    /// Valid while |q|² does not saturate (|q| < 2¹⁵ in I32F32); a q shorter than about
-    /// 2⁻¹⁰ (I32F32) has too few significant bits for a full-precision result.
+    /// Valid while |q|² does not saturate (|q| < 2¹⁵ in I32F32). Below |q| ≈ 2⁻⁸ (I32F32)
+    /// the rounding of |q|² is too coarse for one Newton step to reach full precision.
     pub fn try_normalize(self) -> Option<Self> {
         let norm_squared = self.length_squared();
         if norm_squared <= R::ZERO {

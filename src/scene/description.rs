@@ -112,9 +112,8 @@ impl<R: Real> Scene<R> {
         };
         let mut world = World::new(settings, self.seed);
         if let Some(desc) = &self.particles {
-            world.set_particles(
-                ParticleSystem::from_desc(desc).map_err(|e| e.within("particles"))?,
-            );
+            world
+                .set_particles(ParticleSystem::from_desc(desc).map_err(|e| e.within("particles"))?);
         }
         Ok(world)
     }

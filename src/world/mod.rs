@@ -4,14 +4,14 @@ pub mod checksum;
 pub mod handle;
 pub mod input;
 pub mod metrics;
+mod pipeline;
 pub mod stage;
 pub mod timestep;
-mod pipeline;
 
 pub use checksum::{Checksum, Part};
 pub use handle::Handle;
 pub use input::{Command, PlayerInput, Target, TickInput};
 pub use metrics::Metrics;
+pub use pipeline::{STATE_VERSION, Settings, TickReport, World, WorldState};
 pub use stage::{Stage, StageTimings};
 pub use timestep::FixedTimestep;
-pub use pipeline::{STATE_VERSION, Settings, TickReport, World, WorldState};

@@ -157,9 +157,8 @@ impl<R: Real> World<R> {
     pub fn step(&mut self, input: &TickInput<R>) -> TickReport {
         let (ignored_commands, saturations) = count_saturations(|| {
             let mut timings = self.timings.take();
-            let ignored = self.run_stage(&mut timings, Stage::ApplyInputs, |w| {
-                w.apply_inputs(input)
-            });
+            let ignored =
+                self.run_stage(&mut timings, Stage::ApplyInputs, |w| w.apply_inputs(input));
             if self.state.particles.is_some() {
                 self.run_stage(&mut timings, Stage::Particles, Self::step_particles);
             }
