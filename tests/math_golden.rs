@@ -13,7 +13,7 @@ use fixstep::math::state_hash::StateHasher;
 use fixstep::math::{Fx, Mat3, Quat, Real, Vec3};
 
 const STEPS: u32 = 100_000;
-const GOLDEN: u64 = 0;
+const GOLDEN: u64 = 0x399b4568473fc5ab;
 
 fn trajectory_hash() -> u64 {
     let dt = Fx::from_ratio(1, 240);
