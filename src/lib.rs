@@ -12,3 +12,8 @@ pub mod particles;
 pub mod replay;
 pub mod scene;
 pub mod world;
+
+/// The README's Rust examples, compiled and run as doctests so the README stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

@@ -1,6 +1,7 @@
 //! The world and its tick: state, stages, inputs, checksums and snapshots.
 
 pub mod checksum;
+pub mod difference;
 pub mod handle;
 pub mod input;
 pub mod metrics;
@@ -9,6 +10,7 @@ pub mod stage;
 pub mod timestep;
 
 pub use checksum::{Checksum, Part};
+pub use difference::{Difference, first_difference};
 pub use handle::Handle;
 pub use input::{Command, PlayerInput, Target, TickInput};
 pub use metrics::Metrics;

@@ -1,0 +1,62 @@
+//! Where two world states first differ: the part, and the first differing object.
+
+use core::fmt;
+
+use super::checksum::Part;
+use super::handle::Handle;
+use super::pipeline::WorldState;
+use crate::math::Real;
+
+/// The first difference between two states, in [`Part`] order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Difference {
+    /// The part that differs.
+    pub part: Part,
+    /// The first object (ascending slot index) whose state differs, when the difference is
+    /// in an object rather than in the part's shared state (emitters, forces, settings).
+    pub id: Option<Handle>,
+}
+
+impl fmt::Display for Difference {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.id {
+            Some(id) => write!(f, "subsystem {}, first differing id {id}", self.part),
+            None => write!(f, "subsystem {}, no single object differs", self.part),
+        }
+    }
+}
+
+/// The first difference between two states, or `None` when they are identical.
+///
+/// Parts are compared in [`Part`] order: core (tick, settings, RNG, payload digest), then
+/// particles (first by slot, then the shared state).
+pub fn first_difference<R: Real>(a: &WorldState<R>, b: &WorldState<R>) -> Option<Difference> {
+    let core_equal = a.tick == b.tick
+        && a.settings == b.settings
+        && a.rng == b.rng
+        && a.payload_digest == b.payload_digest;
+    if !core_equal {
+        return Some(Difference {
+            part: Part::Core,
+            id: None,
+        });
+    }
+    match (&a.particles, &b.particles) {
+        (Some(pa), Some(pb)) => match pa.first_difference(pb) {
+            Some(id) => Some(Difference {
+                part: Part::Particles,
+                id: Some(id),
+            }),
+            None if pa != pb => Some(Difference {
+                part: Part::Particles,
+                id: None,
+            }),
+            None => None,
+        },
+        (None, None) => None,
+        _ => Some(Difference {
+            part: Part::Particles,
+            id: None,
+        }),
+    }
+}
