@@ -224,11 +224,22 @@ fn semi_implicit_euler<R: Real>(l: &StepLengths<R>, c: StepContext<'_, '_, R>) {
     let acceleration = &mut c.scratch.acceleration;
     c.field
         .accelerations(&k.positions, &k.velocities, acceleration);
-    for (i, &a) in acceleration.iter().enumerate() {
-        if c.attributes.is_movable(i) {
-            let v = k.velocities[i].add_scaled(a, l.h);
+    kick_then_drift(k, c.attributes, acceleration, l.h, l.h);
+}
+
+/// For every movable particle: v ← v + h_kick·a, then x ← x + h_drift·v (the new v).
+fn kick_then_drift<R: Real>(
+    k: &mut Kinematics<R>,
+    attributes: &Attributes<R>,
+    accelerations: &[Vec3<R>],
+    h_kick: R,
+    h_drift: R,
+) {
+    for (i, &a) in accelerations.iter().enumerate() {
+        if attributes.is_movable(i) {
+            let v = k.velocities[i].add_scaled(a, h_kick);
             k.velocities[i] = v;
-            k.positions[i] = k.positions[i].add_scaled(v, l.h);
+            k.positions[i] = k.positions[i].add_scaled(v, h_drift);
         }
     }
 }
@@ -295,13 +306,7 @@ fn leapfrog<R: Real>(l: &StepLengths<R>, c: StepContext<'_, '_, R>) {
     }
     c.field
         .accelerations(&k.positions, &k.velocities, acceleration);
-    for (i, &a) in acceleration.iter().enumerate() {
-        if c.attributes.is_movable(i) {
-            let v = k.velocities[i].add_scaled(a, l.h);
-            k.velocities[i] = v;
-            k.positions[i] = k.positions[i].add_scaled(v, l.half_h);
-        }
-    }
+    kick_then_drift(k, c.attributes, acceleration, l.h, l.half_h);
 }
 
 /// Classical RK4 on y = (x, v), y' = (v, a(x, v)):
