@@ -328,7 +328,7 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
 
     #[inline]
     fn to_f64(self) -> f64 {
-        self.0.to_num::<f64>()
+        self.0.to_num::<f64>() // ok-det: reporting conversion
     }
 
     fn parse_decimal(text: &str) -> Result<Self, ParseRealError> {
@@ -431,6 +431,7 @@ impl<Frac: FracBits> Serialize for Fixed<Frac> {
         if serializer.is_human_readable() {
             let text = self.0.to_string();
             match text.parse::<f64>() {
+                // ok-det: human-readable serde only
                 Ok(v) if fixed::traits::ToFixed::checked_to_fixed(v) == Some(self.0) => {
                     serializer.serialize_f64(v)
                 }
@@ -476,6 +477,7 @@ impl<Frac: FracBits> Visitor<'_> for HumanVisitor<Frac> {
     }
 
     fn visit_f64<E: de::Error>(self, v: f64) -> Result<Self::Value, E> {
+        // ok-det: scene loading
         if !v.is_finite() {
             return Err(E::custom(format_args!("{v} is not a finite number")));
         }

@@ -1,3 +1,4 @@
+// ok-det: this whole file is the f64 reference format (benchmarks, accuracy); it is never in a replay or a checksum.
 //! `f64` as a [`Real`]: the reference format for accuracy and speed comparisons.
 //!
 //! It follows IEEE 754 (x / 0 is ±∞ or NaN) and is not deterministic across targets for
@@ -10,17 +11,17 @@ use core::cmp::Ordering;
 use super::real::{ParseRealError, Real};
 
 impl Real for f64 {
-    const NAME: &'static str = "f64";
+    const NAME: &'static str = "f64"; // ok-det: f64 reference format
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
     const TWO: Self = 2.0;
     const HALF: Self = 0.5;
-    const PI: Self = core::f64::consts::PI;
-    const FRAC_PI_2: Self = core::f64::consts::FRAC_PI_2;
-    const TAU: Self = core::f64::consts::TAU;
-    const MAX: Self = f64::MAX;
-    const MIN: Self = f64::MIN;
-    const EPSILON: Self = f64::EPSILON;
+    const PI: Self = core::f64::consts::PI; // ok-det: f64 reference format
+    const FRAC_PI_2: Self = core::f64::consts::FRAC_PI_2; // ok-det: f64 reference format
+    const TAU: Self = core::f64::consts::TAU; // ok-det: f64 reference format
+    const MAX: Self = f64::MAX; // ok-det: f64 reference format
+    const MIN: Self = f64::MIN; // ok-det: f64 reference format
+    const EPSILON: Self = f64::EPSILON; // ok-det: f64 reference format
 
     #[inline]
     fn from_int(value: i32) -> Self {

@@ -6,15 +6,15 @@ pub struct Metrics {
     /// Ticks completed.
     pub tick: u64,
     /// Simulated time, s.
-    pub time: f64,
+    pub time: f64, // ok-det: reporting
     /// Σ ½ m v², J.
-    pub kinetic_energy: f64,
+    pub kinetic_energy: f64, // ok-det: reporting
     /// Gravitational, point-gravity and spring potential energy, J.
-    pub potential_energy: f64,
+    pub potential_energy: f64, // ok-det: reporting
     /// Σ m v, kg·m/s.
-    pub momentum: [f64; 3],
+    pub momentum: [f64; 3], // ok-det: reporting
     /// The largest speed of any simulated point, m/s.
-    pub max_speed: f64,
+    pub max_speed: f64, // ok-det: reporting
     /// Fixed-point saturations since the world was built.
     pub saturations: u64,
     /// Live particles.
@@ -44,6 +44,7 @@ impl Metrics {
 
     /// Total mechanical energy, J.
     pub fn total_energy(&self) -> f64 {
+        // ok-det: reporting
         self.kinetic_energy + self.potential_energy
     }
 }
