@@ -499,3 +499,27 @@ fn several_files_report_each_and_exit_with_the_worst() {
     assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
     assert!(run.stderr.contains(empty.str()));
 }
+
+#[test]
+fn differing_object_digest_names_the_object() {
+    let (mut bytes, layout) = layout();
+    let replay = Replay::from_bytes(&bytes, "sample").expect("valid");
+    let checkpoint = &replay.checkpoints()[2];
+    let (part, objects) = &checkpoint.objects[0];
+    assert!(objects.len() > 3, "the sample scene has particles");
+    let (id, _) = objects[3];
+    // tick, total, part count, parts (u32 + u64 each), object-part count, then the first
+    // part's u32 tag and u64 count, then (u32 index, u32 generation, u32 digest) entries.
+    let entries = layout.checkpoints[2] + 24 + checkpoint.parts.len() * 12 + 8 + 4 + 8;
+    bytes[entries + 3 * 12 + 8] ^= 0x10;
+    let (run, file) = verify_bytes(&bytes);
+    assert_eq!(run.code, 1, "{run:?}");
+    let expected = format!(
+        "desync {} at tick 120: expected {total:016x} got {total:016x} (subsystem unknown, \
+         first differing id {id})",
+        file.str(),
+        total = checkpoint.total
+    );
+    assert_eq!(run.stdout.trim_end(), expected);
+    assert_eq!(*part, fixstep::world::Part::Particles);
+}

@@ -137,3 +137,28 @@ fn fixed_timestep_counts_ticks_and_interpolates() {
     let ticks: u32 = (0..60).map(|_| steady.advance(tick)).sum();
     assert_eq!(ticks, 60);
 }
+
+#[test]
+fn a_checkpoint_names_the_first_particle_that_diverged() {
+    use fixstep::replay::Checkpoint;
+    let mut a = orbits();
+    let mut b = orbits();
+    let nudged = Handle::new(1, 0);
+    a.step(&TickInput::default());
+    b.step(&input(
+        0,
+        vec![(
+            0,
+            vec![Command::SetVelocity {
+                target: Target::Particle(nudged),
+                velocity: Vec3::ZERO,
+            }],
+        )],
+    ));
+    let recorded = Checkpoint::capture(&a);
+    assert_eq!(recorded.first_differing_object(&a.object_digests()), None);
+    assert_eq!(
+        recorded.first_differing_object(&b.object_digests()),
+        Some((Part::Particles, nudged))
+    );
+}

@@ -252,6 +252,19 @@ impl<R: Real> ParticleSystem<R> {
         })
     }
 
+    /// One 32-bit digest per slot, in ascending slot index: the low 32 bits of the XXH3-64
+    /// of the slot's canonical bytes (item 2 of the [hash order](self)). Replays store them
+    /// at each checkpoint, so that a desync report can name the first differing particle.
+    pub fn slot_digests(&self) -> Vec<(Handle, u32)> {
+        (0..self.slot_count())
+            .map(|i| {
+                let mut h = StateHasher::new();
+                self.slot_state(i).hash(&mut h);
+                (self.storage.handle(i), h.finish() as u32)
+            })
+            .collect()
+    }
+
     /// The state of slot `i`.
     fn slot_state(&self, i: usize) -> SlotState<R> {
         let k = &self.storage.kinematics;

@@ -44,7 +44,10 @@
 //! The checksums section holds one [`Checkpoint`] at tick 0, one at every multiple of
 //! `checksum_every`, and one at `ticks` (never two at the same tick). Each is `tick: u64`,
 //! `total: u64`, then `parts` as a `u64` count of (`u32` [`Part`] variant index, `u64`
-//! sub-checksum) pairs. This section has no hash on purpose: a changed checksum must show
+//! sub-checksum) pairs, then `objects` as a `u64` count of (`u32` [`Part`] variant index,
+//! `u64` count of (`u32` slot index, `u32` generation, `u32` digest)) entries: one 32-bit
+//! digest per object slot, in ascending slot index, so that a desync names the first
+//! differing object. This section has no hash on purpose: a changed checksum must show
 //! as a desync, not as a damaged file. The header, scene and inputs are covered by their
 //! hashes, so damage there is reported as such.
 //!
@@ -60,8 +63,9 @@ use core::fmt;
 
 use serde::{Deserialize, Serialize};
 
+use crate::math::Real;
 use crate::math::state_hash::StateHasher;
-use crate::world::{Checksum, Part};
+use crate::world::{Checksum, Handle, ObjectDigests, Part, World};
 
 /// The first eight bytes of every replay file.
 pub const MAGIC: [u8; 8] = *b"FXSTEPRP";
@@ -106,15 +110,44 @@ pub struct Checkpoint {
     pub total: u64,
     /// Sub-checksums of the parts present, in [`Part`] order.
     pub parts: Vec<(Part, u64)>,
+    /// Per-object digests of the parts that have objects, in [`Part`] order (see
+    /// [`World::object_digests`]): they let a desync name the first differing object.
+    pub objects: ObjectDigests,
 }
 
-impl From<Checksum> for Checkpoint {
-    fn from(checksum: Checksum) -> Self {
+impl Checkpoint {
+    /// The checkpoint of `world` as it is now.
+    pub fn capture<R: Real>(world: &World<R>) -> Self {
+        let Checksum { tick, total, parts } = world.checksum();
         Self {
-            tick: checksum.tick,
-            total: checksum.total,
-            parts: checksum.parts,
+            tick,
+            total,
+            parts,
+            objects: world.object_digests(),
         }
+    }
+
+    /// The first object whose digest differs from `objects` (recorded here first), in part
+    /// order then slot order; an object present on one side only counts as differing.
+    pub fn first_differing_object(&self, objects: &ObjectDigests) -> Option<(Part, Handle)> {
+        for (part, recorded) in &self.objects {
+            let Some((_, current)) = objects.iter().find(|(p, _)| p == part) else {
+                return recorded.first().map(|(id, _)| (*part, *id));
+            };
+            let common = recorded.len().min(current.len());
+            if let Some(i) = (0..common).find(|&i| recorded[i] != current[i]) {
+                return Some((*part, recorded[i].0));
+            }
+            if recorded.len() != current.len() {
+                let longer = if recorded.len() > current.len() {
+                    recorded
+                } else {
+                    current
+                };
+                return Some((*part, longer[common].0));
+            }
+        }
+        None
     }
 }
 

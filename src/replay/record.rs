@@ -33,7 +33,7 @@ impl Recorder {
             ..scene.clone()
         };
         let world = build_world(&scene)?;
-        let checkpoints = vec![world.checksum().into()];
+        let checkpoints = vec![Checkpoint::capture(&world)];
         Ok(Self {
             scene,
             world,
@@ -72,7 +72,7 @@ impl Recorder {
             .tick()
             .is_multiple_of(u64::from(self.checksum_every.get()))
         {
-            self.checkpoints.push(self.world.checksum().into());
+            self.checkpoints.push(Checkpoint::capture(&self.world));
         }
         report
     }
@@ -81,7 +81,7 @@ impl Recorder {
     pub fn finish(mut self) -> Replay {
         let ticks = self.world.tick();
         if self.checkpoints.last().is_none_or(|c| c.tick != ticks) {
-            self.checkpoints.push(self.world.checksum().into());
+            self.checkpoints.push(Checkpoint::capture(&self.world));
         }
         Replay {
             state_version: STATE_VERSION,

@@ -5,7 +5,7 @@ use super::file::Replay;
 use super::format::Checkpoint;
 use super::record::build_world;
 use crate::scene::SceneError;
-use crate::world::{Checksum, Part};
+use crate::world::{Checksum, ObjectDigests, Part};
 
 /// The result of re-simulating a replay.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -27,8 +27,9 @@ pub enum VerifyOutcome {
         got: u64,
         /// The first part whose sub-checksum differs, when one does.
         part: Option<Part>,
-        /// The first object whose state differs. Always `None` for now: checkpoints hold
-        /// per-part checksums only, not per-object digests, so the object is unknown.
+        /// The first object whose recorded digest differs, such as `2v0` (slot 2,
+        /// generation 0); `None` when every object matches and the difference lies in
+        /// shared state (settings, RNG, emitters) or in the recorded checksums themselves.
         first_differing_id: Option<String>,
     },
 }
@@ -44,8 +45,9 @@ pub fn verify(replay: &Replay) -> Result<VerifyOutcome, SceneError> {
             world.step(feed.at(tick));
         }
         let got = world.checksum();
-        if !matches(checkpoint, &got) {
-            return Ok(desync(checkpoint, &got));
+        let objects = world.object_digests();
+        if !matches(checkpoint, &got, &objects) {
+            return Ok(desync(checkpoint, &got, &objects));
         }
     }
     Ok(VerifyOutcome::Ok {
@@ -54,11 +56,14 @@ pub fn verify(replay: &Replay) -> Result<VerifyOutcome, SceneError> {
     })
 }
 
-fn matches(expected: &Checkpoint, got: &Checksum) -> bool {
-    expected.tick == got.tick && expected.total == got.total && expected.parts == got.parts
+fn matches(expected: &Checkpoint, got: &Checksum, objects: &ObjectDigests) -> bool {
+    expected.tick == got.tick
+        && expected.total == got.total
+        && expected.parts == got.parts
+        && expected.objects == *objects
 }
 
-fn desync(expected: &Checkpoint, got: &Checksum) -> VerifyOutcome {
+fn desync(expected: &Checkpoint, got: &Checksum, objects: &ObjectDigests) -> VerifyOutcome {
     let recorded = Checksum {
         tick: expected.tick,
         total: expected.total,
@@ -69,6 +74,8 @@ fn desync(expected: &Checkpoint, got: &Checksum) -> VerifyOutcome {
         expected: expected.total,
         got: got.total,
         part: recorded.first_differing_part(got),
-        first_differing_id: None,
+        first_differing_id: expected
+            .first_differing_object(objects)
+            .map(|(_, id)| id.to_string()),
     }
 }

@@ -14,6 +14,6 @@ pub use difference::{Difference, first_difference};
 pub use handle::Handle;
 pub use input::{Command, PlayerInput, Target, TickInput};
 pub use metrics::Metrics;
-pub use pipeline::{STATE_VERSION, Settings, TickReport, World, WorldState};
+pub use pipeline::{ObjectDigests, STATE_VERSION, Settings, TickReport, World, WorldState};
 pub use stage::{Stage, StageTimings};
 pub use timestep::FixedTimestep;

@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::checksum::{Checksum, Part};
+use super::handle::Handle;
 use super::input::{Command, PlayerInput, TickInput};
 use super::metrics::Metrics;
 use super::stage::{Stage, StageTimings};
@@ -47,6 +48,9 @@ pub struct WorldState<R: Real = Fx> {
     /// Particles, when the scene has any.
     pub particles: Option<ParticleSystem<R>>,
 }
+
+/// Per-part lists of (object handle, 32-bit state digest), in [`Part`] order.
+pub type ObjectDigests = Vec<(Part, Vec<(Handle, u32)>)>;
 
 /// What happened during one tick, besides the state change. Not part of the state.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -315,6 +319,18 @@ impl<R: Real> World<R> {
             total: h.finish(),
             parts,
         }
+    }
+
+    /// Per-object digests of every subsystem that has objects, in [`Part`] order: one
+    /// 32-bit digest per slot in ascending slot index (see
+    /// [`ParticleSystem::slot_digests`]). Used to name the first differing object when
+    /// only a recording, not the other state, is at hand.
+    pub fn object_digests(&self) -> ObjectDigests {
+        let mut digests = Vec::new();
+        if let Some(particles) = &self.state.particles {
+            digests.push((Part::Particles, particles.slot_digests()));
+        }
+        digests
     }
 
     fn core_checksum(&self) -> u64 {
