@@ -2,9 +2,12 @@
 //!
 //! bincode 2.0.1 with its serde bridge, little-endian fixed-width integers (every `u64` is 8
 //! bytes, every length a `u64`), and a size limit. Fixed-width encoding is canonical: each
-//! value has exactly one encoding, unlike bincode's default varints. A length field larger
-//! than the limit is refused before anything is allocated. Switching encodings later is a
-//! change to this file alone.
+//! value has exactly one encoding, unlike bincode's default varints. A string or byte
+//! length larger than the limit is refused before anything is allocated; a sequence length
+//! is not checked against the limit on bincode's serde path, but serde preallocates at most
+//! 1 MiB per sequence and decoding then runs out of bytes, so memory stays bounded (the
+//! malformed-replay tests cover 2^60 lengths). Switching encodings later is a change to this
+//! file alone.
 
 use core::fmt;
 
