@@ -13,7 +13,7 @@ use super::storage::NewParticle;
 use super::system::ParticleSystem;
 use crate::math::{Real, Vec3};
 use crate::world::Handle;
-use crate::world::input::Target;
+use crate::world::input::{Command, Target};
 
 /// A compiled particle template: what `spawn` creates.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -29,6 +29,27 @@ pub(crate) struct SpawnTemplate<R: Real> {
 }
 
 impl<R: Real> ParticleSystem<R> {
+    /// Applies a world command aimed at particles; false when its target does not exist
+    /// or the command is not about particles (gravity and payloads belong to the world).
+    pub fn apply_command(&mut self, command: &Command<R>) -> bool {
+        match *command {
+            Command::ApplyForce { target, force, .. } => self.apply_force(target, force),
+            Command::ApplyImpulse {
+                target, impulse, ..
+            } => self.apply_impulse(target, impulse),
+            Command::SetVelocity { target, velocity } => self.set_velocity(target, velocity),
+            Command::Spawn {
+                template,
+                position,
+                velocity,
+            } => self.spawn(template, position, velocity).is_some(),
+            Command::Remove { target } => self.remove(target),
+            Command::MoveKinematic { target, position } => self.move_pinned(target, position),
+            Command::SetEmitter { emitter, on } => self.set_emitter(emitter, on),
+            Command::SetGravity { .. } | Command::Payload(_) => false,
+        }
+    }
+
     /// Adds `force` (N) to the external force of each targeted particle. External forces act
     /// in every step of the current tick and are cleared by [`Self::end_tick`]; several
     /// commands in one tick add up. Störmer–Verlet restarts from (x, v) at both ends of the

@@ -230,48 +230,11 @@ impl<R: Real> World<R> {
                 self.state.payload_digest = h.finish();
                 true
             }
-            Command::ApplyForce { target, force, .. } => self
+            _ => self
                 .state
                 .particles
                 .as_mut()
-                .is_some_and(|p| p.apply_force(target, force)),
-            Command::ApplyImpulse {
-                target, impulse, ..
-            } => self
-                .state
-                .particles
-                .as_mut()
-                .is_some_and(|p| p.apply_impulse(target, impulse)),
-            Command::SetVelocity { target, velocity } => self
-                .state
-                .particles
-                .as_mut()
-                .is_some_and(|p| p.set_velocity(target, velocity)),
-            Command::Spawn {
-                template,
-                position,
-                velocity,
-            } => self
-                .state
-                .particles
-                .as_mut()
-                .and_then(|p| p.spawn(template, position, velocity))
-                .is_some(),
-            Command::Remove { target } => self
-                .state
-                .particles
-                .as_mut()
-                .is_some_and(|p| p.remove(target)),
-            Command::MoveKinematic { target, position } => self
-                .state
-                .particles
-                .as_mut()
-                .is_some_and(|p| p.move_pinned(target, position)),
-            Command::SetEmitter { emitter, on } => self
-                .state
-                .particles
-                .as_mut()
-                .is_some_and(|p| p.set_emitter(emitter, on)),
+                .is_some_and(|p| p.apply_command(command)),
         }
     }
 
@@ -296,7 +259,6 @@ impl<R: Real> World<R> {
             particles.end_tick();
         }
         self.state.tick += 1;
-        self.substep_dt = substep_dt(&self.state.settings);
     }
 
     /// The checksum of the current state (see [`super::checksum`] for what is hashed).
