@@ -65,6 +65,13 @@ pub struct RunArgs {
     #[arg(long, value_name = "K", default_value_t = 1,
           value_parser = clap::value_parser!(u64).range(1..))]
     pub every: u64,
+    /// Save the world's final state as a snapshot file.
+    #[arg(long, value_name = "OUT.snapshot")]
+    pub snapshot: Option<PathBuf>,
+    /// Continue from a snapshot of this scene instead of its first tick: the scene supplies
+    /// the script (from the snapshot's tick on) and user forces, the snapshot the state.
+    #[arg(long, value_name = "IN.snapshot", conflicts_with = "record")]
+    pub from_snapshot: Option<PathBuf>,
 }
 
 impl Default for RunArgs {
@@ -77,6 +84,8 @@ impl Default for RunArgs {
             record: None,
             metrics: None,
             every: 1,
+            snapshot: None,
+            from_snapshot: None,
         }
     }
 }

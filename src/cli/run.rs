@@ -1,6 +1,7 @@
 //! `fixstep run`: simulate a scene with its script, print stage timings and the checksum.
 
 use std::io::Write;
+use std::path::Path;
 use std::time::Instant;
 
 use super::args::RunArgs;
@@ -10,8 +11,77 @@ use super::progress::Progress;
 use super::scene_arg::resolve_scene;
 use super::status::Status;
 use super::timing_table::timing_table;
+use crate::math::Fx;
 use crate::replay::{AtomicFile, DEFAULT_CHECKSUM_EVERY, InputFeed, Recorder};
+use crate::scene::Scene;
 use crate::world::checksum::hex;
+use crate::world::{TickInput, World, decode_snapshot, encode_snapshot};
+
+/// Ticks between two divergence checks of `fixstep run` (an O(particles) energy sum each).
+const DIVERGENCE_CHECK_EVERY: u64 = 10;
+
+/// What `run` steps: a recorder from the scene's first tick, or a world resumed from a
+/// snapshot (which cannot be recorded, since a replay starts at tick 0).
+enum Runner {
+    Recording(Box<Recorder>),
+    Resumed(Box<World<Fx>>),
+}
+
+impl Runner {
+    fn world(&self) -> &World<Fx> {
+        match self {
+            Self::Recording(recorder) => recorder.world(),
+            Self::Resumed(world) => world,
+        }
+    }
+
+    fn step(&mut self, input: &TickInput<Fx>) {
+        match self {
+            Self::Recording(recorder) => {
+                recorder.step(input);
+            }
+            Self::Resumed(world) => {
+                world.step(input);
+            }
+        }
+    }
+}
+
+/// The scene's world, continued from the snapshot at `path`.
+fn resume(scene: &Scene<Fx>, path: &Path) -> Result<World<Fx>, String> {
+    let bytes = std::fs::read(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    let state = decode_snapshot::<Fx>(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut world = scene.build().map_err(|e| format!("{}: {e}", scene.name))?;
+    world.restore(&state);
+    if let Some(particles) = world.particles() {
+        particles
+            .check_user_forces()
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    Ok(world)
+}
+
+/// Refuses two outputs that name the same file.
+fn distinct_outputs(args: &RunArgs) -> Result<(), String> {
+    let outputs = [
+        ("--record", &args.record),
+        ("--metrics", &args.metrics),
+        ("--snapshot", &args.snapshot),
+    ];
+    for (i, (first, a)) in outputs.iter().enumerate() {
+        for (second, b) in &outputs[i + 1..] {
+            if let (Some(a), Some(b)) = (a, b)
+                && a == b
+            {
+                return Err(format!(
+                    "{}: {first} and {second} name the same file",
+                    a.display()
+                ));
+            }
+        }
+    }
+    Ok(())
+}
 
 /// Runs the scene. The last line printed is `checksum: <16 hex digits>`.
 pub fn run(args: &RunArgs) -> Result<Status, String> {
@@ -20,18 +90,16 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
         scene.seed = seed;
     }
     let ticks = args.ticks.unwrap_or(scene.ticks);
+    distinct_outputs(args)?;
 
-    if let (Some(record), Some(metrics)) = (&args.record, &args.metrics)
-        && record == metrics
-    {
-        return Err(format!(
-            "{}: --record and --metrics name the same file",
-            record.display()
-        ));
-    }
     // Open the outputs first, so a bad path fails before the run rather than after it.
     let replay_file = args
         .record
+        .as_deref()
+        .map(|path| AtomicFile::create(path).map_err(|e| write_error(path, &e)))
+        .transpose()?;
+    let snapshot_file = args
+        .snapshot
         .as_deref()
         .map(|path| AtomicFile::create(path).map_err(|e| write_error(path, &e)))
         .transpose()?;
@@ -41,27 +109,41 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
         .map(|path| MetricsCsv::create(path, args.every))
         .transpose()?;
 
-    let mut recorder = Recorder::new(&scene, DEFAULT_CHECKSUM_EVERY)
-        .map_err(|e| format!("{}: {e}", args.scene))?;
-    recorder.enable_timing();
+    let mut runner = match &args.from_snapshot {
+        Some(path) => Runner::Resumed(Box::new(resume(&scene, path)?)),
+        None => Runner::Recording(Box::new(
+            Recorder::new(&scene, DEFAULT_CHECKSUM_EVERY)
+                .map_err(|e| format!("{}: {e}", args.scene))?,
+        )),
+    };
+    match &mut runner {
+        Runner::Recording(recorder) => {
+            recorder.enable_timing();
+            recorder.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
+        }
+        Runner::Resumed(world) => {
+            world.enable_timing();
+            world.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
+        }
+    }
     if let Some(metrics) = &mut metrics {
-        metrics.tick(recorder.world())?;
+        metrics.tick(runner.world())?;
     }
     let mut feed = InputFeed::new(&scene.script);
     let mut progress = Progress::new(ticks);
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
     for done in 1..=ticks {
-        let tick = recorder.world().tick();
-        recorder.step(feed.at(tick));
+        let tick = runner.world().tick();
+        runner.step(feed.at(tick));
         if let Some(metrics) = &mut metrics {
-            metrics.tick(recorder.world())?;
+            metrics.tick(runner.world())?;
         }
         progress.update(done);
     }
     let wall = started.elapsed();
     progress.finish();
 
-    let world = recorder.world();
+    let world = runner.world();
     print_line(&format!(
         "{}: {ticks} ticks at {} Hz ({} substeps), seed {:#x}, {:.1} ms wall",
         scene.name,
@@ -76,11 +158,21 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
         }
     }
     let saturations = world.saturations_total();
+    let divergence = world.divergence();
+    let checksum = world.checksum().total;
     if let Some(metrics) = metrics {
         metrics.finish(world)?;
     }
-    let replay = recorder.finish();
-    if let Some(mut file) = replay_file {
+    if let Some(mut file) = snapshot_file {
+        let path = file.path().to_owned();
+        let bytes = encode_snapshot(&world.snapshot())
+            .map_err(|e| format!("{}: cannot encode the snapshot: {e}", path.display()))?;
+        file.write_all(&bytes)
+            .and_then(|()| file.commit())
+            .map_err(|e| write_error(&path, &e))?;
+    }
+    if let (Runner::Recording(recorder), Some(mut file)) = (runner, replay_file) {
+        let replay = recorder.finish();
         let path = file.path().to_owned();
         let bytes = replay
             .to_bytes()
@@ -94,6 +186,14 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
             "warning: {saturations} fixed-point saturations (values hit the numeric range)"
         ));
     }
-    print_line(&format!("checksum: {}", hex(replay.final_checksum())))?;
+    if let Some(d) = divergence {
+        eprint_line(&format!(
+            "warning: the simulation diverged at tick {}: the energy per particle grew from \
+             {:.3e} J to {:.3e} J; the step is too long for the stiffest force, or the \
+             integrator is unstable (try more substeps)",
+            d.tick, d.reference, d.energy_scale
+        ));
+    }
+    print_line(&format!("checksum: {}", hex(checksum)))?;
     Ok(Status::Ok)
 }

@@ -33,7 +33,7 @@
 //! [`desc`] scene types · `build` validation and compilation · `storage` slots and recycling ·
 //! [`emitter`] emission and its random draws · `forces` force generators and a(x, v) ·
 //! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the six schemes ·
-//! `commands` command methods · `metrics` energies and momenta · [`hashing`] canonical hash
+//! `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
 //! order · [`presets`] built-in scenes.
 
 mod build;
@@ -49,6 +49,7 @@ pub mod presets;
 mod storage;
 mod system;
 pub mod user_force;
+mod validate;
 
 pub use desc::{
     DEFAULT_CAPACITY, EmitterDesc, ForceDesc, Interval, MAX_CAPACITY, MAX_EMISSION_RATE,

@@ -132,6 +132,11 @@ impl<R: Real> ParticleStorage<R> {
         self.live_count
     }
 
+    /// The lowest dead slot, or the slot count when every slot is alive.
+    pub fn lowest_free(&self) -> u32 {
+        self.lowest_free
+    }
+
     /// True when a new particle would not fit.
     #[inline]
     pub fn is_full(&self) -> bool {

@@ -53,6 +53,11 @@ impl Recorder {
         self.world.enable_timing();
     }
 
+    /// Starts checking the world for divergence every `every` ticks (not recorded).
+    pub fn enable_divergence_check(&mut self, every: u64) {
+        self.world.enable_divergence_check(every);
+    }
+
     /// Runs one tick with `input` (its `tick` field is ignored: the input applies to the
     /// world's current tick).
     pub fn step(&mut self, input: &TickInput<Fx>) -> TickReport {

@@ -19,16 +19,19 @@ pub struct Metrics {
     pub saturations: u64,
     /// Live particles.
     pub particles: u64,
+    /// Whether the divergence check has seen the energy blow up (see
+    /// [`divergence`](super::divergence)); false when the check is off.
+    pub diverged: bool,
 }
 
 impl Metrics {
     /// The CSV header: the fixed columns, then one column per subsystem figure.
-    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles";
+    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged";
 
     /// The row as CSV, in [`Metrics::CSV_HEADER`] order.
     pub fn csv_row(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             self.tick,
             self.time,
             self.kinetic_energy,
@@ -38,7 +41,8 @@ impl Metrics {
             self.momentum[2],
             self.max_speed,
             self.saturations,
-            self.particles
+            self.particles,
+            u8::from(self.diverged)
         )
     }
 

@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::checksum::{Checksum, Part};
+use super::divergence::{Divergence, DivergenceMonitor};
 use super::handle::Handle;
 use super::input::{Command, PlayerInput, TickInput};
 use super::metrics::Metrics;
@@ -12,6 +13,7 @@ use crate::math::saturation::count_saturations;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticleSystem;
+use crate::scene::{MAX_SUBSTEPS, MAX_TICK_RATE, SceneError};
 
 /// The version of the simulated state. It names the physics as much as the layout: bump it
 /// whenever a change alters any committed checksum, then re-record `replays/`.
@@ -49,6 +51,35 @@ pub struct WorldState<R: Real = Fx> {
     pub particles: Option<ParticleSystem<R>>,
 }
 
+impl<R: Real> WorldState<R> {
+    /// Checks the invariants a world relies on, for a state that comes from outside (a
+    /// snapshot); the error names the offending field.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        if !(1..=MAX_TICK_RATE).contains(&self.settings.tick_rate) {
+            return Err(SceneError::new(
+                "settings.tick_rate",
+                format!(
+                    "must be 1 to {MAX_TICK_RATE} (got {})",
+                    self.settings.tick_rate
+                ),
+            ));
+        }
+        if !(1..=MAX_SUBSTEPS).contains(&self.settings.substeps) {
+            return Err(SceneError::new(
+                "settings.substeps",
+                format!(
+                    "must be 1 to {MAX_SUBSTEPS} (got {})",
+                    self.settings.substeps
+                ),
+            ));
+        }
+        match &self.particles {
+            Some(particles) => particles.validate().map_err(|e| e.within("particles")),
+            None => Ok(()),
+        }
+    }
+}
+
 /// Per-part lists of (object handle, 32-bit state digest), in [`Part`] order.
 pub type ObjectDigests = Vec<(Part, Vec<(Handle, u32)>)>;
 
@@ -78,6 +109,7 @@ pub struct World<R: Real = Fx> {
     substep_dt: R,
     timings: Option<Box<StageTimings>>,
     saturations_total: u64,
+    divergence: Option<Box<DivergenceMonitor>>,
 }
 
 impl<R: Real> World<R> {
@@ -100,6 +132,7 @@ impl<R: Real> World<R> {
             substep_dt,
             timings: None,
             saturations_total: 0,
+            divergence: None,
         }
     }
 
@@ -151,6 +184,20 @@ impl<R: Real> World<R> {
         self.timings.as_deref()
     }
 
+    /// Starts checking for divergence now and every `every` ticks (see
+    /// [`divergence`](super::divergence)): an O(particles) energy sum per check, outside the
+    /// simulated state. The current state is the reference.
+    pub fn enable_divergence_check(&mut self, every: u64) {
+        let mut monitor = DivergenceMonitor::new(every);
+        monitor.sample(&self.metrics());
+        self.divergence = Some(Box::new(monitor));
+    }
+
+    /// The first divergence seen since the check was enabled.
+    pub fn divergence(&self) -> Option<Divergence> {
+        self.divergence.as_ref().and_then(|m| m.detected())
+    }
+
     /// Saturations counted over every tick this world has run.
     pub fn saturations_total(&self) -> u64 {
         self.saturations_total
@@ -171,6 +218,14 @@ impl<R: Real> World<R> {
             ignored
         });
         self.saturations_total += saturations;
+        if let Some(monitor) = &self.divergence
+            && self.state.tick.is_multiple_of(monitor.every)
+        {
+            let metrics = self.metrics();
+            if let Some(monitor) = &mut self.divergence {
+                monitor.sample(&metrics);
+            }
+        }
         TickReport {
             ignored_commands,
             saturations,
@@ -313,6 +368,7 @@ impl<R: Real> World<R> {
             tick: self.state.tick,
             time: self.time().to_f64(),
             saturations: self.saturations_total,
+            diverged: self.divergence().is_some(),
             ..Metrics::default()
         };
         if let Some(p) = &self.state.particles {

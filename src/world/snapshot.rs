@@ -1,0 +1,156 @@
+//! Snapshot files: a complete [`WorldState`] as bytes, to save a world and continue it later,
+//! on this machine or another.
+//!
+//! All integers are little-endian; "codec" is [`crate::codec`] (fixed-width bincode).
+//!
+//! | offset | size | content |
+//! |---|---|---|
+//! | 0 | 8 | magic: the ASCII bytes `FXSTEPSN` |
+//! | 8 | 4 | format version, `u32` = 1 ([`SNAPSHOT_FORMAT_VERSION`]) |
+//! | 12 | 4 | state version, `u32` ([`STATE_VERSION`] when written) |
+//! | 16 | 8 + n | scalar format name: `u64` length n, then its ASCII bytes (`"I32F32"`) |
+//! | 24 + n | S | the state: codec-encoded [`WorldState`] |
+//! | 24 + n + S | 8 | XXH3-64 of every byte before it |
+//!
+//! Readers check, in order: the length, the magic, the format version, the trailing hash,
+//! the state version, the scalar, the decoding (which must use every byte), and then the
+//! state's own invariants ([`WorldState::validate`]), so that a restored world can never
+//! index out of its arrays, however the bytes were made.
+
+use core::fmt;
+
+use super::pipeline::{STATE_VERSION, WorldState};
+use crate::codec;
+use crate::math::Real;
+use crate::math::state_hash::StateHasher;
+
+/// The first eight bytes of every snapshot.
+pub const SNAPSHOT_MAGIC: [u8; 8] = *b"FXSTEPSN";
+
+/// The layout version this build reads and writes.
+pub const SNAPSHOT_FORMAT_VERSION: u32 = 1;
+
+/// Magic, format version and state version.
+const FIXED_PREFIX: usize = 16;
+
+/// Length of the trailing hash.
+const HASH_LEN: usize = 8;
+
+/// Why bytes are not a snapshot this build can restore. `offset` is the byte where the
+/// problem was found.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SnapshotError {
+    /// Byte offset of the offending part.
+    pub offset: usize,
+    /// What is wrong there.
+    pub message: String,
+}
+
+impl SnapshotError {
+    fn at(offset: usize, message: impl Into<String>) -> Self {
+        Self {
+            offset,
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for SnapshotError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "at byte {}: {}", self.offset, self.message)
+    }
+}
+
+impl std::error::Error for SnapshotError {}
+
+/// XXH3-64 of `bytes`, as the trailing hash.
+fn trailing_hash(bytes: &[u8]) -> u64 {
+    let mut hasher = StateHasher::new();
+    hasher.write_bytes(bytes);
+    hasher.finish()
+}
+
+/// The snapshot file of `state` (layout in the [module documentation](self)).
+pub fn encode_snapshot<R: Real>(state: &WorldState<R>) -> Result<Vec<u8>, SnapshotError> {
+    let mut bytes = Vec::new();
+    bytes.extend_from_slice(&SNAPSHOT_MAGIC);
+    bytes.extend_from_slice(&SNAPSHOT_FORMAT_VERSION.to_le_bytes());
+    bytes.extend_from_slice(&STATE_VERSION.to_le_bytes());
+    let scalar = codec::encode(R::NAME).map_err(|e| SnapshotError::at(FIXED_PREFIX, e.0))?;
+    bytes.extend_from_slice(&scalar);
+    let body = codec::encode(state).map_err(|e| SnapshotError::at(bytes.len(), e.0))?;
+    bytes.extend_from_slice(&body);
+    let hash = trailing_hash(&bytes);
+    bytes.extend_from_slice(&hash.to_le_bytes());
+    Ok(bytes)
+}
+
+/// Reads a snapshot written by [`encode_snapshot`] with the same scalar and state version,
+/// and checks that the state is one a world can run.
+pub fn decode_snapshot<R: Real>(bytes: &[u8]) -> Result<WorldState<R>, SnapshotError> {
+    if bytes.len() < FIXED_PREFIX + HASH_LEN {
+        return Err(SnapshotError::at(
+            bytes.len(),
+            format!(
+                "too short for a snapshot ({} bytes; at least {} needed)",
+                bytes.len(),
+                FIXED_PREFIX + HASH_LEN
+            ),
+        ));
+    }
+    if bytes[..8] != SNAPSHOT_MAGIC {
+        return Err(SnapshotError::at(
+            0,
+            "not a fixstep snapshot (the file does not start with FXSTEPSN)",
+        ));
+    }
+    let format_version = read_u32(bytes, 8);
+    if format_version != SNAPSHOT_FORMAT_VERSION {
+        return Err(SnapshotError::at(
+            8,
+            format!(
+                "snapshot format version {format_version}; this build reads version \
+                 {SNAPSHOT_FORMAT_VERSION}"
+            ),
+        ));
+    }
+    let hash_at = bytes.len() - HASH_LEN;
+    let stored = u64::from_le_bytes(bytes[hash_at..].try_into().expect("8 bytes"));
+    if stored != trailing_hash(&bytes[..hash_at]) {
+        return Err(SnapshotError::at(
+            hash_at,
+            "the snapshot is damaged (its content hash does not match)",
+        ));
+    }
+    let state_version = read_u32(bytes, 12);
+    if state_version != STATE_VERSION {
+        return Err(SnapshotError::at(
+            12,
+            format!(
+                "written with state version {state_version}; this build simulates state \
+                 version {STATE_VERSION}, so the snapshot cannot continue here"
+            ),
+        ));
+    }
+    let body = &bytes[FIXED_PREFIX..hash_at];
+    let (scalar, used) = codec::decode_prefix::<String>(body)
+        .map_err(|e| SnapshotError::at(FIXED_PREFIX, format!("scalar name: {e}")))?;
+    if scalar != R::NAME {
+        return Err(SnapshotError::at(
+            FIXED_PREFIX,
+            format!("scalar format {scalar:?}; this world uses {:?}", R::NAME),
+        ));
+    }
+    let state_at = FIXED_PREFIX + used;
+    let state: WorldState<R> = codec::decode_exact(&body[used..])
+        .map_err(|e| SnapshotError::at(state_at, format!("state: {e}")))?;
+    state
+        .validate()
+        .map_err(|e| SnapshotError::at(state_at, format!("state: {e}")))?;
+    Ok(state)
+}
+
+/// The little-endian `u32` at `at` (the caller checked the length).
+fn read_u32(bytes: &[u8], at: usize) -> u32 {
+    u32::from_le_bytes(bytes[at..at + 4].try_into().expect("4 bytes"))
+}
