@@ -5,6 +5,7 @@
 //! machine. Data flows one way: [`scene`] → [`world`] → stages → state → checksum and
 //! [`replay`].
 
+pub mod bench;
 pub mod cli;
 pub mod codec;
 pub mod math;

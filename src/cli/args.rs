@@ -41,6 +41,34 @@ pub enum Command {
         #[arg(required = true, value_name = "FILE.replay")]
         files: Vec<PathBuf>,
     },
+    /// Measure the integrators: accuracy against exact solutions, and stability limits.
+    Bench {
+        /// Which benchmark.
+        #[command(subcommand)]
+        benchmark: BenchCommand,
+    },
+}
+
+/// The benchmarks of `fixstep bench`.
+#[derive(Debug, Subcommand)]
+pub enum BenchCommand {
+    /// Error and time of five problems × six integrators × four formats × a step sweep:
+    /// writes DIR/accuracy.csv and DIR/work-precision.svg, prints the measured orders.
+    Accuracy {
+        /// Output directory (created if missing).
+        #[arg(long, value_name = "DIR", default_value = "bench-out")]
+        out: PathBuf,
+        /// Fewer halvings of the step and one run per point (seconds instead of a minute).
+        #[arg(long)]
+        quick: bool,
+    },
+    /// Largest stable ωh of each integrator on the undamped and damped spring, against
+    /// theory: writes DIR/stability.csv and prints the table.
+    Stability {
+        /// Output directory (created if missing).
+        #[arg(long, value_name = "DIR", default_value = "bench-out")]
+        out: PathBuf,
+    },
 }
 
 /// Arguments of `fixstep run`.

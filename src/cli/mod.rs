@@ -8,6 +8,8 @@
 //! fixstep verify FILE.replay...
 //! fixstep info FILE.replay
 //! fixstep rerecord FILE.replay...
+//! fixstep bench accuracy [--out DIR] [--quick]
+//! fixstep bench stability [--out DIR]
 //! ```
 //!
 //! Exit status: 0 success; 1 a replay desynchronised; 2 a bad argument, an unreadable or
@@ -15,6 +17,7 @@
 //! `error: `.
 
 mod args;
+mod bench;
 mod info;
 mod metrics_csv;
 mod output;
@@ -31,7 +34,7 @@ use std::ffi::OsString;
 
 use clap::Parser;
 
-pub use args::{Cli, Command, RunArgs};
+pub use args::{BenchCommand, Cli, Command, RunArgs};
 pub use status::Status;
 
 /// Runs the command line of this process; returns the exit code.
@@ -65,6 +68,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         Some(Command::Verify { files }) => verify::verify_files(&files),
         Some(Command::Info { file }) => info::info(&file),
         Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
+        Some(Command::Bench { benchmark }) => bench::bench(&benchmark),
     };
     match result {
         Ok(status) => status.code(),
