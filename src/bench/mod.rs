@@ -1,24 +1,26 @@
 //! Benchmarks of the integrators: accuracy against exact solutions and stability limits.
 //!
 //! This is reporting code, run by `fixstep bench accuracy` and `fixstep bench stability`.
-//! The simulations themselves use the engine's [`ParticleSystem`](crate::particles::ParticleSystem)
-//! in each [`Real`](crate::math::Real) format; reference solutions, errors, timings and
-//! plots are computed in `f64` and never feed back into a simulation.
+//! The simulations themselves use the engine's
+//! [`ParticleSystem`](crate::particles::ParticleSystem) in each
+//! [`Real`](crate::math::Real) format; reference solutions, errors, timings and plots are
+//! computed in `f64` and never feed back into a simulation.
 //!
 //! # Files
 //!
-//! `format` the number formats · `exact` closed-form solutions · `kepler_equation` the
-//! Kepler reference · `elliptic` the pendulum period · `pendulum_force` the pendulum as a
-//! user force · [`problems`] the five problems · [`sweep`] the timed accuracy sweep ·
-//! [`order`] measured orders of convergence · `plot` the work-precision SVG ·
-//! [`stability`] stability limits · `report` CSV files and printed tables.
+//! [`format`](mod@format) the number formats · [`exact`] closed-form solutions ·
+//! [`kepler_equation`] the Kepler reference · [`elliptic`] the pendulum period ·
+//! [`pendulum_force`] the pendulum as a user force · [`problems`] the five problems ·
+//! [`sweep`] the timed accuracy sweep · [`order`] measured orders of convergence · `plot`
+//! the work-precision SVG · [`stability`] stability limits · `report` CSV files and printed
+//! tables.
 
 pub mod elliptic;
 pub mod exact;
 pub mod format;
 pub mod kepler_equation;
 pub mod order;
-mod pendulum_force;
+pub mod pendulum_force;
 mod plot;
 pub mod problems;
 mod report;
