@@ -1,3 +1,4 @@
+// ok-det: the benchmark module (reporting code); f64 appears only in reference solutions, errors, timings and plots, never in a tick.
 //! Benchmarks of the integrators: accuracy against exact solutions and stability limits.
 //!
 //! This is reporting code, run by `fixstep bench accuracy` and `fixstep bench stability`.
