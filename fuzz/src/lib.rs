@@ -1,0 +1,109 @@
+//! What each fuzz target does with its bytes. The targets in `fuzz_targets/` call these, and
+//! `tests/fuzz_regressions.rs` in the fixstep package runs every kept input through them, so
+//! a crash found once stays fixed.
+//!
+//! Each function must return normally for any input: an error is a fine answer, a panic,
+//! an abort, a hang or an unbounded allocation is a bug. Where the input is accepted, the
+//! function also checks the properties that must hold for every accepted input, and returns
+//! true (the seeds must all be accepted, or they would seed nothing).
+
+use fixstep::codec;
+use fixstep::math::Fx;
+use fixstep::replay::{InputFeed, Replay, verify};
+use fixstep::scene::{Scene, parse_scene};
+use fixstep::world::{TickInput, World, decode_snapshot, encode_snapshot};
+
+/// The most ticks any target simulates.
+pub const MAX_TICKS: u64 = 64;
+
+/// A replay file's bytes: decoding never panics; an accepted replay encodes back to the
+/// same bytes (one encoding per replay), and a short one verifies without a panic.
+pub fn replay_decode(data: &[u8]) -> bool {
+    let Ok(replay) = Replay::from_bytes(data, "fuzz") else {
+        return false;
+    };
+    let again = replay.to_bytes().expect("an accepted replay encodes");
+    assert_eq!(again, data, "an accepted replay has exactly one encoding");
+    if replay.ticks() <= MAX_TICKS {
+        let _ = verify(&replay);
+    }
+    true
+}
+
+/// A RON scene file's bytes: parsing never panics; an accepted scene builds or is refused
+/// with an error, and a built world runs.
+pub fn scene_ron(data: &[u8]) -> bool {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return false;
+    };
+    let Ok(scene) = parse_scene::<Fx>(text, "fuzz.ron") else {
+        return false;
+    };
+    match scene.build() {
+        Ok(world) => {
+            run(world, &scene.script, MAX_TICKS / 8);
+            true
+        }
+        Err(_) => false,
+    }
+}
+
+/// A snapshot file's bytes: decoding never panics; an accepted snapshot encodes back to the
+/// same bytes and continues without a panic.
+pub fn snapshot_decode(data: &[u8]) -> bool {
+    let Ok(state) = decode_snapshot::<Fx>(data) else {
+        return false;
+    };
+    let again = encode_snapshot(&state).expect("an accepted snapshot encodes");
+    assert_eq!(again, data, "an accepted snapshot has exactly one encoding");
+    run(World::from_state(state), &[], MAX_TICKS / 8);
+    true
+}
+
+/// Any scene and inputs, as the codec encodes them (a replay's scene section followed by
+/// its inputs section): the world builds or is refused, then runs up to [`MAX_TICKS`] ticks
+/// whatever the values (huge forces, zero or negative masses, degenerate springs,
+/// coincident particles). Halfway, the state goes through a snapshot file and back, which
+/// must be accepted, and restoring it must replay the second half to the same checksum.
+pub fn world_step(data: &[u8]) -> bool {
+    let Ok((scene, used)) = codec::decode_prefix::<Scene<Fx>>(data) else {
+        return false;
+    };
+    let inputs: Vec<TickInput<Fx>> = codec::decode_prefix(&data[used..])
+        .map(|(inputs, _)| inputs)
+        .unwrap_or_default();
+    let Ok(mut world) = scene.build() else {
+        return false;
+    };
+    let half = MAX_TICKS / 2;
+    let mut feed = InputFeed::new(&inputs);
+    for tick in 0..half {
+        world.step(feed.at(tick));
+    }
+    let bytes = encode_snapshot(&world.snapshot()).expect("a running world encodes");
+    let snapshot = decode_snapshot::<Fx>(&bytes).expect("a running world's snapshot is valid");
+    for tick in half..MAX_TICKS {
+        world.step(feed.at(tick));
+    }
+    let end = world.checksum();
+    world.restore(&snapshot);
+    let mut feed = InputFeed::new(&inputs);
+    for tick in half..MAX_TICKS {
+        world.step(feed.at(tick));
+    }
+    assert_eq!(
+        world.checksum(),
+        end,
+        "restoring a snapshot changed the run"
+    );
+    true
+}
+
+/// Runs `ticks` ticks of `inputs`.
+fn run(mut world: World<Fx>, inputs: &[TickInput<Fx>], ticks: u64) {
+    let mut feed = InputFeed::new(inputs);
+    for _ in 0..ticks {
+        let tick = world.tick();
+        world.step(feed.at(tick));
+    }
+}

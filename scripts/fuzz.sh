@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Fuzzing fixstep's decoders and world with cargo-fuzz (libFuzzer), on stable Rust.
+#
+#   scripts/fuzz.sh seeds                 rebuild fuzz/seeds/ from replays/ and scenes/
+#   scripts/fuzz.sh smoke [SECONDS]       run every seed and kept crash through every
+#                                         target; then, if SECONDS is given, fuzz each
+#                                         target for SECONDS
+#   scripts/fuzz.sh run TARGET [SECONDS]  fuzz one target (default: until stopped)
+#
+# Targets: replay_decode, scene_ron, snapshot_decode, world_step (see fuzz/src/lib.rs).
+# The working corpus is fuzz/corpus/TARGET (not committed), started from fuzz/seeds/TARGET.
+# A crash lands in fuzz/artifacts/TARGET/; once fixed, copy it to fuzz/regressions/TARGET/,
+# where `cargo test --test fuzz_regressions` runs it for ever after.
+#
+# Installs cargo-fuzz (crates.io) when missing. `-s none`: no sanitizer, so stable works;
+# with nightly, `cargo +nightly fuzz run -s address TARGET` adds AddressSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+TARGETS=(replay_decode scene_ron snapshot_decode world_step)
+
+ensure_cargo_fuzz() {
+  cargo fuzz --version >/dev/null 2>&1 || cargo install cargo-fuzz --locked --version 0.13.2
+}
+
+# The replay format (src/replay/format.rs): the scene section starts at byte 94 (for the
+# I32F32 header), and the inputs section follows it; world_step reads exactly that.
+SCENE_OFFSET=94
+
+seeds() {
+  cargo build --release --quiet
+  local bin=target/release/fixstep dir f name
+  for t in "${TARGETS[@]}"; do rm -rf "fuzz/seeds/$t"; mkdir -p "fuzz/seeds/$t"; done
+  for f in replays/*.replay; do
+    name=$(basename "$f" .replay)
+    cp "$f" "fuzz/seeds/replay_decode/$name"
+    tail -c +$((SCENE_OFFSET + 1)) "$f" >"fuzz/seeds/world_step/$name"
+  done
+  for f in scenes/*.ron; do cp "$f" "fuzz/seeds/scene_ron/$(basename "$f" .ron)"; done
+  for name in $("$bin" scenes | cut -d' ' -f1); do
+    for ticks in 0 45; do
+      "$bin" run "$name" --ticks "$ticks" --snapshot "fuzz/seeds/snapshot_decode/$name-$ticks" >/dev/null
+    done
+  done
+  echo "seeds: $(find fuzz/seeds -type f | wc -l) files in fuzz/seeds/"
+}
+
+# run_target TARGET MODE: MODE `replay` runs the seeds and kept crashes once; a number
+# fuzzes for that many seconds; `forever` fuzzes until stopped.
+run_target() {
+  local t=$1 mode=$2 limits=()
+  local inputs=("corpus/$t" "seeds/$t")
+  mkdir -p "fuzz/corpus/$t"
+  [[ -d fuzz/regressions/$t ]] && inputs+=("regressions/$t")
+  case $mode in
+    replay) limits=(-runs=0) ;;
+    forever) ;;
+    *) limits=(-max_total_time="$mode") ;;
+  esac
+  (cd fuzz && cargo fuzz run -s none "$t" "${inputs[@]}" -- \
+     "${limits[@]}" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1)
+}
+
+case "${1:-}" in
+  seeds) seeds ;;
+  smoke)
+    ensure_cargo_fuzz
+    for t in "${TARGETS[@]}"; do run_target "$t" replay; done
+    if [[ -n ${2:-} ]]; then for t in "${TARGETS[@]}"; do run_target "$t" "$2"; done; fi
+    echo "fuzz smoke: ${#TARGETS[@]} targets passed"
+    ;;
+  run)
+    [[ -n ${2:-} ]] || { echo "usage: $0 run TARGET [SECONDS]" >&2; exit 2; }
+    ensure_cargo_fuzz
+    run_target "$2" "${3:-forever}"
+    ;;
+  *) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
+esac
