@@ -55,18 +55,24 @@ pub type FxI40F24 = Fixed<U24>;
 /// π·2⁶¹, correctly rounded: the source of π for every fractional width.
 const PI_Q61: i64 = 7_244_019_458_077_122_842;
 
-/// Narrows an `i128` to `i64`, saturating and counting when it does not fit.
+/// Narrows an `i128` to `i64`, saturating and counting when it does not fit. The common
+/// case costs one comparison (the high half against the sign of the low half).
 #[inline(always)]
 pub(crate) fn saturate_i128(value: i128) -> i64 {
-    if value > i64::MAX as i128 {
-        record_saturation();
-        i64::MAX
-    } else if value < i64::MIN as i128 {
-        record_saturation();
-        i64::MIN
+    let narrow = value as i64;
+    if narrow as i128 == value {
+        narrow
     } else {
-        value as i64
+        saturate_out_of_range(value)
     }
+}
+
+/// The saturated value of an `i128` outside the `i64` range, counted.
+#[cold]
+#[inline(never)]
+fn saturate_out_of_range(value: i128) -> i64 {
+    record_saturation();
+    if value > 0 { i64::MAX } else { i64::MIN }
 }
 
 /// Product of two raw values with `frac` fractional bits: `(a·b + 2^(frac−1)) >> frac`,
@@ -311,6 +317,20 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
     #[inline]
     fn from_int(value: i32) -> Self {
         Self::from_bits(saturate_i128((value as i128) << Self::FRAC_BITS))
+    }
+
+    /// Fused: `(self·2^F + a·b + 2^(F−1)) >> F` in 128 bits, saturated and counted once.
+    /// Since self·2^F is a multiple of 2^F, this equals `self + a * b` (the product rounded
+    /// to nearest, ties toward +∞, then added) bit for bit whenever neither of those two
+    /// operations saturates; when the product alone leaves the range, the fused result is
+    /// the exact sum, saturated, rather than the sum of a saturated product.
+    #[inline(always)]
+    fn add_product(self, a: Self, b: Self) -> Self {
+        let product = a.to_bits() as i128 * b.to_bits() as i128;
+        let sum = ((self.to_bits() as i128) << Self::FRAC_BITS) + product;
+        Self::from_bits(saturate_i128(
+            (sum + (1i128 << (Self::FRAC_BITS - 1))) >> Self::FRAC_BITS,
+        ))
     }
 
     #[inline]

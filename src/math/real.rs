@@ -122,6 +122,14 @@ pub trait Real:
         }
     }
 
+    /// `self + a·b`, the update of every integrator (x + v·h). The default is exactly
+    /// `self + a * b`; a format may fuse the two, provided the result is the same whenever
+    /// neither operation leaves the range.
+    #[inline(always)]
+    fn add_product(self, a: Self, b: Self) -> Self {
+        self + a * b
+    }
+
     /// 1/x. Zero gives the division-by-zero value of the format.
     #[inline]
     fn recip(self) -> Self {

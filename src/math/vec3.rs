@@ -129,10 +129,15 @@ impl<R: Real> Vec3<R> {
         self + (other - self) * t
     }
 
-    /// `self + v·s`: the fused update used by integrators (x += v·dt).
+    /// `self + v·s`: the fused update used by integrators (x += v·dt), per component with
+    /// [`Real::add_product`].
     #[inline(always)]
     pub fn add_scaled(self, v: Self, s: R) -> Self {
-        Self::new(self.x + v.x * s, self.y + v.y * s, self.z + v.z * s)
+        Self::new(
+            self.x.add_product(v.x, s),
+            self.y.add_product(v.y, s),
+            self.z.add_product(v.z, s),
+        )
     }
 
     /// The unit vector along `self` and the length, or `None` for the zero vector.

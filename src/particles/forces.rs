@@ -121,6 +121,9 @@ pub(crate) struct ForceField<'a, R: Real> {
     gravity: Vec3<R>,
     /// Σ scale · g over the gravity fields without a group restriction, m/s².
     uniform_gravity: Vec3<R>,
+    /// Whether any field depends on the particle (a group restriction or point gravity);
+    /// when none does, the per-particle loop over fields is skipped.
+    per_particle_fields: bool,
 }
 
 impl<'a, R: Real> ForceField<'a, R> {
@@ -139,12 +142,17 @@ impl<'a, R: Real> ForceField<'a, R> {
                 AccelerationField::Gravity { scale, group: None } => sum + gravity * scale,
                 _ => sum,
             });
+        let per_particle_fields = forces
+            .fields
+            .iter()
+            .any(|field| !matches!(field, AccelerationField::Gravity { group: None, .. }));
         Self {
             forces,
             user_forces,
             attributes,
             gravity,
             uniform_gravity,
+            per_particle_fields,
         }
     }
 
@@ -156,13 +164,23 @@ impl<'a, R: Real> ForceField<'a, R> {
         for generator in &self.forces.generators {
             self.add_forces(generator, x, v, out);
         }
+        if !self.per_particle_fields {
+            for (acceleration, &inv_mass) in out.iter_mut().zip(&attributes.inv_masses) {
+                *acceleration = if inv_mass == R::ZERO {
+                    Vec3::ZERO
+                } else {
+                    self.uniform_gravity.add_scaled(*acceleration, inv_mass)
+                };
+            }
+            return;
+        }
         for (i, acceleration) in out.iter_mut().enumerate() {
             let inv_mass = attributes.inv_masses[i];
             if inv_mass == R::ZERO {
                 *acceleration = Vec3::ZERO;
                 continue;
             }
-            let mut total = *acceleration * inv_mass + self.uniform_gravity;
+            let mut total = self.uniform_gravity.add_scaled(*acceleration, inv_mass);
             let group = attributes.groups[i];
             for field in &self.forces.fields {
                 match *field {
@@ -196,9 +214,13 @@ impl<'a, R: Real> ForceField<'a, R> {
         let attributes = self.attributes;
         match *generator {
             ForceGenerator::LinearDrag { coefficient, group } => {
-                for (i, force) in forces.iter_mut().enumerate() {
-                    if attributes.is_movable(i) && applies_to(group, attributes.groups[i]) {
-                        *force -= v[i] * coefficient;
+                let particles = forces
+                    .iter_mut()
+                    .zip(v)
+                    .zip(attributes.inv_masses.iter().zip(&attributes.groups));
+                for ((force, &velocity), (&inv_mass, &particle_group)) in particles {
+                    if inv_mass != R::ZERO && applies_to(group, particle_group) {
+                        *force -= velocity * coefficient;
                     }
                 }
             }

@@ -235,11 +235,14 @@ fn kick_then_drift<R: Real>(
     h_kick: R,
     h_drift: R,
 ) {
-    for (i, &a) in accelerations.iter().enumerate() {
-        if attributes.is_movable(i) {
-            let v = k.velocities[i].add_scaled(a, h_kick);
-            k.velocities[i] = v;
-            k.positions[i] = k.positions[i].add_scaled(v, h_drift);
+    let particles = accelerations
+        .iter()
+        .zip(&attributes.inv_masses)
+        .zip(k.velocities.iter_mut().zip(k.positions.iter_mut()));
+    for ((&a, &inv_mass), (v, x)) in particles {
+        if inv_mass != R::ZERO {
+            *v = v.add_scaled(a, h_kick);
+            *x = x.add_scaled(*v, h_drift);
         }
     }
 }
