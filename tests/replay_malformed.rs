@@ -200,7 +200,7 @@ fn bit_flipped_in_a_part_checksum_names_the_part() {
     assert_eq!(run.code, 1, "{run:?}");
     let expected = format!(
         "desync {} at tick 120: expected {total:016x} got {total:016x} (subsystem {part}, \
-         first differing id unknown)",
+         first differing id unknown; the totals agree, so the recorded checkpoint was altered)",
         file.str(),
         total = checkpoint.total
     );
@@ -516,7 +516,7 @@ fn differing_object_digest_names_the_object() {
     assert_eq!(run.code, 1, "{run:?}");
     let expected = format!(
         "desync {} at tick 120: expected {total:016x} got {total:016x} (subsystem unknown, \
-         first differing id {id})",
+         first differing id {id}; the totals agree, so the recorded checkpoint was altered)",
         file.str(),
         total = checkpoint.total
     );

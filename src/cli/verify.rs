@@ -37,9 +37,14 @@ fn verify_file(path: &Path) -> Result<Status, String> {
         }) => {
             let part = part.map_or("unknown", |p| p.name());
             let id = first_differing_id.unwrap_or_else(|| "unknown".to_owned());
+            let altered = if expected == got {
+                "; the totals agree, so the recorded checkpoint was altered"
+            } else {
+                ""
+            };
             print_line(&format!(
                 "desync {name} at tick {tick}: expected {} got {} (subsystem {part}, first \
-                 differing id {id})",
+                 differing id {id}{altered})",
                 hex(expected),
                 hex(got)
             ))?;
