@@ -81,18 +81,7 @@ impl<R: Real> Scene<R> {
 
     /// Checks every field and builds the world at tick 0.
     pub fn build(&self) -> Result<World<R>, SceneError> {
-        if !(1..=MAX_TICK_RATE).contains(&self.tick_rate) {
-            return Err(SceneError::new(
-                "tick_rate",
-                format!("must be 1 to {MAX_TICK_RATE} (got {})", self.tick_rate),
-            ));
-        }
-        if !(1..=MAX_SUBSTEPS).contains(&self.substeps) {
-            return Err(SceneError::new(
-                "substeps",
-                format!("must be 1 to {MAX_SUBSTEPS} (got {})", self.substeps),
-            ));
-        }
+        check_rates(self.tick_rate, self.substeps)?;
         for (i, input) in self.script.iter().enumerate() {
             if i > 0 && input.tick <= self.script[i - 1].tick {
                 return Err(SceneError::new(
@@ -125,4 +114,22 @@ impl<R: Real> Scene<R> {
             .ok()
             .map(|i| &self.script[i])
     }
+}
+
+/// Checks a tick rate (1 to [`MAX_TICK_RATE`]) and a substep count (1 to [`MAX_SUBSTEPS`]);
+/// the error names `tick_rate` or `substeps`.
+pub(crate) fn check_rates(tick_rate: u32, substeps: u32) -> Result<(), SceneError> {
+    if !(1..=MAX_TICK_RATE).contains(&tick_rate) {
+        return Err(SceneError::new(
+            "tick_rate",
+            format!("must be 1 to {MAX_TICK_RATE} (got {tick_rate})"),
+        ));
+    }
+    if !(1..=MAX_SUBSTEPS).contains(&substeps) {
+        return Err(SceneError::new(
+            "substeps",
+            format!("must be 1 to {MAX_SUBSTEPS} (got {substeps})"),
+        ));
+    }
+    Ok(())
 }

@@ -6,6 +6,7 @@ pub mod error;
 mod load;
 
 pub use builtin::{BUILTIN_SCENES, builtin_scene};
+pub(crate) use description::check_rates;
 pub use description::{MAX_SUBSTEPS, MAX_TICK_RATE, Scene};
 pub use error::SceneError;
 pub use load::{load_scene_file, parse_scene};

@@ -13,7 +13,8 @@ use crate::math::saturation::count_saturations;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticleSystem;
-use crate::scene::{MAX_SUBSTEPS, MAX_TICK_RATE, SceneError};
+use crate::scene::SceneError;
+use crate::scene::check_rates;
 
 /// The version of the simulated state. It names the physics as much as the layout: bump it
 /// whenever a change alters any committed checksum, then re-record `replays/`.
@@ -55,24 +56,8 @@ impl<R: Real> WorldState<R> {
     /// Checks the invariants a world relies on, for a state that comes from outside (a
     /// snapshot); the error names the offending field.
     pub fn validate(&self) -> Result<(), SceneError> {
-        if !(1..=MAX_TICK_RATE).contains(&self.settings.tick_rate) {
-            return Err(SceneError::new(
-                "settings.tick_rate",
-                format!(
-                    "must be 1 to {MAX_TICK_RATE} (got {})",
-                    self.settings.tick_rate
-                ),
-            ));
-        }
-        if !(1..=MAX_SUBSTEPS).contains(&self.settings.substeps) {
-            return Err(SceneError::new(
-                "settings.substeps",
-                format!(
-                    "must be 1 to {MAX_SUBSTEPS} (got {})",
-                    self.settings.substeps
-                ),
-            ));
-        }
+        check_rates(self.settings.tick_rate, self.settings.substeps)
+            .map_err(|e| e.within("settings"))?;
         match &self.particles {
             Some(particles) => particles.validate().map_err(|e| e.within("particles")),
             None => Ok(()),
