@@ -11,6 +11,7 @@ pub mod codec;
 pub mod math;
 pub mod particles;
 pub mod replay;
+pub mod rigid;
 pub mod scene;
 pub mod world;
 

@@ -1,0 +1,67 @@
+//! Collision shapes and their mass properties at a given density.
+//!
+//! Each shape is described in its body's frame, centred on the origin; compounds place
+//! parts with a rotation and a translation. The capsule's axis is y.
+
+use serde::{Deserialize, Serialize};
+
+use super::mass::MassProperties;
+use crate::math::{Fx, Quat, Real, Vec3};
+
+/// A part of a compound shape: a shape placed in the body frame.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct Part<R: Real = Fx> {
+    /// Rotation of the part relative to the body.
+    pub rotation: Quat<R>,
+    /// Position of the part's origin in the body frame, m.
+    pub translation: Vec3<R>,
+    /// The part's shape (not itself a compound or a plane).
+    pub shape: Shape<R>,
+}
+
+/// A collision shape.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub enum Shape<R: Real = Fx> {
+    /// A ball of radius `radius` (m).
+    Sphere { radius: R },
+    /// A box of half extents `half_extents` (m) along the body axes.
+    Box { half_extents: Vec3<R> },
+    /// The points within `radius` (m) of the segment from (0, −h, 0) to (0, h, 0), h =
+    /// `half_height` (m).
+    Capsule { radius: R, half_height: R },
+    /// The half-space n · x ≤ `offset` (m) below the plane with unit normal `normal`, for
+    /// static ground and walls; it has no finite mass.
+    Plane { normal: Vec3<R>, offset: R },
+    /// Rigidly joined parts.
+    Compound { parts: Vec<Part<R>> },
+}
+
+impl<R: Real> Shape<R> {
+    /// The mass properties of the shape filled at `density` (kg/m³). A plane, which has
+    /// no finite volume, and a compound made only of planes give
+    /// [`MassProperties::ZERO`]: a body with such a shape can only be static or kinematic.
+    pub fn mass_properties(&self, density: R) -> MassProperties<R> {
+        match self {
+            Self::Sphere { radius } => MassProperties::sphere_from_density(density, *radius),
+            Self::Box { half_extents } => MassProperties::box_from_density(density, *half_extents),
+            Self::Capsule {
+                radius,
+                half_height,
+            } => MassProperties::solid_capsule(density, *radius, *half_height),
+            Self::Plane { .. } => MassProperties::ZERO,
+            Self::Compound { parts } => {
+                let placed: Vec<MassProperties<R>> = parts
+                    .iter()
+                    .map(|part| {
+                        part.shape
+                            .mass_properties(density)
+                            .transformed(part.rotation, part.translation)
+                    })
+                    .collect();
+                MassProperties::combine(&placed)
+            }
+        }
+    }
+}
