@@ -28,6 +28,7 @@ use fixed::types::extra::{LeEqU64, U16, U24, U32};
 use serde::de::{self, Deserializer, Visitor};
 use serde::{Deserialize, Serialize, Serializer};
 
+use super::guarded::{Fraction, Guard};
 use super::real::{ParseRealError, Real};
 use super::saturation::record_saturation;
 use super::{exp, sqrt, trig};
@@ -81,6 +82,16 @@ fn saturate_out_of_range(value: i128) -> i64 {
 pub(crate) fn mul_bits(a: i64, b: i64, frac: u32) -> i64 {
     let product = a as i128 * b as i128;
     saturate_i128((product + (1i128 << (frac - 1))) >> frac)
+}
+
+/// round(a·c / 2⁶⁴), ties toward +∞: the high 64 bits of the 128-bit product a·c plus bit
+/// 63 of its low 64 bits (adding 2⁶³ carries into the high half exactly when that bit is
+/// set). Never out of range (|a·c/2⁶⁴| ≤ 2⁶²). One multiply, a shift and an add: no 128-bit
+/// shift (`shrd`/`shld`, several micro-operations on some x86 cores).
+#[inline(always)]
+fn round_mul_high(a: i64, c: i64) -> i64 {
+    let product = a as i128 * c as i128;
+    (product >> 64) as i64 + (product as u64 >> 63) as i64
 }
 
 /// Quotient of two raw values with `frac` fractional bits: `round(a·2^frac / b)`, ties away
@@ -331,6 +342,64 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
         Self::from_bits(saturate_i128(
             (sum + (1i128 << (Self::FRAC_BITS - 1))) >> Self::FRAC_BITS,
         ))
+    }
+
+    /// `(a·c + 2^(F−1)) >> F` without a range check or a 128-bit shift. A [`Fraction`] has
+    /// 0 ≤ c < 2^(F−1) as bits, so c' = c·2^(64−F) < 2⁶³ is an `i64`, and
+    /// round(a·c'/2⁶⁴) = round(a·c/2^F) (`round_mul_high`) is the checked `a * c`, which
+    /// never saturates since |a·c/2^F| < |a|/2.
+    #[inline(always)]
+    fn mul_fraction(self, c: Fraction<Self>) -> Self {
+        Self::from_bits(round_mul_high(
+            self.to_bits(),
+            c.get().to_bits() << (64 - Self::FRAC_BITS),
+        ))
+    }
+
+    /// The wrapped sum; the guard trips exactly when the checked `+` would saturate.
+    #[inline(always)]
+    fn guarded_add(self, rhs: Self, guard: &mut Guard) -> Self {
+        let (sum, overflow) = self.to_bits().overflowing_add(rhs.to_bits());
+        guard.trip_if(overflow);
+        Self::from_bits(sum)
+    }
+
+    /// The wrapped difference; the guard trips exactly when the checked `-` would saturate.
+    #[inline(always)]
+    fn guarded_sub(self, rhs: Self, guard: &mut Guard) -> Self {
+        let (difference, overflow) = self.to_bits().overflowing_sub(rhs.to_bits());
+        guard.trip_if(overflow);
+        Self::from_bits(difference)
+    }
+
+    /// The rounded product `(a·b + 2^(F−1)) >> F`; the guard trips whenever the checked `*`
+    /// would saturate.
+    ///
+    /// For F = 32, without a 128-bit shift: b = b_h·2³² + b_l with b_l the low half read as
+    /// a signed number (−2³¹ ≤ b_l < 2³¹) and b_h = (b − b_l)/2³². Since a·b_h·2³² is a
+    /// multiple of 2³², round(a·b/2³²) = a·b_h + round(a·b_l/2³²) exactly; the second term
+    /// is `round_mul_high` of a and b_l·2³² (an `i64`), always in range. The guard trips
+    /// when a·b_h or the sum overflows, so a clear guard means the sum is the exact rounded
+    /// product, which then lies in range: the checked `*`'s result. (It may trip although
+    /// the product fits, when a·b_h alone does not.) For other F, in 128 bits, tripping
+    /// exactly when `*` saturates.
+    #[inline(always)]
+    fn guarded_mul(self, rhs: Self, guard: &mut Guard) -> Self {
+        let (a, b) = (self.to_bits(), rhs.to_bits());
+        if Self::FRAC_BITS == 32 {
+            let low = b as i32 as i64;
+            let high = (b >> 32) - (low >> 63);
+            let (high_product, high_overflow) = a.overflowing_mul(high);
+            let (sum, sum_overflow) = high_product.overflowing_add(round_mul_high(a, low << 32));
+            guard.trip_if(high_overflow | sum_overflow);
+            Self::from_bits(sum)
+        } else {
+            let product = a as i128 * b as i128;
+            let rounded = (product + (1i128 << (Self::FRAC_BITS - 1))) >> Self::FRAC_BITS;
+            let narrow = rounded as i64;
+            guard.trip_if(narrow as i128 != rounded);
+            Self::from_bits(narrow)
+        }
     }
 
     #[inline]

@@ -4,6 +4,7 @@
 pub mod exp;
 pub mod fixed_scalar;
 pub mod float_scalar;
+pub mod guarded;
 pub mod mat3;
 pub mod quat;
 pub mod real;
@@ -15,6 +16,7 @@ pub mod trig;
 pub mod vec3;
 
 pub use fixed_scalar::{Fixed, FracBits, Fx, FxI32F32, FxI40F24, FxI48F16};
+pub use guarded::{Fraction, Guard};
 pub use mat3::Mat3;
 pub use quat::Quat;
 pub use real::{ParseRealError, Real};

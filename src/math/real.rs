@@ -13,6 +13,8 @@ use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAss
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
+use super::guarded::{Fraction, Guard};
+
 /// A scalar number format.
 ///
 /// Arithmetic operators follow the format's documented policy. For the fixed-point formats
@@ -128,6 +130,37 @@ pub trait Real:
     #[inline(always)]
     fn add_product(self, a: Self, b: Self) -> Self {
         self + a * b
+    }
+
+    /// `self * c` for a [`Fraction`] c (0 ≤ c < 1/2), which is never out of range. The
+    /// default is exactly `self * c`; a format may skip the range check.
+    #[inline(always)]
+    fn mul_fraction(self, c: Fraction<Self>) -> Self {
+        self * c.get()
+    }
+
+    /// `self + rhs` for batch kernels: the checked sum whenever that does not saturate,
+    /// with `guard` tripped whenever it might (see [`guarded`](super::guarded)). The default
+    /// is the checked `+` itself, which needs no guard; a format overrides it with a cheaper
+    /// form that does not count.
+    #[inline(always)]
+    fn guarded_add(self, rhs: Self, guard: &mut Guard) -> Self {
+        let _ = guard;
+        self + rhs
+    }
+
+    /// `self - rhs` for batch kernels; see [`Real::guarded_add`].
+    #[inline(always)]
+    fn guarded_sub(self, rhs: Self, guard: &mut Guard) -> Self {
+        let _ = guard;
+        self - rhs
+    }
+
+    /// `self * rhs` for batch kernels; see [`Real::guarded_add`].
+    #[inline(always)]
+    fn guarded_mul(self, rhs: Self, guard: &mut Guard) -> Self {
+        let _ = guard;
+        self * rhs
     }
 
     /// 1/x. Zero gives the division-by-zero value of the format.

@@ -16,7 +16,7 @@ use super::damping::Damping;
 use super::desc::SpringDesc;
 use super::storage::Attributes;
 use super::user_force::{ParticleView, UserForceRegistry};
-use crate::math::{Real, Vec3};
+use crate::math::{Fraction, Real, Vec3};
 use crate::world::Handle;
 
 /// The compiled force list of a system, split by how each entry acts.
@@ -111,6 +111,69 @@ pub(crate) fn point_gravity_acceleration<R: Real>(
     offset * -(gm * inv_distance * inv_distance * inv_distance)
 }
 
+/// Adds the linear drag F = −k v (N) of `coefficient` k (kg/s), restricted to `group`, to
+/// the `forces` of the movable particles with velocities `velocities` (m/s). All slices
+/// cover the same slots.
+#[inline]
+pub(crate) fn add_linear_drag<R: Real>(
+    coefficient: R,
+    group: Option<u16>,
+    velocities: &[Vec3<R>],
+    inv_masses: &[R],
+    groups: &[u16],
+    forces: &mut [Vec3<R>],
+) {
+    let particles = forces
+        .iter_mut()
+        .zip(velocities)
+        .zip(inv_masses.iter().zip(groups));
+    for ((force, &velocity), (&inv_mass, &particle_group)) in particles {
+        if inv_mass != R::ZERO && applies_to(group, particle_group) {
+            *force -= velocity * coefficient;
+        }
+    }
+}
+
+/// Turns the forces F (N) in `forces` into accelerations a = g + F/m (m/s²) in place, with
+/// `uniform_gravity` g (m/s²) and 1/m from `inv_masses` (1/kg); pinned and dead slots get
+/// a = 0. Both slices cover the same slots.
+#[inline]
+pub(crate) fn forces_to_accelerations<R: Real>(
+    uniform_gravity: Vec3<R>,
+    inv_masses: &[R],
+    forces: &mut [Vec3<R>],
+) {
+    for (acceleration, &inv_mass) in forces.iter_mut().zip(inv_masses) {
+        *acceleration = if inv_mass == R::ZERO {
+            Vec3::ZERO
+        } else {
+            uniform_gravity.add_scaled(*acceleration, inv_mass)
+        };
+    }
+}
+
+/// The most linear drags a [`LinearField`] holds.
+const MAX_LINEAR_DRAGS: usize = 4;
+
+/// A force field in which each particle's acceleration depends only on its own velocity,
+/// linearly: a = g + (F_ext − Σⱼ kⱼ v)/m, with g uniform gravity (m/s²) and up to
+/// [`MAX_LINEAR_DRAGS`] linear drags of coefficients 0 ≤ kⱼ < 0.5 kg/s (each a
+/// [`Fraction`]). The fused
+/// semi-implicit Euler step handles exactly these fields.
+pub(crate) struct LinearField<R: Real> {
+    /// g, m/s².
+    pub uniform_gravity: Vec3<R>,
+    drags: [(Fraction<R>, Option<u16>); MAX_LINEAR_DRAGS],
+    drag_count: usize,
+}
+
+impl<R: Real> LinearField<R> {
+    /// (kⱼ, group restriction) of each linear drag, in scene order.
+    pub fn drags(&self) -> &[(Fraction<R>, Option<u16>)] {
+        &self.drags[..self.drag_count]
+    }
+}
+
 /// Everything force evaluation needs besides the positions and velocities, fixed for one
 /// step.
 pub(crate) struct ForceField<'a, R: Real> {
@@ -156,6 +219,27 @@ impl<'a, R: Real> ForceField<'a, R> {
         }
     }
 
+    /// The field as a [`LinearField`], when it is one: no field depends on the particle and
+    /// the generators are at most [`MAX_LINEAR_DRAGS`] linear drags with 0 ≤ k < 0.5 kg/s.
+    pub fn linear(&self) -> Option<LinearField<R>> {
+        if self.per_particle_fields || self.forces.generators.len() > MAX_LINEAR_DRAGS {
+            return None;
+        }
+        let mut field = LinearField {
+            uniform_gravity: self.uniform_gravity,
+            drags: [(Fraction::ZERO, None); MAX_LINEAR_DRAGS],
+            drag_count: 0,
+        };
+        for generator in &self.forces.generators {
+            let ForceGenerator::LinearDrag { coefficient, group } = *generator else {
+                return None;
+            };
+            field.drags[field.drag_count] = (Fraction::new(coefficient)?, group);
+            field.drag_count += 1;
+        }
+        Some(field)
+    }
+
     /// Writes a_i(x, v) (m/s²) for every slot into `out`, given positions `x` (m) and
     /// velocities `v` (m/s) of every slot. All three slices have the slot count as length.
     pub fn accelerations(&self, x: &[Vec3<R>], v: &[Vec3<R>], out: &mut [Vec3<R>]) {
@@ -165,13 +249,7 @@ impl<'a, R: Real> ForceField<'a, R> {
             self.add_forces(generator, x, v, out);
         }
         if !self.per_particle_fields {
-            for (acceleration, &inv_mass) in out.iter_mut().zip(&attributes.inv_masses) {
-                *acceleration = if inv_mass == R::ZERO {
-                    Vec3::ZERO
-                } else {
-                    self.uniform_gravity.add_scaled(*acceleration, inv_mass)
-                };
-            }
+            forces_to_accelerations(self.uniform_gravity, &attributes.inv_masses, out);
             return;
         }
         for (i, acceleration) in out.iter_mut().enumerate() {
@@ -213,17 +291,14 @@ impl<'a, R: Real> ForceField<'a, R> {
     ) {
         let attributes = self.attributes;
         match *generator {
-            ForceGenerator::LinearDrag { coefficient, group } => {
-                let particles = forces
-                    .iter_mut()
-                    .zip(v)
-                    .zip(attributes.inv_masses.iter().zip(&attributes.groups));
-                for ((force, &velocity), (&inv_mass, &particle_group)) in particles {
-                    if inv_mass != R::ZERO && applies_to(group, particle_group) {
-                        *force -= velocity * coefficient;
-                    }
-                }
-            }
+            ForceGenerator::LinearDrag { coefficient, group } => add_linear_drag(
+                coefficient,
+                group,
+                v,
+                &attributes.inv_masses,
+                &attributes.groups,
+                forces,
+            ),
             ForceGenerator::QuadraticDrag { coefficient, group } => {
                 for (i, force) in forces.iter_mut().enumerate() {
                     if attributes.is_movable(i) && applies_to(group, attributes.groups[i]) {

@@ -33,6 +33,7 @@
 //! [`desc`] scene types · `build` validation and compilation · `storage` slots and recycling ·
 //! [`emitter`] emission and its random draws · `forces` force generators and a(x, v) ·
 //! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the six schemes ·
+//! `fused_euler` their one-pass semi-implicit Euler for linear fields ·
 //! `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
 //! order · [`presets`] built-in scenes.
 
@@ -42,6 +43,7 @@ mod damping;
 pub mod desc;
 pub mod emitter;
 mod forces;
+mod fused_euler;
 pub mod hashing;
 pub mod integrators;
 mod metrics;
