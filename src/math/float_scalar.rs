@@ -25,12 +25,12 @@ impl Real for f64 {
 
     #[inline]
     fn from_int(value: i32) -> Self {
-        value as f64
+        value as f64 // ok-det: f64 reference format
     }
 
     #[inline]
     fn from_ratio(num: i64, den: i64) -> Self {
-        num as f64 / den as f64
+        num as f64 / den as f64 // ok-det: f64 reference format
     }
 
     #[inline]
@@ -45,6 +45,7 @@ impl Real for f64 {
 
     fn parse_decimal(text: &str) -> Result<Self, ParseRealError> {
         text.trim().parse::<f64>().map_err(|e| ParseRealError {
+            // ok-det: f64 reference format
             text: text.to_owned(),
             reason: e.to_string(),
         })
@@ -57,75 +58,75 @@ impl Real for f64 {
 
     #[inline]
     fn total_cmp(&self, other: &Self) -> Ordering {
-        f64::total_cmp(self, other)
+        f64::total_cmp(self, other) // ok-det: f64 reference format
     }
 
     #[inline]
     fn abs(self) -> Self {
-        f64::abs(self)
+        f64::abs(self) // ok-det: f64 reference format
     }
 
     #[inline]
     fn sqrt(self) -> Self {
-        if self <= 0.0 { 0.0 } else { f64::sqrt(self) }
+        if self <= 0.0 { 0.0 } else { f64::sqrt(self) } // ok-det: f64 reference format
     }
 
     #[inline]
     fn rsqrt(self) -> Self {
         if self <= 0.0 {
-            f64::MAX
+            f64::MAX // ok-det: f64 reference format
         } else {
-            1.0 / f64::sqrt(self)
+            1.0 / f64::sqrt(self) // ok-det: f64 reference format
         }
     }
 
     #[inline]
     fn sin(self) -> Self {
-        f64::sin(self)
+        f64::sin(self) // ok-det: f64 reference format
     }
 
     #[inline]
     fn cos(self) -> Self {
-        f64::cos(self)
+        f64::cos(self) // ok-det: f64 reference format
     }
 
     #[inline]
     fn sin_cos(self) -> (Self, Self) {
-        f64::sin_cos(self)
+        f64::sin_cos(self) // ok-det: f64 reference format
     }
 
     #[inline]
     fn atan2(self, x: Self) -> Self {
-        f64::atan2(self, x)
+        f64::atan2(self, x) // ok-det: f64 reference format
     }
 
     #[inline]
     fn asin(self) -> Self {
-        f64::asin(self.clamp(-1.0, 1.0))
+        f64::asin(self.clamp(-1.0, 1.0)) // ok-det: f64 reference format
     }
 
     #[inline]
     fn acos(self) -> Self {
-        f64::acos(self.clamp(-1.0, 1.0))
+        f64::acos(self.clamp(-1.0, 1.0)) // ok-det: f64 reference format
     }
 
     #[inline]
     fn exp(self) -> Self {
-        f64::exp(self)
+        f64::exp(self) // ok-det: f64 reference format
     }
 
     #[inline]
     fn ln(self) -> Self {
-        if self <= 0.0 { f64::MIN } else { f64::ln(self) }
+        if self <= 0.0 { f64::MIN } else { f64::ln(self) } // ok-det: f64 reference format
     }
 
     #[inline]
     fn powf(self, y: Self) -> Self {
-        f64::powf(self, y)
+        f64::powf(self, y) // ok-det: f64 reference format
     }
 
     #[inline]
     fn powi(self, n: i32) -> Self {
-        f64::powi(self, n)
+        f64::powi(self, n) // ok-det: f64 reference format
     }
 }
