@@ -47,6 +47,43 @@ impl Runner {
     }
 }
 
+impl Runner {
+    /// Turns on stage timing and the divergence check (neither is simulated state).
+    fn enable_reports(&mut self) {
+        match self {
+            Self::Recording(recorder) => {
+                recorder.enable_timing();
+                recorder.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
+            }
+            Self::Resumed(world) => {
+                world.enable_timing();
+                world.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
+            }
+        }
+    }
+}
+
+/// Opens an optional output file (written atomically), so that a bad path fails before the
+/// run.
+fn open_output(path: Option<&Path>) -> Result<Option<AtomicFile>, String> {
+    path.map(|path| AtomicFile::create(path).map_err(|e| write_error(path, &e)))
+        .transpose()
+}
+
+/// Writes `encoded` (a `what`, for the error message) to `file` and puts it in place.
+fn commit_output<E: core::fmt::Display>(
+    mut file: AtomicFile,
+    what: &str,
+    encoded: Result<Vec<u8>, E>,
+) -> Result<(), String> {
+    let path = file.path().to_owned();
+    let bytes =
+        encoded.map_err(|e| format!("{}: cannot encode the {what}: {e}", path.display()))?;
+    file.write_all(&bytes)
+        .and_then(|()| file.commit())
+        .map_err(|e| write_error(&path, &e))
+}
+
 /// The scene's world, continued from the snapshot at `path`.
 fn resume(scene: &Scene<Fx>, path: &Path) -> Result<World<Fx>, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
@@ -93,16 +130,8 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     distinct_outputs(args)?;
 
     // Open the outputs first, so a bad path fails before the run rather than after it.
-    let replay_file = args
-        .record
-        .as_deref()
-        .map(|path| AtomicFile::create(path).map_err(|e| write_error(path, &e)))
-        .transpose()?;
-    let snapshot_file = args
-        .snapshot
-        .as_deref()
-        .map(|path| AtomicFile::create(path).map_err(|e| write_error(path, &e)))
-        .transpose()?;
+    let replay_file = open_output(args.record.as_deref())?;
+    let snapshot_file = open_output(args.snapshot.as_deref())?;
     let mut metrics = args
         .metrics
         .as_deref()
@@ -116,16 +145,7 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
                 .map_err(|e| format!("{}: {e}", args.scene))?,
         )),
     };
-    match &mut runner {
-        Runner::Recording(recorder) => {
-            recorder.enable_timing();
-            recorder.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
-        }
-        Runner::Resumed(world) => {
-            world.enable_timing();
-            world.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
-        }
-    }
+    runner.enable_reports();
     if let Some(metrics) = &mut metrics {
         metrics.tick(runner.world())?;
     }
@@ -163,23 +183,11 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     if let Some(metrics) = metrics {
         metrics.finish(world)?;
     }
-    if let Some(mut file) = snapshot_file {
-        let path = file.path().to_owned();
-        let bytes = encode_snapshot(&world.snapshot())
-            .map_err(|e| format!("{}: cannot encode the snapshot: {e}", path.display()))?;
-        file.write_all(&bytes)
-            .and_then(|()| file.commit())
-            .map_err(|e| write_error(&path, &e))?;
+    if let Some(file) = snapshot_file {
+        commit_output(file, "snapshot", encode_snapshot(&world.snapshot()))?;
     }
-    if let (Runner::Recording(recorder), Some(mut file)) = (runner, replay_file) {
-        let replay = recorder.finish();
-        let path = file.path().to_owned();
-        let bytes = replay
-            .to_bytes()
-            .map_err(|e| format!("{}: cannot encode the replay: {e}", path.display()))?;
-        file.write_all(&bytes)
-            .and_then(|()| file.commit())
-            .map_err(|e| write_error(&path, &e))?;
+    if let (Runner::Recording(recorder), Some(file)) = (runner, replay_file) {
+        commit_output(file, "replay", recorder.finish().to_bytes())?;
     }
     if saturations > 0 {
         eprint_line(&format!(
