@@ -1,0 +1,1 @@
+//! Broadphase (being written).

@@ -1,0 +1,1 @@
+//! Narrowphase (being written).
