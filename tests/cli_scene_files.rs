@@ -139,10 +139,26 @@ fn unknown_field() {
 }
 
 #[test]
-fn rigid_section_is_not_simulated_by_this_build() {
+fn joints_section_is_not_simulated_by_this_build() {
     assert_scene_rejected(
-        b"(name: \"x\", rigid: (bodies: []))",
-        &["this build of fixstep does not simulate rigid bodies"],
+        b"(name: \"x\", joints: [])",
+        &["this build of fixstep does not simulate joints"],
+    );
+}
+
+#[test]
+fn rigid_body_errors_name_the_field() {
+    assert_scene_rejected(
+        b"(name: \"x\", rigid: (bodies: [(shape: Sphere(radius: -1.0))]))",
+        &["rigid.bodies[0].shape.Sphere.radius", "must be above 0"],
+    );
+    assert_scene_rejected(
+        b"(name: \"x\", rigid: (bodies: [(shape: Plane(normal: (x: 0.0, y: 1.0, z: 0.0), offset: 0.0))]))",
+        &["rigid.bodies[0].shape.Plane", "only be a static body"],
+    );
+    assert_scene_rejected(
+        b"(name: \"x\", rigid: (solver: (substeps: 0)))",
+        &["rigid.solver.substeps", "must be 1 to 64"],
     );
 }
 

@@ -9,8 +9,8 @@
 
 use fixstep::codec;
 use fixstep::math::Fx;
-use fixstep::replay::{InputFeed, Replay, verify};
-use fixstep::scene::{Scene, parse_scene};
+use fixstep::replay::{InputFeed, Replay, scene_section, verify};
+use fixstep::scene::parse_scene;
 use fixstep::world::{TickInput, World, decode_snapshot, encode_snapshot};
 
 /// The most ticks any target simulates.
@@ -60,16 +60,25 @@ pub fn snapshot_decode(data: &[u8]) -> bool {
     true
 }
 
-/// Any scene and inputs, as the codec encodes them (a replay's scene section followed by
-/// its inputs section): the world builds or is refused, then runs up to [`MAX_TICKS`] ticks
+/// Any scene and inputs: a `u64` little-endian length L, then L bytes of a replay's scene
+/// section ([`scene_section`]), then its inputs section. The world builds or is refused, then runs up to [`MAX_TICKS`] ticks
 /// whatever the values (huge forces, zero or negative masses, degenerate springs,
 /// coincident particles). Halfway, the state goes through a snapshot file and back, which
 /// must be accepted, and restoring it must replay the second half to the same checksum.
 pub fn world_step(data: &[u8]) -> bool {
-    let Ok((scene, used)) = codec::decode_prefix::<Scene<Fx>>(data) else {
+    let Some((len, rest)) = data.split_first_chunk::<8>() else {
         return false;
     };
-    let inputs: Vec<TickInput<Fx>> = codec::decode_prefix(&data[used..])
+    let Some((scene_bytes, inputs_bytes)) = usize::try_from(u64::from_le_bytes(*len))
+        .ok()
+        .and_then(|len| rest.split_at_checked(len))
+    else {
+        return false;
+    };
+    let Ok(scene) = scene_section::decode_scene(scene_bytes) else {
+        return false;
+    };
+    let inputs: Vec<TickInput<Fx>> = codec::decode_prefix(inputs_bytes)
         .map(|(inputs, _)| inputs)
         .unwrap_or_default();
     let Ok(mut world) = scene.build() else {

@@ -19,6 +19,7 @@ use super::file::Replay;
 use super::format::{
     Checkpoint, FORMAT_VERSION, MAGIC, PREAMBLE_LEN, ReplayHeader, Section, content_hash,
 };
+use super::scene_section::{SceneSectionError, decode_scene};
 use crate::codec::{self, CodecError, SIZE_LIMIT};
 use crate::math::{Fx, Real};
 use crate::scene::Scene;
@@ -163,7 +164,7 @@ impl Decoder<'_> {
             header.scene_hash,
             header_end - SCENE_LEN_FROM_END,
         )?;
-        let scene: Scene<Fx> = self.decode_section(Section::Scene, scene_start, scene_bytes)?;
+        let scene = self.scene_section(scene_start, scene_bytes)?;
         self.check_scene(&scene, &header, scene_start)?;
 
         let inputs_start = scene_start + scene_bytes.len();
@@ -312,6 +313,26 @@ impl Decoder<'_> {
     }
 
     /// Decodes a value that fills exactly the section's bytes.
+    /// The scene section (see [`scene_section`](super::scene_section)).
+    fn scene_section(&self, start: usize, bytes: &[u8]) -> Result<Scene<Fx>, ReplayError> {
+        decode_scene(bytes).map_err(|(at, e)| {
+            let detail = match e {
+                SceneSectionError::Codec(e) => match truncation(&e) {
+                    Some(needed) => format!(
+                        "does not decode: a length or value runs past the end of the section \
+                         ({needed})"
+                    ),
+                    None => format!("does not decode: {e}"),
+                },
+                SceneSectionError::Trailing(n) => {
+                    format!("{n} bytes left over after the section's value")
+                }
+                SceneSectionError::NotCanonical(what) => format!("not canonical: {what}"),
+            };
+            self.malformed(Section::Scene, start + at, detail)
+        })
+    }
+
     fn decode_section<T: DeserializeOwned>(
         &self,
         section: Section,

@@ -2,6 +2,7 @@
 
 use super::file::Replay;
 use super::format::{FORMAT_VERSION, MAGIC, ReplayHeader, content_hash};
+use super::scene_section::encode_scene;
 use crate::codec::{self, CodecError, SIZE_LIMIT};
 use crate::math::{Fx, Real};
 
@@ -60,7 +61,7 @@ impl Replay {
 
     fn sections(&self) -> Result<Sections, CodecError> {
         let sections = Sections {
-            scene: codec::encode(&self.scene)?,
+            scene: encode_scene(&self.scene)?,
             inputs: codec::encode(&self.inputs)?,
             checksums: codec::encode(&self.checkpoints)?,
         };

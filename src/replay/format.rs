@@ -16,7 +16,7 @@
 //! | 8 | 4 | format version, `u32` = 1 ([`FORMAT_VERSION`]) |
 //! | 12 | H | header: codec-encoded [`ReplayHeader`] (below) |
 //! | 12 + H | 8 | `header_hash`, `u64`: hash of bytes `0 .. 12 + H` |
-//! | 20 + H | `scene_len` | scene section: codec-encoded `Scene<Fx>` with an empty `script` |
+//! | 20 + H | `scene_len` | scene section: the scene with an empty `script`, laid out as in [`scene_section`](super::scene_section) |
 //! | 20 + H + `scene_len` | `inputs_len` | inputs section: codec-encoded `Vec<TickInput<Fx>>` |
 //! | 20 + H + `scene_len` + `inputs_len` | to end of file | checksums section: codec-encoded `Vec<`[`Checkpoint`]`>` |
 //!

@@ -13,6 +13,7 @@ mod feed;
 mod file;
 pub mod format;
 mod record;
+pub mod scene_section;
 mod verify;
 
 pub use atomic::{AtomicFile, write_atomic};

@@ -5,7 +5,7 @@ use super::transform::Transform;
 use crate::math::{Fx, Real, Vec3};
 
 /// The box `min ≤ x ≤ max` (m), componentwise, in the world frame.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Aabb<R: Real = Fx> {
     /// Lower corner, m.
     pub min: Vec3<R>,

@@ -1,29 +1,55 @@
-//! Rigid bodies (in progress): shapes, mass properties, the rotational update and the
-//! collision building blocks.
+//! Rigid bodies: shapes, mass properties, collision, the contact solver, islands and
+//! sleeping.
 //!
-//! What exists: the shapes a body can have ([`Shape`]), their mass properties from density
-//! and the standard table of solids with the parallel-axis theorem for compounds
-//! ([`MassProperties`]), the implicit gyroscopic update of the angular velocity
-//! ([`gyroscopic`]), placements ([`Transform`]), bounding boxes ([`Aabb`]) and contact
-//! manifolds ([`Manifold`]). Scenes with a `rigid` section are still refused.
+//! Data flows one way: a scene's [`RigidDesc`] compiles into a [`RigidSystem`] (body
+//! storage and persistent contacts); each step runs the stages listed on
+//! [`RigidSystem`]; the state is hashed for checksums ([`hashing`]) and reported as
+//! [`RigidMetrics`].
 //!
 //! # Files
 //!
-//! [`shape`] shapes · [`mass`] mass properties · [`gyroscopic`] ω update with gyroscopic
-//! torque · [`transform`] placements · [`aabb`] bounding boxes · [`manifold`] contact
-//! manifolds.
+//! Description and storage: [`desc`] scene types · [`build`] checks and compilation ·
+//! [`bodies`] structure-of-arrays storage · [`system`] the system and its step ·
+//! [`commands`] inputs · [`hashing`] canonical state · [`metrics`] reporting.
+//!
+//! Geometry: [`shape`] shapes · [`mass`] mass properties · [`transform`] placements ·
+//! [`aabb`] bounding boxes · [`manifold`] contact manifolds · [`broadphase`] pairs ·
+//! [`narrowphase`] manifolds per shape pair.
+//!
+//! Dynamics: [`collide`] stage 1 · [`contact`] persistent contacts · [`sleep`] islands,
+//! waking and sleeping · [`solve`] stage 3 · [`solver`] the soft-step sequential-impulse
+//! solver · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with
+//! gyroscopic torque.
 
 pub mod aabb;
+pub(crate) mod bodies;
 pub mod broadphase;
+mod build;
+mod collide;
+mod commands;
+pub(crate) mod contact;
+pub mod desc;
 pub mod gyroscopic;
+mod hashing;
 pub mod manifold;
 pub mod mass;
+pub mod material;
+mod metrics;
 pub mod narrowphase;
+pub mod presets;
 pub mod shape;
+mod sleep;
+mod solve;
+pub(crate) mod solver;
+mod system;
 pub mod transform;
 
 pub use aabb::Aabb;
+pub use desc::{BodyDesc, BodyKind, Grid, RigidDesc, SolverSettings};
 pub use manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
 pub use mass::MassProperties;
+pub use material::Material;
+pub use metrics::RigidMetrics;
 pub use shape::{Part, Shape};
+pub use system::RigidSystem;
 pub use transform::Transform;

@@ -3,9 +3,10 @@
 use super::description::Scene;
 use crate::math::Real;
 use crate::particles::presets;
+use crate::rigid::presets as rigid;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 3] = [
+pub const BUILTIN_SCENES: [(&str, &str); 10] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs and damping",
@@ -17,6 +18,31 @@ pub const BUILTIN_SCENES: [(&str, &str); 3] = [
     (
         "orbits",
         "bodies on Kepler-like orbits around a softened point mass",
+    ),
+    (
+        "pyramid",
+        "210 unit boxes in a pyramid of base 20 on the ground, standing and falling asleep",
+    ),
+    ("stack", "10 unit boxes stacked on the ground"),
+    (
+        "balls",
+        "4096 balls dropped in a 16x16x16 lattice into an open box of 5 static boxes",
+    ),
+    (
+        "falling",
+        "1000 balls falling freely, with nothing to hit: the cost of integration alone",
+    ),
+    (
+        "cradle",
+        "Newton's cradle: a ball strikes a row of five elastic balls and the last one leaves",
+    ),
+    (
+        "incline",
+        "blocks on 30 degree slopes: one slides at mu = 0.3, one sticks at mu = 0.6",
+    ),
+    (
+        "spinner",
+        "a box spun about its intermediate axis flips over and over (Dzhanibekov effect)",
     ),
 ];
 
@@ -39,6 +65,36 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.gravity = crate::math::Vec3::ZERO;
             scene.particles = Some(presets::orbits());
             scene.ticks = 1200;
+        }
+        "pyramid" => {
+            scene.rigid = Some(rigid::pyramid(20));
+            scene.ticks = 1000;
+        }
+        "stack" => {
+            scene.rigid = Some(rigid::stack(10));
+            scene.ticks = 420;
+        }
+        "balls" => {
+            scene.rigid = Some(rigid::balls(16));
+            scene.ticks = 500;
+        }
+        "falling" => {
+            scene.rigid = Some(rigid::falling(1000));
+            scene.ticks = 1000;
+        }
+        "cradle" => {
+            scene.gravity = crate::math::Vec3::ZERO;
+            scene.rigid = Some(rigid::cradle());
+            scene.ticks = 180;
+        }
+        "incline" => {
+            scene.rigid = Some(rigid::incline());
+            scene.ticks = 180;
+        }
+        "spinner" => {
+            scene.gravity = crate::math::Vec3::ZERO;
+            scene.rigid = Some(rigid::spinner());
+            scene.ticks = 600;
         }
         _ => return None,
     }

@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 use super::error::SceneError;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{ParticleSystem, ParticlesDesc};
+use crate::rigid::{RigidDesc, RigidSystem};
 use crate::world::{Settings, TickInput, World};
 
 /// Highest tick rate a scene may ask for, Hz.
@@ -42,6 +43,9 @@ pub struct Scene<R: Real = Fx> {
     /// Particles, emitters and their forces.
     #[serde(default)]
     pub particles: Option<ParticlesDesc<R>>,
+    /// Rigid bodies and the contact solver's settings.
+    #[serde(default)]
+    pub rigid: Option<RigidDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
     #[serde(default)]
     pub script: Vec<TickInput<R>>,
@@ -75,6 +79,7 @@ impl<R: Real> Scene<R> {
             seed: 0,
             ticks: default_ticks(),
             particles: None,
+            rigid: None,
             script: Vec::new(),
         }
     }
@@ -103,6 +108,9 @@ impl<R: Real> Scene<R> {
         if let Some(desc) = &self.particles {
             world
                 .set_particles(ParticleSystem::from_desc(desc).map_err(|e| e.within("particles"))?);
+        }
+        if let Some(desc) = &self.rigid {
+            world.set_rigid(RigidSystem::from_desc(desc).map_err(|e| e.within("rigid"))?);
         }
         Ok(world)
     }

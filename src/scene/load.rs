@@ -9,8 +9,7 @@ use crate::math::Real;
 
 /// Sections a future build may simulate; a file that uses one gets a clear refusal rather
 /// than a generic "unknown field".
-const UNSUPPORTED_SECTIONS: [(&str, &str); 4] = [
-    ("rigid", "rigid bodies"),
+const UNSUPPORTED_SECTIONS: [(&str, &str); 3] = [
     ("joints", "joints"),
     ("soft", "soft bodies"),
     ("fluid", "fluids"),

@@ -20,6 +20,8 @@ pub enum Part {
     Core,
     /// The particle system.
     Particles,
+    /// The rigid bodies and their contacts.
+    Rigid,
 }
 
 impl Part {
@@ -28,6 +30,7 @@ impl Part {
         match self {
             Part::Core => 0,
             Part::Particles => 1,
+            Part::Rigid => 2,
         }
     }
 
@@ -36,6 +39,7 @@ impl Part {
         match self {
             Part::Core => "core",
             Part::Particles => "particles",
+            Part::Rigid => "rigid",
         }
     }
 }

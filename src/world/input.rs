@@ -19,6 +19,8 @@ pub enum Target {
     Particle(Handle),
     /// Every live particle of a group (the `group` of an emitter or particle template).
     ParticleGroup(u16),
+    /// One rigid body.
+    Body(Handle),
 }
 
 /// One command from one player.

@@ -19,6 +19,12 @@ pub struct Metrics {
     pub saturations: u64,
     /// Live particles.
     pub particles: u64,
+    /// The deepest overlap among the rigid contacts, m.
+    pub max_penetration: f64, // ok-det: reporting
+    /// Dynamic rigid bodies awake.
+    pub awake_bodies: u64,
+    /// Dynamic rigid bodies asleep.
+    pub sleeping_bodies: u64,
     /// Whether the divergence check has seen the energy blow up (see
     /// [`divergence`](super::divergence)); false when the check is off.
     pub diverged: bool,
@@ -26,12 +32,12 @@ pub struct Metrics {
 
 impl Metrics {
     /// The CSV header: the fixed columns, then one column per subsystem figure.
-    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged";
+    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies";
 
     /// The row as CSV, in [`Metrics::CSV_HEADER`] order.
     pub fn csv_row(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             self.tick,
             self.time,
             self.kinetic_energy,
@@ -42,7 +48,10 @@ impl Metrics {
             self.max_speed,
             self.saturations,
             self.particles,
-            u8::from(self.diverged)
+            u8::from(self.diverged),
+            self.max_penetration,
+            self.awake_bodies,
+            self.sleeping_bodies
         )
     }
 

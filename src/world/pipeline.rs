@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use super::checksum::{Checksum, Part};
 use super::divergence::{Divergence, DivergenceMonitor};
 use super::handle::Handle;
-use super::input::{Command, PlayerInput, TickInput};
+use super::input::{Command, PlayerInput, Target, TickInput};
 use super::metrics::Metrics;
 use super::stage::{Stage, StageTimings};
 use crate::math::rng::Pcg32;
@@ -13,6 +13,7 @@ use crate::math::saturation::count_saturations;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticleSystem;
+use crate::rigid::RigidSystem;
 use crate::scene::SceneError;
 use crate::scene::check_rates;
 
@@ -50,6 +51,8 @@ pub struct WorldState<R: Real = Fx> {
     pub payload_digest: u64,
     /// Particles, when the scene has any.
     pub particles: Option<ParticleSystem<R>>,
+    /// Rigid bodies, when the scene has any.
+    pub rigid: Option<RigidSystem<R>>,
 }
 
 impl<R: Real> WorldState<R> {
@@ -58,10 +61,13 @@ impl<R: Real> WorldState<R> {
     pub fn validate(&self) -> Result<(), SceneError> {
         check_rates(self.settings.tick_rate, self.settings.substeps)
             .map_err(|e| e.within("settings"))?;
-        match &self.particles {
-            Some(particles) => particles.validate().map_err(|e| e.within("particles")),
-            None => Ok(()),
+        if let Some(particles) = &self.particles {
+            particles.validate().map_err(|e| e.within("particles"))?;
         }
+        if let Some(rigid) = &self.rigid {
+            rigid.validate().map_err(|e| e.within("rigid"))?;
+        }
+        Ok(())
     }
 }
 
@@ -83,7 +89,8 @@ pub struct TickReport {
 /// 1. [`Stage::ApplyInputs`]: the tick's commands, players in ascending index, each player's
 ///    commands in order.
 /// 2. [`Stage::Particles`]: per substep, emit, age, accumulate forces and integrate.
-/// 3. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
+/// 3. [`Stage::Rigid`]: per substep, the rigid-body step (collide, wake, solve, sleep).
+/// 4. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
 ///
 /// A stage whose subsystem is absent from the scene is skipped without a loop or an
 /// allocation.
@@ -106,6 +113,7 @@ impl<R: Real> World<R> {
             rng: Pcg32::new(seed, RNG_STREAM),
             payload_digest: 0,
             particles: None,
+            rigid: None,
         })
     }
 
@@ -124,6 +132,16 @@ impl<R: Real> World<R> {
     /// Adds a particle system (replacing any previous one).
     pub fn set_particles(&mut self, particles: ParticleSystem<R>) {
         self.state.particles = Some(particles);
+    }
+
+    /// Adds rigid bodies (replacing any previous ones).
+    pub fn set_rigid(&mut self, rigid: RigidSystem<R>) {
+        self.state.rigid = Some(rigid);
+    }
+
+    /// The rigid bodies, if the scene has any.
+    pub fn rigid(&self) -> Option<&RigidSystem<R>> {
+        self.state.rigid.as_ref()
     }
 
     /// The simulated state.
@@ -198,6 +216,9 @@ impl<R: Real> World<R> {
             if self.state.particles.is_some() {
                 self.run_stage(&mut timings, Stage::Particles, Self::step_particles);
             }
+            if self.state.rigid.is_some() {
+                self.run_stage(&mut timings, Stage::Rigid, Self::step_rigid);
+            }
             self.run_stage(&mut timings, Stage::EndTick, Self::end_tick);
             self.timings = timings;
             ignored
@@ -259,6 +280,9 @@ impl<R: Real> World<R> {
         match *command {
             Command::SetGravity { gravity } => {
                 self.state.settings.gravity = gravity;
+                if let Some(rigid) = &mut self.state.rigid {
+                    rigid.wake_all();
+                }
                 true
             }
             Command::Payload(value) => {
@@ -270,6 +294,29 @@ impl<R: Real> World<R> {
                 self.state.payload_digest = h.finish();
                 true
             }
+            Command::ApplyForce {
+                target: Target::Body(_),
+                ..
+            }
+            | Command::ApplyImpulse {
+                target: Target::Body(_),
+                ..
+            }
+            | Command::SetVelocity {
+                target: Target::Body(_),
+                ..
+            }
+            | Command::Remove {
+                target: Target::Body(_),
+            }
+            | Command::MoveKinematic {
+                target: Target::Body(_),
+                ..
+            } => self
+                .state
+                .rigid
+                .as_mut()
+                .is_some_and(|r| r.apply_command(command)),
             _ => self
                 .state
                 .particles
@@ -293,10 +340,25 @@ impl<R: Real> World<R> {
         }
     }
 
-    /// Stage 3: clears per-tick accumulators and advances the tick counter.
+    /// Stage 3: the rigid bodies, once per substep.
+    fn step_rigid(&mut self) {
+        let WorldState {
+            settings, rigid, ..
+        } = &mut self.state;
+        if let Some(rigid) = rigid {
+            for _ in 0..settings.substeps {
+                rigid.step(self.substep_dt, settings.gravity);
+            }
+        }
+    }
+
+    /// Stage 4: clears per-tick accumulators and advances the tick counter.
     fn end_tick(&mut self) {
         if let Some(particles) = &mut self.state.particles {
             particles.end_tick();
+        }
+        if let Some(rigid) = &mut self.state.rigid {
+            rigid.end_tick();
         }
         self.state.tick += 1;
     }
@@ -309,6 +371,11 @@ impl<R: Real> World<R> {
             let mut h = StateHasher::new();
             particles.hash_state(&mut h);
             parts.push((Part::Particles, h.finish()));
+        }
+        if let Some(rigid) = &self.state.rigid {
+            let mut h = StateHasher::new();
+            rigid.hash_state(&mut h);
+            parts.push((Part::Rigid, h.finish()));
         }
         let mut h = StateHasher::new();
         h.write_u32(STATE_VERSION);
@@ -331,6 +398,9 @@ impl<R: Real> World<R> {
         let mut digests = Vec::new();
         if let Some(particles) = &self.state.particles {
             digests.push((Part::Particles, particles.slot_digests()));
+        }
+        if let Some(rigid) = &self.state.rigid {
+            digests.push((Part::Rigid, rigid.slot_digests()));
         }
         digests
     }
@@ -366,6 +436,18 @@ impl<R: Real> World<R> {
             m.max_speed = m.max_speed.max(p.max_speed().to_f64());
             m.particles = u64::from(p.live_count());
         }
+        if let Some(r) = &self.state.rigid {
+            let rm = r.metrics(self.state.settings.gravity);
+            m.kinetic_energy += rm.kinetic_energy;
+            m.potential_energy += rm.potential_energy;
+            for (total, part) in m.momentum.iter_mut().zip(rm.momentum) {
+                *total += part;
+            }
+            m.max_speed = m.max_speed.max(rm.max_speed);
+            m.max_penetration = rm.max_penetration;
+            m.awake_bodies = rm.awake_bodies;
+            m.sleeping_bodies = rm.sleeping_bodies;
+        }
         m
     }
 
@@ -378,6 +460,13 @@ impl<R: Real> World<R> {
     pub fn restore(&mut self, snapshot: &WorldState<R>) {
         let mut state = snapshot.clone();
         state.particles = match (self.state.particles.take(), state.particles.take()) {
+            (Some(mut current), Some(restored)) => {
+                current.restore_from(restored);
+                Some(current)
+            }
+            (_, restored) => restored,
+        };
+        state.rigid = match (self.state.rigid.take(), state.rigid.take()) {
             (Some(mut current), Some(restored)) => {
                 current.restore_from(restored);
                 Some(current)

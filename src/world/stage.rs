@@ -12,19 +12,27 @@ pub enum Stage {
     ApplyInputs,
     /// Particles: emit, age, accumulate forces, integrate (once per substep).
     Particles,
+    /// Rigid bodies: collide, wake, solve, sleep (once per substep).
+    Rigid,
     /// Advance the tick counter and clear per-tick accumulators.
     EndTick,
 }
 
 impl Stage {
     /// Every stage, in execution order.
-    pub const ALL: [Stage; 3] = [Stage::ApplyInputs, Stage::Particles, Stage::EndTick];
+    pub const ALL: [Stage; 4] = [
+        Stage::ApplyInputs,
+        Stage::Particles,
+        Stage::Rigid,
+        Stage::EndTick,
+    ];
 
     /// The stage's name as printed in timing tables.
     pub const fn name(self) -> &'static str {
         match self {
             Stage::ApplyInputs => "apply_inputs",
             Stage::Particles => "particles",
+            Stage::Rigid => "rigid",
             Stage::EndTick => "end_tick",
         }
     }

@@ -1,0 +1,193 @@
+//! Stage 1 of a rigid step: find the touching shape pairs and their manifolds.
+//!
+//! 1. The placement and bounding box (grown by the speculative distance) of every moving
+//!    body is recomputed; those of static and sleeping bodies are cached.
+//! 2. The broadphase lists overlapping boxes with at least one moving body, in ascending
+//!    (a, b) order; static planes, which have no box, are tested against each moving body's
+//!    box directly.
+//! 3. The narrowphase computes each pair's manifold (part by part for compounds); each
+//!    point takes the impulses of the point with the same feature id in last step's contact
+//!    of the same key.
+//! 4. Contacts between two bodies that do not move (sleeping or static) are kept as they
+//!    are, impulses included, so a sleeping island wakes with its contacts warm.
+//!
+//! The result is sorted by key.
+
+use super::aabb::Aabb;
+use super::contact::{Contact, ContactKey};
+use super::desc::BodyKind;
+use super::manifold::Manifold;
+use super::narrowphase::collide as collide_convex;
+use super::shape::Shape;
+use super::system::RigidSystem;
+use super::transform::Transform;
+use crate::math::Real;
+
+impl<R: Real> RigidSystem<R> {
+    /// Stage 1: recomputes the contact list (see the [module](self) documentation).
+    pub(crate) fn collide(&mut self) {
+        self.update_bounds();
+        let scratch = &mut self.scratch;
+        scratch.broadphase.find_pairs(
+            &scratch.aabbs,
+            &scratch.active,
+            &scratch.present,
+            &mut scratch.pairs,
+        );
+        for &plane in &scratch.planes {
+            let p = plane as usize;
+            for (i, aabb) in scratch.aabbs.iter().enumerate() {
+                if scratch.active[i]
+                    && scratch.present[i]
+                    && below_plane(&self.bodies.shape[p], aabb)
+                {
+                    let (a, b) = if p < i { (p, i) } else { (i, p) };
+                    scratch.pairs.push((a as u32, b as u32));
+                }
+            }
+        }
+
+        let old = core::mem::take(&mut self.contacts);
+        let bodies = &self.bodies;
+        let mut contacts: Vec<Contact<R>> = old
+            .iter()
+            .filter(|c| {
+                let (a, b) = (c.key.body_a as usize, c.key.body_b as usize);
+                bodies.alive[a] && bodies.alive[b] && !bodies.is_moving(a) && !bodies.is_moving(b)
+            })
+            .copied()
+            .collect();
+        let margin = self.settings.speculative_distance;
+        for &(a, b) in &scratch.pairs {
+            let (ia, ib) = (a as usize, b as usize);
+            if bodies.kind[ia] != BodyKind::Dynamic && bodies.kind[ib] != BodyKind::Dynamic {
+                continue;
+            }
+            let (xf_a, xf_b) = (&scratch.transforms[ia], &scratch.transforms[ib]);
+            for_each_manifold(
+                &bodies.shape[ia],
+                xf_a,
+                &bodies.shape[ib],
+                xf_b,
+                margin,
+                |part_a, part_b, manifold| {
+                    let key = ContactKey {
+                        body_a: a,
+                        body_b: b,
+                        part_a,
+                        part_b,
+                    };
+                    let previous = old
+                        .binary_search_by_key(&key, |c| c.key)
+                        .ok()
+                        .map(|k| &old[k]);
+                    contacts.push(Contact::from_manifold(key, manifold, previous));
+                },
+            );
+        }
+        contacts.sort_unstable_by_key(|c| c.key);
+        self.contacts = contacts;
+    }
+
+    /// Recomputes placements and boxes: all of them when the cache is not valid, otherwise
+    /// those of the moving bodies.
+    fn update_bounds(&mut self) {
+        let n = self.bodies.len();
+        let rebuild = !self.scratch.cache_valid || self.scratch.transforms.len() != n;
+        if rebuild {
+            let scratch = &mut self.scratch;
+            scratch.transforms.clear();
+            scratch.transforms.resize(n, Transform::IDENTITY);
+            scratch.aabbs.clear();
+            scratch.aabbs.resize(n, Aabb::default());
+            scratch.present.clear();
+            scratch.present.resize(n, false);
+            scratch.active.clear();
+            scratch.active.resize(n, false);
+            scratch.planes.clear();
+        }
+        let margin = self.settings.speculative_distance;
+        for i in 0..n {
+            let moving = self.bodies.is_moving(i);
+            self.scratch.active[i] = moving;
+            if moving || rebuild {
+                self.refresh_bounds_of(i, margin);
+            }
+        }
+        if rebuild {
+            self.scratch.planes = (0..n)
+                .filter(|&i| {
+                    self.bodies.alive[i] && matches!(self.bodies.shape[i], Shape::Plane { .. })
+                })
+                .map(|i| i as u32)
+                .collect();
+            self.scratch.cache_valid = true;
+        }
+    }
+
+    /// Recomputes the placement and bounding box of slot `i`.
+    pub(crate) fn refresh_bounds_of(&mut self, i: usize, margin: R) {
+        let scratch = &mut self.scratch;
+        if !self.bodies.alive[i] {
+            scratch.present[i] = false;
+            return;
+        }
+        let xf = Transform::from_pose(self.bodies.position[i], self.bodies.orientation[i]);
+        scratch.transforms[i] = xf;
+        match Aabb::of_shape(&self.bodies.shape[i], &xf) {
+            Some(aabb) => {
+                scratch.aabbs[i] = aabb.expanded(margin);
+                scratch.present[i] = true;
+            }
+            None => scratch.present[i] = false,
+        }
+    }
+}
+
+/// True when some point of `aabb` lies within the half-space of `plane` (n·x ≤ offset):
+/// min over the box of n·x = n·c − |n|·e ≤ offset, with c the centre and e the half extents.
+fn below_plane<R: Real>(plane: &Shape<R>, aabb: &Aabb<R>) -> bool {
+    let Shape::Plane { normal, offset } = plane else {
+        return false;
+    };
+    let centre = (aabb.min + aabb.max) * R::HALF;
+    let half = (aabb.max - aabb.min) * R::HALF;
+    normal.dot(centre) - normal.abs().dot(half) <= *offset
+}
+
+/// Calls `emit(part_a, part_b, manifold)` for every part pair of the two shapes that has
+/// contact points; a shape that is not a compound is part 0.
+fn for_each_manifold<R: Real>(
+    a: &Shape<R>,
+    xf_a: &Transform<R>,
+    b: &Shape<R>,
+    xf_b: &Transform<R>,
+    margin: R,
+    mut emit: impl FnMut(u16, u16, &Manifold<R>),
+) {
+    for_each_part(a, xf_a, |part_a, shape_a, placed_a| {
+        for_each_part(b, xf_b, |part_b, shape_b, placed_b| {
+            let manifold = collide_convex(shape_a, placed_a, shape_b, placed_b, margin);
+            if manifold.count > 0 {
+                emit(part_a, part_b, &manifold);
+            }
+        });
+    });
+}
+
+/// Calls `f(part, shape, placement)` for each convex part of `shape` placed by `xf`.
+fn for_each_part<R: Real>(
+    shape: &Shape<R>,
+    xf: &Transform<R>,
+    mut f: impl FnMut(u16, &Shape<R>, &Transform<R>),
+) {
+    match shape {
+        Shape::Compound { parts } => {
+            for (k, part) in parts.iter().enumerate() {
+                let local = Transform::from_pose(part.translation, part.rotation);
+                f(k as u16, &part.shape, &xf.compose(&local));
+            }
+        }
+        _ => f(0, shape, xf),
+    }
+}

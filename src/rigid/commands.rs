@@ -1,0 +1,120 @@
+//! The command methods the world calls while applying a tick's inputs to rigid bodies.
+//!
+//! Each returns whether its target existed: `false` for a stale handle or a target that is
+//! not a body. A command that acts on a body wakes its island. Forces and impulses move
+//! only dynamic bodies; a static body accepts them and does not move.
+
+use super::desc::BodyKind;
+use super::system::RigidSystem;
+use crate::math::{Real, Vec3};
+use crate::world::input::{Command, Target};
+
+impl<R: Real> RigidSystem<R> {
+    /// Applies a world command aimed at a rigid body; false when its target does not exist
+    /// or the command is not about bodies.
+    pub fn apply_command(&mut self, command: &Command<R>) -> bool {
+        let target = match command {
+            Command::ApplyForce { target, .. }
+            | Command::ApplyImpulse { target, .. }
+            | Command::SetVelocity { target, .. }
+            | Command::Remove { target }
+            | Command::MoveKinematic { target, .. } => *target,
+            _ => return false,
+        };
+        let Target::Body(handle) = target else {
+            return false;
+        };
+        let Some(i) = self.bodies.slot(handle) else {
+            return false;
+        };
+        match *command {
+            Command::ApplyForce { force, point, .. } => self.apply_force(i, force, point),
+            Command::ApplyImpulse { impulse, point, .. } => self.apply_impulse(i, impulse, point),
+            Command::SetVelocity { velocity, .. } => self.set_velocity(i, velocity),
+            Command::Remove { .. } => self.remove(i),
+            Command::MoveKinematic { position, .. } => self.move_kinematic(i, position),
+            _ => {}
+        }
+        true
+    }
+
+    /// Adds force F (N) at world point p (m), or at the centre of mass when `point` is
+    /// `None`, for the rest of the tick: F to the force and (p − x) × F to the torque.
+    fn apply_force(&mut self, i: usize, force: Vec3<R>, point: Option<Vec3<R>>) {
+        if self.bodies.kind[i] != BodyKind::Dynamic {
+            return;
+        }
+        self.wake_body(i);
+        self.bodies.force[i] += force;
+        if let Some(p) = point {
+            self.bodies.torque[i] += (p - self.bodies.position[i]).cross(force);
+        }
+    }
+
+    /// Applies impulse J (N·s) at world point p: Δv = J/m, Δω = I⁻¹(p − x) × J with the
+    /// world-frame inverse inertia R I⁻¹ Rᵀ.
+    fn apply_impulse(&mut self, i: usize, impulse: Vec3<R>, point: Option<Vec3<R>>) {
+        if self.bodies.kind[i] != BodyKind::Dynamic {
+            return;
+        }
+        self.wake_body(i);
+        let b = &mut self.bodies;
+        b.linear_velocity[i] += impulse * b.inv_mass[i];
+        if let Some(p) = point {
+            let inv_inertia = b.orientation[i].to_mat3().rotate_inertia(b.inv_inertia[i]);
+            b.angular_velocity[i] += inv_inertia * (p - b.position[i]).cross(impulse);
+        }
+    }
+
+    /// Sets the linear velocity (m/s) of a dynamic or kinematic body.
+    fn set_velocity(&mut self, i: usize, velocity: Vec3<R>) {
+        if self.bodies.kind[i] == BodyKind::Static {
+            return;
+        }
+        self.wake_body(i);
+        self.bodies.linear_velocity[i] = velocity;
+    }
+
+    /// Moves a kinematic body's centre of mass to `position` (m) at once; bodies it now
+    /// overlaps are pushed out by the solver. Other kinds do not move.
+    fn move_kinematic(&mut self, i: usize, position: Vec3<R>) {
+        if self.bodies.kind[i] != BodyKind::Kinematic {
+            return;
+        }
+        self.bodies.position[i] = position;
+        self.wake_touching(i);
+    }
+
+    /// Removes the body: its contacts go, and the islands it touched wake.
+    fn remove(&mut self, i: usize) {
+        self.wake_touching(i);
+        self.wake_body(i);
+        self.bodies.remove(i);
+        let slot = i as u32;
+        self.contacts
+            .retain(|c| c.key.body_a != slot && c.key.body_b != slot);
+        self.scratch.cache_valid = false;
+    }
+
+    /// Wakes the islands of every body touching slot `i`.
+    fn wake_touching(&mut self, i: usize) {
+        let slot = i as u32;
+        let bodies = &self.bodies;
+        let mut islands: Vec<u32> = self
+            .contacts
+            .iter()
+            .filter(|c| c.key.body_a == slot || c.key.body_b == slot)
+            .map(|c| {
+                let other = if c.key.body_a == slot {
+                    c.key.body_b
+                } else {
+                    c.key.body_a
+                };
+                other as usize
+            })
+            .filter(|&j| bodies.asleep[j])
+            .map(|j| bodies.island[j])
+            .collect();
+        self.wake_islands(&mut islands);
+    }
+}

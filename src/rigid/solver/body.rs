@@ -1,0 +1,26 @@
+//! The solver's copy of a moving body: velocities, the motion accumulated during the step,
+//! and inverse mass properties in the world frame.
+
+use crate::math::{Mat3, Real, Vec3};
+
+/// One awake dynamic or kinematic body in the solver, or the shared static body at index
+/// [`STATIC_BODY`] (all zeros: never moves, infinite mass).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct SolverBody<R: Real> {
+    /// Linear velocity, m/s.
+    pub v: Vec3<R>,
+    /// Angular velocity, world frame, rad/s.
+    pub w: Vec3<R>,
+    /// Displacement of the centre of mass since the step began, m.
+    pub dp: Vec3<R>,
+    /// Rotation since the step began, as a rotation vector Σ h ω (rad); small, so the
+    /// motion of an anchor r is dθ × r to first order.
+    pub dtheta: Vec3<R>,
+    /// 1/m, 1/kg.
+    pub inv_mass: R,
+    /// World-frame inverse inertia R I⁻¹ Rᵀ at the start of the step, 1/(kg·m²).
+    pub inv_inertia: Mat3<R>,
+}
+
+/// The solver index of every static body (and of bodies the solver does not move).
+pub(crate) const STATIC_BODY: u32 = 0;

@@ -1,0 +1,189 @@
+//! `RigidSystem`: the rigid bodies of a world, their contacts, and one step of their
+//! motion.
+
+use serde::{Deserialize, Serialize};
+
+use super::aabb::Aabb;
+use super::bodies::{Bodies, NewBody};
+use super::broadphase::BroadPhase;
+use super::contact::Contact;
+use super::desc::{BodyKind, SolverSettings};
+use super::solver::Solver;
+use super::transform::Transform;
+use crate::math::{Fx, Real, Vec3};
+use crate::world::Handle;
+
+/// Rigid bodies and their contacts.
+///
+/// A step ([`RigidSystem::step`]) runs these stages, in order:
+/// 1. **collide** ([`collide`](super::collide)): bounding boxes of the moving bodies,
+///    broadphase pairs, narrowphase manifolds, impulses carried over by feature id;
+/// 2. **wake** ([`sleep`](super::sleep)): sleeping islands touched by a moving body;
+/// 3. **solve** ([`solver`](super::solver)): soft-contact sequential impulses with
+///    substeps, restitution, impulses stored;
+/// 4. **sleep** ([`sleep`](super::sleep)): islands that stayed slow long enough.
+///
+/// When every body sleeps or is static, a step does nothing.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct RigidSystem<R: Real = Fx> {
+    pub(crate) settings: SolverSettings<R>,
+    pub(crate) bodies: Bodies<R>,
+    /// Touching shape pairs, sorted by key.
+    pub(crate) contacts: Vec<Contact<R>>,
+    #[serde(skip)]
+    pub(crate) scratch: Scratch<R>,
+}
+
+/// Per-step working memory and caches derived from the state: never part of it, rebuilt
+/// when missing, and equal to any other scratch. A clone starts empty.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch<R: Real> {
+    /// Whether `transforms` and `aabbs` hold every present body's current values; false
+    /// after a restore, so the next step recomputes them all.
+    pub cache_valid: bool,
+    /// Placement of each body slot.
+    pub transforms: Vec<Transform<R>>,
+    /// Bounding box of each body slot, grown by the speculative distance.
+    pub aabbs: Vec<Aabb<R>>,
+    /// Whether each slot moves this step (awake dynamic or kinematic).
+    pub active: Vec<bool>,
+    /// Whether each slot takes part in the broadphase (alive and not a plane).
+    pub present: Vec<bool>,
+    /// Slots of the static planes.
+    pub planes: Vec<u32>,
+    pub broadphase: BroadPhase<R>,
+    pub pairs: Vec<(u32, u32)>,
+    pub solver: Solver<R>,
+}
+
+impl<R: Real> Clone for Scratch<R> {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl<R: Real> PartialEq for Scratch<R> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl<R: Real> RigidSystem<R> {
+    /// An empty system with the given solver settings.
+    pub fn new(settings: SolverSettings<R>) -> Self {
+        Self {
+            settings,
+            bodies: Bodies::default(),
+            contacts: Vec::new(),
+            scratch: Scratch::default(),
+        }
+    }
+
+    /// The solver settings.
+    pub fn settings(&self) -> &SolverSettings<R> {
+        &self.settings
+    }
+
+    /// Adds a body; `body` must have passed the checks of
+    /// [`from_desc`](RigidSystem::from_desc).
+    pub(crate) fn insert(&mut self, body: NewBody<R>) -> Handle {
+        self.scratch.cache_valid = false;
+        self.bodies.insert(body)
+    }
+
+    /// Advances the bodies by `dt` seconds under `gravity` (m/s²).
+    pub fn step(&mut self, dt: R, gravity: Vec3<R>) {
+        if !(0..self.bodies.len()).any(|i| self.bodies.is_moving(i)) {
+            return;
+        }
+        self.collide();
+        self.wake_touched();
+        self.solve(dt, gravity);
+        self.update_sleep(dt);
+    }
+
+    /// Clears the per-tick force and torque accumulators.
+    pub fn end_tick(&mut self) {
+        for f in &mut self.bodies.force {
+            *f = Vec3::ZERO;
+        }
+        for t in &mut self.bodies.torque {
+            *t = Vec3::ZERO;
+        }
+    }
+
+    /// Puts `other`'s state in place, keeping this system's buffers.
+    pub fn restore_from(&mut self, other: Self) {
+        let scratch = core::mem::take(&mut self.scratch);
+        *self = other;
+        self.scratch = scratch;
+        self.scratch.cache_valid = false;
+    }
+
+    /// Number of body slots, alive or dead.
+    pub fn slot_count(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// Handles of the live bodies, in slot order.
+    pub fn handles(&self) -> impl Iterator<Item = Handle> + '_ {
+        (0..self.bodies.len())
+            .filter(|&i| self.bodies.alive[i])
+            .map(|i| self.bodies.handle(i))
+    }
+
+    /// Number of live bodies.
+    pub fn body_count(&self) -> usize {
+        self.bodies.alive.iter().filter(|&&a| a).count()
+    }
+
+    /// The kind of a live body.
+    pub fn kind(&self, handle: Handle) -> Option<BodyKind> {
+        self.bodies.slot(handle).map(|i| self.bodies.kind[i])
+    }
+
+    /// Position of a live body's centre of mass, m.
+    pub fn position(&self, handle: Handle) -> Option<Vec3<R>> {
+        self.bodies.slot(handle).map(|i| self.bodies.position[i])
+    }
+
+    /// Orientation of a live body.
+    pub fn orientation(&self, handle: Handle) -> Option<crate::math::Quat<R>> {
+        self.bodies.slot(handle).map(|i| self.bodies.orientation[i])
+    }
+
+    /// Linear velocity of a live body, m/s.
+    pub fn linear_velocity(&self, handle: Handle) -> Option<Vec3<R>> {
+        self.bodies
+            .slot(handle)
+            .map(|i| self.bodies.linear_velocity[i])
+    }
+
+    /// Angular velocity of a live body (world frame), rad/s.
+    pub fn angular_velocity(&self, handle: Handle) -> Option<Vec3<R>> {
+        self.bodies
+            .slot(handle)
+            .map(|i| self.bodies.angular_velocity[i])
+    }
+
+    /// Mass of a live body, kg (0 for static and kinematic bodies).
+    pub fn mass(&self, handle: Handle) -> Option<R> {
+        self.bodies.slot(handle).map(|i| self.bodies.mass[i])
+    }
+
+    /// The shape of a live body, in its body frame.
+    pub fn shape(&self, handle: Handle) -> Option<&super::Shape<R>> {
+        self.bodies.slot(handle).map(|i| &self.bodies.shape[i])
+    }
+
+    /// Whether a live body sleeps.
+    pub fn is_sleeping(&self, handle: Handle) -> Option<bool> {
+        self.bodies.slot(handle).map(|i| self.bodies.asleep[i])
+    }
+
+    /// Number of touching shape pairs.
+    pub fn contact_count(&self) -> usize {
+        self.contacts.len()
+    }
+}
