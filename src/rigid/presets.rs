@@ -139,8 +139,9 @@ pub fn falling<R: Real>(count: u32) -> RigidDesc<R> {
 }
 
 /// Newton's cradle without strings, in zero gravity: five frictionless, perfectly elastic
-/// balls of radius ½ m in a row along x, touching, and a sixth approaching the row from the
-/// left at 2 m/s.
+/// balls of radius ½ m in a row along x with 0.1 m between neighbours, and a sixth
+/// approaching the row from the left at 2 m/s. The gaps make each collision a two-body one,
+/// as the small gaps of a real cradle do; balls pressed together would share the impulse.
 pub fn cradle<R: Real>() -> RigidDesc<R> {
     let elastic = Material {
         friction: R::ZERO,
@@ -150,7 +151,7 @@ pub fn cradle<R: Real>() -> RigidDesc<R> {
     row.material = elastic;
     row.grid = Some(Grid {
         count: (5, 1, 1),
-        spacing: Vec3::X,
+        spacing: Vec3::new(ratio(11, 10), R::ZERO, R::ZERO),
     });
     let mut striker = BodyDesc::new(
         Shape::Sphere { radius: R::HALF },
