@@ -41,8 +41,10 @@ pub(super) fn min_span<R: Real>() -> R {
 }
 
 /// v / |v| and |v| computed from the already known squared length `length_squared` = v·v
-/// (m²): √ once, one reciprocal, three multiplies, as [`Vec3::try_normalize`] does. `None`
-/// when v·v ≤ [`tiny_length_squared`], where the direction would be mostly rounding.
+/// (m²): with y = 1/√(v·v) ([`Real::rsqrt`], correctly rounded, no division), v̂ = v y and
+/// |v| = (v·v) y. `None` when v·v ≤ [`tiny_length_squared`], where the direction would be
+/// mostly rounding. (Equivalent to [`Vec3::try_normalize`] with its √ and reciprocal, and
+/// a little cheaper.)
 ///
 /// A vector shorter than 1/16 m is first scaled by 2⁸ (exact): v·v of a short vector has
 /// few significant bits in fixed point (at |v| = 7 mm, I32F32 keeps it to 6·10⁻⁶), and the
@@ -53,12 +55,16 @@ pub(super) fn unit_from_squared<R: Real>(v: Vec3<R>, length_squared: R) -> Optio
         return None;
     }
     if length_squared >= R::from_ratio(1, 1 << 8) {
-        let length = length_squared.sqrt();
-        return Some((v * length.recip(), length));
+        let inverse = length_squared.rsqrt();
+        return Some((v * inverse, length_squared * inverse));
     }
     let scaled = v * R::from_int(1 << 8);
-    let length = scaled.length_squared().sqrt();
-    Some((scaled * length.recip(), length * R::from_ratio(1, 1 << 8)))
+    let scaled_squared = scaled.length_squared();
+    let inverse = scaled_squared.rsqrt();
+    Some((
+        scaled * inverse,
+        scaled_squared * inverse * R::from_ratio(1, 1 << 8),
+    ))
 }
 
 /// v / |v| and |v|, or `None` when |v|² ≤ [`tiny_length_squared`].
