@@ -147,14 +147,18 @@ pub struct RigidDesc<R: Real = Fx> {
     pub solver: SolverSettings<R>,
 }
 
-/// Solver settings. The defaults are Box2D v3's.
+/// Solver settings. The defaults are Box2D v3's, but for a stiffer contact.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "", deny_unknown_fields)]
 pub struct SolverSettings<R: Real = Fx> {
     /// Substeps per world substep (1 to [`MAX_SOLVER_SUBSTEPS`]). Default 4.
     #[serde(default = "default_substeps")]
     pub substeps: u32,
-    /// Stiffness of the soft contact, Hz; capped at a quarter of the substep rate. Default 30.
+    /// Stiffness of the soft contact, Hz; capped at a quarter of the substep rate. Default
+    /// 45. A contact under a load of acceleration a (m/s²) settles at an overlap of
+    /// a/(2π f)², so the stiffer the spring, the less a tall stack sinks: at Box2D's 30 Hz the
+    /// top of the 20-row `pyramid` sinks 26 mm, at 45 Hz 13 mm. At 60 Hz (the cap with 4
+    /// substeps) the pyramid no longer comes to rest.
     #[serde(default = "default_contact_hertz")]
     pub contact_hertz: R,
     /// Damping ratio of the soft contact. Default 10.
@@ -188,7 +192,7 @@ fn default_substeps() -> u32 {
     4
 }
 fn default_contact_hertz<R: Real>() -> R {
-    R::from_int(30)
+    R::from_int(45)
 }
 fn default_damping_ratio<R: Real>() -> R {
     R::from_int(10)

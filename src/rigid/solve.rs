@@ -70,10 +70,13 @@ impl<R: Real> RigidSystem<R> {
         let substeps = settings.substeps;
         let h = dt / R::from_int(substeps as i32);
         let inv_h = R::from_int(substeps as i32) / dt;
-        // Box2D's cap: the contact spring at most a quarter of the substep rate.
-        let hertz = settings.contact_hertz.min(inv_h * R::from_ratio(1, 4));
-        let soft = Softness::new(hertz, settings.contact_damping_ratio, h);
-        let soft_static = Softness::new(hertz * R::TWO, settings.contact_damping_ratio, h);
+        // Box2D's cap: the contact spring at most a quarter of the substep rate. Contacts with
+        // a static or kinematic body get twice the stiffness, within the same cap.
+        let cap = inv_h * R::from_ratio(1, 4);
+        let hertz = settings.contact_hertz.min(cap);
+        let zeta = settings.contact_damping_ratio;
+        let soft = Softness::new(hertz, zeta, h);
+        let soft_static = Softness::new((hertz * R::TWO).min(cap), zeta, h);
         let max_push = settings.max_push_velocity;
 
         for _ in 0..substeps {
