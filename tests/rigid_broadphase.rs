@@ -286,6 +286,22 @@ fn count_changes_and_teleports_keep_the_cache_honest() {
 }
 
 #[test]
+fn same_flags_new_layout_is_resorted() {
+    // Nobody joins or leaves either list, but every box moves far: the kept order is
+    // useless and must be re-sorted (insertion sort running over budget, then a full sort).
+    let mut rng = Pcg32::new(21, 5);
+    let f = random_frame::<Fx>(&mut rng, 800, 100, 10, 5);
+    let mut g = f.clone();
+    g.boxes.reverse();
+    let mut h = f.clone();
+    h.boxes.rotate_left(1);
+    let mut bp = BroadPhase::new();
+    for frame in [&f, &g, &h, &f] {
+        assert_eq!(sweep(&mut bp, frame), brute(frame));
+    }
+}
+
+#[test]
 fn sleeping_world_with_a_few_movers_over_many_frames() {
     // Most boxes rest; a few awake ones move each frame, and now and then one falls asleep
     // or wakes; the resting list must follow (and be re-sorted) exactly.
@@ -309,9 +325,19 @@ fn sleeping_world_with_a_few_movers_over_many_frames() {
             f.active[i] = !f.active[i];
         }
         if frame % 7 == 0 {
-            // A resting box is nudged without waking (a kinematic teleport, say).
-            let i = rng.below(1000) as usize;
-            f.boxes[i].max.x += Fx::from_ratio(1, 4);
+            // A resting box is moved onto an awake one without waking (a kinematic
+            // teleport, say): the resting list must notice the new box.
+            let from = rng.below(1000) as usize;
+            let awake = (0..1000)
+                .map(|k| (from + k) % 1000)
+                .find(|&i| f.active[i] && f.present[i])
+                .unwrap();
+            let resting = (0..1000)
+                .map(|k| (from + k) % 1000)
+                .find(|&i| !f.active[i] && f.present[i])
+                .unwrap();
+            f.boxes[resting] = f.boxes[awake];
+            assert!(brute(&f).contains(&(awake.min(resting) as u32, awake.max(resting) as u32)));
         }
         assert_eq!(sweep(&mut bp, &f), brute(&f), "frame {frame}");
     }
