@@ -2,42 +2,61 @@
 //!
 //! [`BroadPhase::find_pairs`] takes every body's box and two flags (present, awake) and
 //! returns the overlapping pairs with at least one awake member, in ascending order. The
-//! answer is a pure function of the input; what the broadphase keeps between calls (the
-//! sort orders of the previous call) only makes the next call cheaper.
+//! answer is a pure function of the input; what the broadphase keeps between calls (a
+//! layout and the sort orders of the previous call) only makes the next call cheaper.
 //!
 //! # How it works
 //!
-//! Boxes are sorted by their lower bound along one sweep axis, ties broken by index, so the
-//! order is total and the same on every machine. Awake boxes and resting boxes (present but
-//! not awake: static or sleeping) are kept in two separate sorted lists:
+//! **Layout.** Of the three axes, the *sweep axis* is the one along which the fewest boxes
+//! overlap, and the *strip axis* the next one (measured on a sample of up to [`SAMPLE`]
+//! boxes). The strip axis is cut into strips at boundaries taken from the sample's lower
+//! bounds, at least one median box size apart, so that a box usually spans one or two
+//! strips. Each box belongs to the strip of its lower bound along the strip axis. The
+//! layout is chosen on the first call and again when the number of boxes or the crowding
+//! of the fullest strip has grown a lot; it only uses comparisons and the box sizes.
 //!
-//! - awake × awake: the classic sweep. For each awake box, the boxes after it in the list
-//!   whose lower bound is within its upper bound are tested on all three axes.
-//! - awake × resting: for each awake box, a binary search finds its place in the resting
-//!   list. The resting boxes after that place are walked forward while their lower bound is
-//!   within reach; the ones before it are walked backward, in blocks of [`BLOCK`], while
-//!   the running maximum of their upper bounds (and the block's own maximum) still reaches
-//!   the awake box. So a long resting box (a ground slab) does not make every query walk
-//!   the whole list.
+//! **Order.** Boxes are sorted by the total key (strip, lower bound along the sweep axis by
+//! [`Real::total_cmp`], index), the same on every machine. Awake boxes and resting boxes
+//! (present but not awake: static or sleeping) are kept in two separate sorted lists.
 //!
-//! The resting list is re-sorted only when its membership or one of its boxes changes,
-//! which is checked bit for bit each call. Both lists are re-sorted by insertion sort
-//! starting from the previous order, which is nearly sorted between frames; when many
-//! boxes join at once, or the insertion sort has moved too much, a full sort takes over.
-//! Either way the result is the unique order of the total keys.
+//! **Pairs.** Two overlapping boxes in strips s ≤ t have t ≤ the strip of the first one's
+//! upper bound. So for each awake box `a` (strips `first..=last`):
 //!
-//! A resting world therefore costs the awake boxes' own sweep and queries, plus one pass
-//! over the flags and one bitwise comparison of the resting boxes.
+//! - awake boxes of its own strip: the classic sweep, forward from `a` while the lower
+//!   bound is within `a`'s upper bound;
+//! - awake boxes of the strips `first+1..=last`: a probe of each strip;
+//! - resting boxes of the strips `first..=last`, and of lower strips holding a resting box
+//!   that reaches up to `first`: a probe of each.
+//!
+//! A probe binary-searches `a`'s place in the strip, walks forward while the lower bounds
+//! are within reach, and walks backward, by blocks of [`BLOCK`], while the running
+//! maximum of the upper bounds (and the block's own maximum) still reaches `a`, so a long
+//! box (a ground slab) does not make every probe walk the whole strip. Every candidate gets
+//! the full test of [`Aabb::overlaps`]; each pair is met exactly once, and the list is
+//! sorted at the end.
+//!
+//! **Caching.** The resting list is re-sorted only when its membership or one of its boxes
+//! changes, which is checked bit for bit on each call. Both lists are re-sorted by
+//! insertion sort from the previous order, which is nearly sorted between frames; when
+//! many boxes join at once, or the insertion sort has moved too much, a full sort takes
+//! over. Either way the result is the unique order of the total keys. A resting world
+//! therefore costs the awake boxes' own sweep and probes, plus one pass over the flags and
+//! one comparison of the resting boxes.
 
 use core::cmp::Ordering;
-use core::ops::Range;
 
 use super::aabb::Aabb;
 use crate::math::{Fx, Real};
 
-/// Boxes per block of the resting list; the backward walk skips a block whose boxes all end
-/// before the query box starts.
+/// Boxes per block of a sorted list; the backward walk skips a block whose boxes all end
+/// before the probe starts.
 const BLOCK: usize = 32;
+
+/// Largest number of boxes the layout is chosen from.
+const SAMPLE: usize = 1024;
+
+/// The layout aims at no more strips than this.
+const MAX_STRIPS: usize = 64;
 
 /// Membership of a box index: in neither list (absent, or beyond the input).
 const OUT: u8 = 0;
@@ -46,212 +65,527 @@ const AWAKE: u8 = 1;
 /// Membership of a box index: in the resting list.
 const RESTING: u8 = 2;
 
-/// A sort key: the box's lower bound along the sweep axis, then its index.
-type Key<R> = (R, u32);
-
-/// The total order of keys: lower bound by [`Real::total_cmp`], then index.
+/// The total order of entries: strip, then lower bound along the sweep axis by
+/// [`Real::total_cmp`], then index.
 #[inline(always)]
-fn key_cmp<R: Real>(a: &Key<R>, b: &Key<R>) -> Ordering {
-    a.0.total_cmp(&b.0).then(a.1.cmp(&b.1))
+fn entry_cmp<R: Real>(a: &Entry<R>, b: &Entry<R>) -> Ordering {
+    a.strip
+        .cmp(&b.strip)
+        .then_with(|| a.bounds.lo[0].total_cmp(&b.bounds.lo[0]))
+        .then(a.index.cmp(&b.index))
 }
 
-/// True when key `a` comes strictly before key `b`.
+/// True when entry `a` comes strictly before entry `b`.
 #[inline(always)]
-fn key_less<R: Real>(a: &Key<R>, b: &Key<R>) -> bool {
-    key_cmp(a, b) == Ordering::Less
+fn entry_less<R: Real>(a: &Entry<R>, b: &Entry<R>) -> bool {
+    entry_cmp(a, b) == Ordering::Less
 }
 
-/// Sorts `keys` in the total key order, assuming that all but the last `fresh` entries
-/// are nearly sorted already. Insertion sort, unless `fresh` is a large share of the list or
+/// Sorts `entries` in the total order, assuming that all but the last `fresh` of them are
+/// nearly sorted already. Insertion sort, unless `fresh` is a large share of the list or
 /// the insertion sort has moved more than a few times the list's length; then a full sort.
-/// Keys are unique (indices differ), so the result does not depend on the method.
-fn sort_keys<R: Real>(keys: &mut [Key<R>], fresh: usize) {
-    let n = keys.len();
+/// Entries are unique (indices differ), so the result does not depend on the method.
+fn sort_entries<R: Real>(entries: &mut [Entry<R>], fresh: usize) {
+    let n = entries.len();
     if fresh > n / 4 + 8 {
-        keys.sort_unstable_by(key_cmp);
+        entries.sort_unstable_by(entry_cmp);
         return;
     }
     let budget = 8 * n + 64;
     let mut moves = 0;
     for i in 1..n {
-        let x = keys[i];
-        if !key_less(&x, &keys[i - 1]) {
+        if !entry_less(&entries[i], &entries[i - 1]) {
             continue;
         }
+        let x = entries[i];
         let mut j = i;
-        while j > 0 && key_less(&x, &keys[j - 1]) {
-            keys[j] = keys[j - 1];
+        while j > 0 && entry_less(&x, &entries[j - 1]) {
+            entries[j] = entries[j - 1];
             j -= 1;
         }
-        keys[j] = x;
+        entries[j] = x;
         moves += i - j;
         if moves > budget {
-            keys.sort_unstable_by(key_cmp);
+            entries.sort_unstable_by(entry_cmp);
             return;
         }
     }
 }
 
-/// The three axes in lane order: the sweep axis first, then the two others.
-#[inline(always)]
-fn lanes(axis: usize) -> [usize; 3] {
-    [axis, (axis + 1) % 3, (axis + 2) % 3]
+/// Sorts the pairs in ascending order. Many pairs (compared with the number of boxes `n`)
+/// are sorted by two counting passes, by the second index and then stably by the first,
+/// in O(pairs + n); fewer by a comparison sort.
+fn sort_pairs(
+    pairs: &mut Vec<(u32, u32)>,
+    n: usize,
+    counts: &mut Vec<u32>,
+    scratch: &mut Vec<(u32, u32)>,
+) {
+    if pairs.len() < 256 || pairs.len() < n / 2 {
+        pairs.sort_unstable();
+        return;
+    }
+    scratch.clear();
+    scratch.resize(pairs.len(), (0, 0));
+    for pass in 0..2 {
+        let (from, to): (&Vec<(u32, u32)>, &mut Vec<(u32, u32)>) = if pass == 0 {
+            (&*pairs, &mut *scratch)
+        } else {
+            (&*scratch, &mut *pairs)
+        };
+        let digit = |p: &(u32, u32)| if pass == 0 { p.1 } else { p.0 } as usize;
+        counts.clear();
+        counts.resize(n + 1, 0);
+        for p in from {
+            counts[digit(p) + 1] += 1;
+        }
+        for k in 0..n {
+            counts[k + 1] += counts[k];
+        }
+        for p in from {
+            let slot = &mut counts[digit(p)];
+            to[*slot as usize] = *p;
+            *slot += 1;
+        }
+    }
 }
 
-/// A box being tested against a list: its bounds in lane order and its index.
+/// True when the two values have the same bits.
+#[inline(always)]
+fn same<R: Real>(a: R, b: R) -> bool {
+    a.canonical_bits() == b.canonical_bits()
+}
+
+/// The axes and strips the boxes are sorted by.
+#[derive(Clone, Debug)]
+struct Layout<R: Real> {
+    /// Axis of each lane: sweep axis, strip axis, the remaining axis.
+    lanes: [usize; 3],
+    /// Strip boundaries along the strip axis, strictly increasing: strip `t` holds the
+    /// lower bounds `v` with `bounds[t - 1] ≤ v < bounds[t]`.
+    bounds: Vec<R>,
+}
+
+impl<R: Real> Layout<R> {
+    /// Number of strips.
+    #[inline]
+    fn strips(&self) -> usize {
+        self.bounds.len() + 1
+    }
+
+    /// The strip holding the value `v` of the strip axis.
+    #[inline(always)]
+    fn strip(&self, v: R) -> u32 {
+        self.bounds.partition_point(|b| *b <= v) as u32
+    }
+
+    /// [`Layout::strip`], checking the strip `hint` first (boxes seldom change strips).
+    #[inline(always)]
+    fn strip_near(&self, v: R, hint: u32) -> u32 {
+        let h = hint as usize;
+        let b = &self.bounds;
+        if h <= b.len() && (h == 0 || b[h - 1] <= v) && (h == b.len() || !(b[h] <= v)) {
+            hint
+        } else {
+            self.strip(v)
+        }
+    }
+
+    /// True when both layouts are the same bit for bit.
+    fn same_as(&self, other: &Self) -> bool {
+        self.lanes == other.lanes
+            && self.bounds.len() == other.bounds.len()
+            && self
+                .bounds
+                .iter()
+                .zip(&other.bounds)
+                .all(|(&a, &b)| same(a, b))
+    }
+
+    /// Chooses the layout for the present boxes from a sample of about [`SAMPLE`] of them
+    /// (all of them when there are no more). For each axis it counts the sampled pairs
+    /// overlapping along that axis; the sweep axis has the fewest, the strip axis the next
+    /// fewest (ties go to the lower axis). The strip boundaries are sampled lower bounds
+    /// along the strip axis, each at least the median sampled box size beyond the previous
+    /// one and with at least `max(4, samples / MAX_STRIPS)` sampled boxes between them.
+    fn choose(boxes: &[Aabb<R>], present: &[bool], count: usize) -> Self {
+        // A pseudo-random choice of indices (a multiplicative hash under a threshold), so
+        // that the sample does not alias with a regular arrangement of the bodies.
+        let threshold = if count <= SAMPLE {
+            u32::MAX
+        } else {
+            (u64::from(u32::MAX) * SAMPLE as u64 / count as u64) as u32
+        };
+        let sample: Vec<usize> = (0..boxes.len())
+            .filter(|&i| present[i] && (i as u32).wrapping_mul(0x9E37_79B9) <= threshold)
+            .collect();
+        let mut layout = Self {
+            lanes: [0, 1, 2],
+            bounds: Vec::new(),
+        };
+        if sample.len() < 2 {
+            return layout;
+        }
+        let spans = |axis: usize| {
+            let mut spans: Vec<(R, R)> = sample
+                .iter()
+                .map(|&i| (boxes[i].min[axis], boxes[i].max[axis]))
+                .collect();
+            spans.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+            spans
+        };
+        let mut overlaps = [0usize; 3];
+        for (axis, o) in overlaps.iter_mut().enumerate() {
+            let spans = spans(axis);
+            *o = spans
+                .iter()
+                .enumerate()
+                .map(|(i, &(_, hi))| {
+                    spans
+                        .partition_point(|&(lo, _)| lo <= hi)
+                        .saturating_sub(i + 1)
+                })
+                .sum();
+        }
+        let mut axes = [0, 1, 2];
+        axes.sort_by_key(|&a| (overlaps[a], a));
+        layout.lanes = axes;
+
+        let spans = spans(axes[1]);
+        let mut sizes: Vec<R> = spans.iter().map(|&(lo, hi)| hi - lo).collect();
+        let middle = sizes.len() / 2;
+        let size = *sizes.select_nth_unstable_by(middle, R::total_cmp).1;
+        let min_between = (spans.len() / MAX_STRIPS).max(4);
+        let mut last = spans[0].0;
+        let mut between = 0;
+        for &(lo, _) in &spans[1..] {
+            between += 1;
+            if between >= min_between && lo > last && lo >= last + size {
+                layout.bounds.push(lo);
+                last = lo;
+                between = 0;
+            }
+        }
+        layout
+    }
+}
+
+/// The components of `v` as an array, x first.
+#[inline(always)]
+fn components<R: Real>(v: &crate::math::Vec3<R>) -> [R; 3] {
+    [v.x, v.y, v.z]
+}
+
+/// A box with its bounds in lane order (sweep axis first, strip axis second).
 #[derive(Clone, Copy, Debug)]
-struct Probe<R: Real> {
-    /// Lower bounds, sweep axis first.
+struct Bounds<R: Real> {
+    /// Lower bounds per lane.
     lo: [R; 3],
-    /// Upper bounds, sweep axis first.
+    /// Upper bounds per lane.
     hi: [R; 3],
+}
+
+impl<R: Real> Bounds<R> {
+    /// The bounds of `b` in the lane order `lanes`.
+    #[inline(always)]
+    fn of(b: &Aabb<R>, lanes: [usize; 3]) -> Self {
+        let (min, max) = (components(&b.min), components(&b.max));
+        Self {
+            lo: [min[lanes[0]], min[lanes[1]], min[lanes[2]]],
+            hi: [max[lanes[0]], max[lanes[1]], max[lanes[2]]],
+        }
+    }
+
+    /// [`Aabb::overlaps`], without branches.
+    #[inline(always)]
+    fn overlaps(&self, o: &Self) -> bool {
+        (u8::from(self.lo[0] <= o.hi[0])
+            & u8::from(o.lo[0] <= self.hi[0])
+            & u8::from(self.lo[1] <= o.hi[1])
+            & u8::from(o.lo[1] <= self.hi[1])
+            & u8::from(self.lo[2] <= o.hi[2])
+            & u8::from(o.lo[2] <= self.hi[2]))
+            != 0
+    }
+
+    /// True when both are the same bit for bit.
+    #[inline(always)]
+    fn same_as(&self, o: &Self) -> bool {
+        (0..3).all(|l| same(self.lo[l], o.lo[l]) && same(self.hi[l], o.hi[l]))
+    }
+}
+
+/// One box of a sorted list: its bounds, index and strips. The list is sorted by
+/// [`entry_cmp`].
+#[derive(Clone, Copy, Debug)]
+struct Entry<R: Real> {
+    /// The bounds in lane order.
+    bounds: Bounds<R>,
     /// Index of the box in the input.
     index: u32,
+    /// Strip of the lower bound along the strip axis.
+    strip: u32,
+    /// Strip of the upper bound along the strip axis (at least `strip`).
+    last: u32,
 }
 
-/// A sorted list of boxes: the keys (the order) and the boxes in that order, one array per
-/// bound so that the inner loops read memory in sequence.
+impl<R: Real> Entry<R> {
+    /// Fills in the bounds and strips of box `index` of `boxes`; the strips already in the
+    /// entry serve as hints.
+    #[inline(always)]
+    fn set(&mut self, boxes: &[Aabb<R>], index: u32, layout: &Layout<R>) {
+        self.bounds = Bounds::of(&boxes[index as usize], layout.lanes);
+        self.index = index;
+        self.strip = layout.strip_near(self.bounds.lo[1], self.strip);
+        self.last = layout
+            .strip_near(self.bounds.hi[1], self.last)
+            .max(self.strip);
+    }
+}
+
+/// A sorted list of boxes, with per-strip and per-block summaries for the probes.
 #[derive(Clone, Debug, Default)]
 struct SortedList<R: Real> {
-    /// Sort keys, in order.
-    keys: Vec<Key<R>>,
-    /// Index of each box, in order.
-    index: Vec<u32>,
-    /// Lower bounds per lane (sweep axis first), in order.
-    lo: [Vec<R>; 3],
-    /// Upper bounds per lane, in order.
-    hi: [Vec<R>; 3],
+    /// The boxes, in order.
+    entries: Vec<Entry<R>>,
+    /// Start of each strip's run of entries, and the end: `strips + 1` offsets.
+    seg: Vec<u32>,
+    /// Running maximum of the upper bound along the sweep axis within each strip.
+    prefix_hi: Vec<R>,
+    /// Maximum of the upper bound along the sweep axis per [`BLOCK`] of entries.
+    block_hi: Vec<R>,
+    /// Per strip, the highest strip reached by the upper bound of one of its boxes (at
+    /// least the strip itself).
+    reach: Vec<u32>,
+    /// Per strip `s`, the lowest strip `t ≤ s` whose reach is at least `s`.
+    down: Vec<u32>,
 }
 
 impl<R: Real> SortedList<R> {
     /// Number of boxes in the list.
     #[inline]
     fn len(&self) -> usize {
-        self.index.len()
+        self.entries.len()
     }
 
     /// Brings the list up to date: keeps the entries whose index still has membership
-    /// `tag` in `state`, refreshes their keys from `boxes`, appends `added`, re-sorts from
-    /// the previous order and copies the boxes out in the new order.
-    fn refresh(&mut self, boxes: &[Aabb<R>], state: &[u8], tag: u8, added: &[u32], axis: usize) {
+    /// `tag` in `state`, refreshes their bounds from `boxes`, appends `added`, re-sorts
+    /// (from the previous order unless `full`) and rebuilds the summaries.
+    fn refresh(
+        &mut self,
+        boxes: &[Aabb<R>],
+        state: &[u8],
+        tag: u8,
+        added: &[u32],
+        layout: &Layout<R>,
+        full: bool,
+    ) {
         let n = boxes.len();
-        self.keys.retain_mut(|key| {
-            let i = key.1 as usize;
-            let keep = i < n && state[i] == tag;
+        self.entries.retain_mut(|e| {
+            let i = e.index;
+            let keep = (i as usize) < n && state[i as usize] == tag;
             if keep {
-                key.0 = boxes[i].min[axis];
+                e.set(boxes, i, layout);
             }
             keep
         });
-        self.keys
-            .extend(added.iter().map(|&i| (boxes[i as usize].min[axis], i)));
-        sort_keys(&mut self.keys, added.len());
-        self.gather(boxes, axis);
+        self.entries.extend(added.iter().map(|&i| {
+            let mut e = Entry {
+                bounds: Bounds::of(&boxes[i as usize], layout.lanes),
+                index: i,
+                strip: 0,
+                last: 0,
+            };
+            e.set(boxes, i, layout);
+            e
+        }));
+        let fresh = if full { self.len() } else { added.len() };
+        sort_entries(&mut self.entries, fresh);
+        self.summarize(layout);
     }
 
-    /// Copies the boxes into the per-bound arrays in key order.
-    fn gather(&mut self, boxes: &[Aabb<R>], axis: usize) {
-        let lane = lanes(axis);
-        self.index.clear();
-        for v in self.lo.iter_mut().chain(self.hi.iter_mut()) {
-            v.clear();
+    /// Rebuilds the per-strip and per-block summaries from the sorted entries.
+    fn summarize(&mut self, layout: &Layout<R>) {
+        let strips = layout.strips();
+        self.prefix_hi.clear();
+        self.seg.clear();
+        self.seg.resize(strips + 1, 0);
+        self.reach.clear();
+        self.reach.extend(0..strips as u32);
+        let mut running = R::MIN;
+        let mut strip = u32::MAX;
+        for e in &self.entries {
+            if e.strip != strip {
+                strip = e.strip;
+                running = e.bounds.hi[0];
+            }
+            running = running.max(e.bounds.hi[0]);
+            self.prefix_hi.push(running);
+            self.seg[e.strip as usize + 1] += 1;
+            let reach = &mut self.reach[e.strip as usize];
+            *reach = (*reach).max(e.last);
         }
-        for &(_, i) in &self.keys {
-            let b = &boxes[i as usize];
-            self.index.push(i);
-            for (l, &a) in lane.iter().enumerate() {
-                self.lo[l].push(b.min[a]);
-                self.hi[l].push(b.max[a]);
+        for t in 0..strips {
+            self.seg[t + 1] += self.seg[t];
+        }
+        self.block_hi.clear();
+        self.block_hi
+            .extend(self.entries.chunks(BLOCK).map(|block| {
+                block
+                    .iter()
+                    .skip(1)
+                    .fold(block[0].bounds.hi[0], |m, e| m.max(e.bounds.hi[0]))
+            }));
+        self.down.clear();
+        self.down.extend(0..strips as u32);
+        for t in 0..strips {
+            for s in t + 1..=self.reach[t] as usize {
+                self.down[s] = self.down[s].min(t as u32);
             }
         }
     }
 
     /// True when every box of the list is bit for bit the box at its index in `boxes`
     /// (every index is assumed to be in range).
-    fn unchanged(&self, boxes: &[Aabb<R>], axis: usize) -> bool {
-        let lane = lanes(axis);
-        let same = |x: R, y: R| x.canonical_bits() == y.canonical_bits();
-        (0..self.len()).all(|k| {
-            let b = &boxes[self.index[k] as usize];
-            lane.iter()
-                .enumerate()
-                .all(|(l, &a)| same(self.lo[l][k], b.min[a]) && same(self.hi[l][k], b.max[a]))
+    fn unchanged(&self, boxes: &[Aabb<R>], lanes: [usize; 3]) -> bool {
+        self.entries.iter().all(|e| {
+            e.bounds
+                .same_as(&Bounds::of(&boxes[e.index as usize], lanes))
         })
     }
 
-    /// The box at position `k` as a probe.
+    /// The entries of strip `t`.
     #[inline(always)]
-    fn probe(&self, k: usize) -> Probe<R> {
-        Probe {
-            lo: [self.lo[0][k], self.lo[1][k], self.lo[2][k]],
-            hi: [self.hi[0][k], self.hi[1][k], self.hi[2][k]],
-            index: self.index[k],
-        }
+    fn strip(&self, t: usize) -> &[Entry<R>] {
+        &self.entries[self.seg[t] as usize..self.seg[t + 1] as usize]
     }
 
-    /// The end of the forward window from position `start`: the first position at or after
-    /// it whose lower bound along the sweep axis is beyond `reach`.
-    #[inline(always)]
-    fn window_end(&self, start: usize, reach: R) -> usize {
-        start
-            + self.lo[0][start..]
-                .iter()
-                .take_while(|&&lo| lo <= reach)
-                .count()
-    }
-
-    /// Tests the probe against the boxes at positions `range` with the full overlap test
-    /// ([`Aabb::overlaps`]) and pushes each overlapping pair as (smaller, larger index).
-    #[inline(always)]
-    fn scan(&self, range: Range<usize>, q: &Probe<R>, out: &mut Vec<(u32, u32)>) {
-        let index = &self.index[range.clone()];
-        let m = index.len();
-        let lo0 = &self.lo[0][range.clone()][..m];
-        let hi0 = &self.hi[0][range.clone()][..m];
-        let lo1 = &self.lo[1][range.clone()][..m];
-        let hi1 = &self.hi[1][range.clone()][..m];
-        let lo2 = &self.lo[2][range.clone()][..m];
-        let hi2 = &self.hi[2][range][..m];
-        for k in 0..m {
-            let hit = (lo0[k] <= q.hi[0])
-                & (q.lo[0] <= hi0[k])
-                & (lo1[k] <= q.hi[1])
-                & (q.lo[1] <= hi1[k])
-                & (lo2[k] <= q.hi[2])
-                & (q.lo[2] <= hi2[k]);
-            if hit {
-                let other = index[k];
-                out.push(if q.index < other {
-                    (q.index, other)
-                } else {
-                    (other, q.index)
-                });
+    /// Every box of strip `t` that overlaps `q` (a box of the other list): a binary search
+    /// for `q`'s place in the strip, then forward while the lower bounds are within `q`'s
+    /// reach, and backward over the entries from the first one whose running maximum of the
+    /// upper bounds reaches `q`, skipping the blocks that all end before it.
+    fn probe_strip(&self, t: usize, q: &Entry<R>, out: &mut Vec<(u32, u32)>) {
+        let (start, end) = (self.seg[t] as usize, self.seg[t + 1] as usize);
+        let (lo, hi) = (q.bounds.lo[0], q.bounds.hi[0]);
+        let place = start + self.entries[start..end].partition_point(|e| comes_before(e, q));
+        let after = &self.entries[place..end];
+        scan(&after[..window(after, hi)], q, out);
+        let mut k = start + self.prefix_hi[start..place].partition_point(|h| *h < lo);
+        while k < place {
+            let block = k / BLOCK;
+            let to = place.min((block + 1) * BLOCK);
+            if self.block_hi[block] >= lo {
+                scan(&self.entries[k..to], q, out);
             }
+            k = to;
         }
     }
 }
 
-/// Sort-and-sweep broadphase. Its internal state (the remembered sort orders) is a cache:
-/// the pairs it returns depend only on the boxes and flags passed in, never on history, so
-/// snapshots, restores and different peers get identical pairs.
+/// True when `a` comes before `b` in the order within a strip: lower bound along the sweep
+/// axis by [`Real::total_cmp`], then index.
+#[inline(always)]
+fn comes_before<R: Real>(a: &Entry<R>, b: &Entry<R>) -> bool {
+    match a.bounds.lo[0].total_cmp(&b.bounds.lo[0]) {
+        Ordering::Less => true,
+        Ordering::Greater => false,
+        Ordering::Equal => a.index < b.index,
+    }
+}
+
+/// The length of the forward window of `entries` (sorted): how many of the first entries
+/// have their lower bound along the sweep axis within `reach`.
+#[inline(always)]
+fn window<R: Real>(entries: &[Entry<R>], reach: R) -> usize {
+    entries
+        .iter()
+        .take_while(|e| e.bounds.lo[0] <= reach)
+        .count()
+}
+
+/// Tests the box `q` against `entries` with the full overlap test and pushes each
+/// overlapping pair as (smaller, larger index).
+///
+/// Branch-free: each chunk of entries is filtered into a small buffer by a running count
+/// (whether a candidate overlaps is not predictable, and a branch on it would cost more
+/// than the test), then the hits are pushed.
+#[inline(always)]
+fn scan<R: Real>(entries: &[Entry<R>], q: &Entry<R>, out: &mut Vec<(u32, u32)>) {
+    const CHUNK: usize = 64;
+    let mut hits = [0u32; CHUNK];
+    for chunk in entries.chunks(CHUNK) {
+        let mut count = 0;
+        for e in chunk {
+            hits[count % CHUNK] = e.index;
+            count += usize::from(e.bounds.overlaps(&q.bounds));
+        }
+        for &other in &hits[..count] {
+            out.push(if q.index < other {
+                (q.index, other)
+            } else {
+                (other, q.index)
+            });
+        }
+    }
+}
+
+/// Every overlapping pair within one strip (sorted): each box against the boxes after it
+/// whose lower bound is within its reach.
+fn self_sweep<R: Real>(entries: &[Entry<R>], out: &mut Vec<(u32, u32)>) {
+    for (i, q) in entries.iter().enumerate() {
+        let after = &entries[i + 1..];
+        scan(&after[..window(after, q.bounds.hi[0])], q, out);
+    }
+}
+
+/// Every overlapping pair between two sorted runs of different boxes: a merged sweep in
+/// which each box, when its turn comes, is tested against the boxes of the other run that
+/// come after it and start within its reach. Each pair overlapping along the sweep axis is
+/// tested once, by whichever of the two comes first.
+fn cross_sweep<R: Real>(xs: &[Entry<R>], ys: &[Entry<R>], out: &mut Vec<(u32, u32)>) {
+    let (mut i, mut j) = (0, 0);
+    while i < xs.len() && j < ys.len() {
+        if comes_before(&xs[i], &ys[j]) {
+            let (q, rest) = (&xs[i], &ys[j..]);
+            scan(&rest[..window(rest, q.bounds.hi[0])], q, out);
+            i += 1;
+        } else {
+            let (q, rest) = (&ys[j], &xs[i..]);
+            scan(&rest[..window(rest, q.bounds.hi[0])], q, out);
+            j += 1;
+        }
+    }
+}
+
+/// Sort-and-sweep broadphase. Its internal state (the layout and the remembered sort
+/// orders) is a cache: the pairs it returns depend only on the boxes and flags passed in,
+/// never on history, so snapshots, restores and different peers get identical pairs.
 #[derive(Clone, Debug)]
 pub struct BroadPhase<R: Real = Fx> {
-    /// Sweep axis (0 = x) of the lists.
-    axis: usize,
+    /// Axes and strips, once chosen.
+    layout: Option<Layout<R>>,
+    /// Number of present boxes when the layout was chosen.
+    layout_count: usize,
+    /// Entries in the fullest strip (both lists) on the first call with the layout.
+    layout_crowding: Option<usize>,
+    /// Entries in the fullest strip (both lists) on the last call.
+    crowding: usize,
     /// Membership of each box index ([`OUT`], [`AWAKE`] or [`RESTING`]) as of the last call.
     state: Vec<u8>,
+    /// Number of present boxes as of the last call.
+    count: usize,
     /// Awake boxes.
     awake: SortedList<R>,
     /// Resting boxes (present, not awake).
     resting: SortedList<R>,
-    /// Running maximum of the resting boxes' upper bounds along the sweep axis.
-    resting_prefix_hi: Vec<R>,
-    /// Maximum of the resting boxes' upper bounds along the sweep axis, per [`BLOCK`].
-    resting_block_hi: Vec<R>,
     /// Scratch: indices that joined the awake list this call.
     awake_added: Vec<u32>,
     /// Scratch: indices that joined the resting list this call.
     resting_added: Vec<u32>,
+    /// Scratch for sorting the pairs: counts per index.
+    counts: Vec<u32>,
+    /// Scratch for sorting the pairs: the pairs sorted by their second index.
+    pair_scratch: Vec<(u32, u32)>,
 }
 
 impl<R: Real> Default for BroadPhase<R> {
@@ -265,14 +599,18 @@ impl<R: Real> BroadPhase<R> {
     /// An empty broadphase with nothing cached.
     pub fn new() -> Self {
         Self {
-            axis: 0,
+            layout: None,
+            layout_count: 0,
+            layout_crowding: None,
+            crowding: 0,
             state: Vec::new(),
+            count: 0,
             awake: SortedList::default(),
             resting: SortedList::default(),
-            resting_prefix_hi: Vec::new(),
-            resting_block_hi: Vec::new(),
             awake_added: Vec::new(),
             resting_added: Vec::new(),
+            counts: Vec::new(),
+            pair_scratch: Vec::new(),
         }
     }
 
@@ -302,33 +640,50 @@ impl<R: Real> BroadPhase<R> {
         out.clear();
 
         let mut resting_dirty = self.update_membership(active, present);
-
-        let axis = self.axis;
-        if !resting_dirty {
-            resting_dirty = !self.resting.unchanged(boxes, axis);
+        let full = self.update_layout(boxes, present);
+        let layout = self.layout.as_ref().expect("a layout is chosen");
+        if !resting_dirty && !full {
+            resting_dirty = !self.resting.unchanged(boxes, layout.lanes);
         }
-        if resting_dirty {
-            self.resting
-                .refresh(boxes, &self.state, RESTING, &self.resting_added, axis);
-            self.build_resting_maxima();
+        if resting_dirty || full {
+            self.resting.refresh(
+                boxes,
+                &self.state,
+                RESTING,
+                &self.resting_added,
+                layout,
+                full,
+            );
         }
         self.awake
-            .refresh(boxes, &self.state, AWAKE, &self.awake_added, axis);
+            .refresh(boxes, &self.state, AWAKE, &self.awake_added, layout, full);
+        self.crowding = (0..layout.strips())
+            .map(|t| {
+                let size = |l: &SortedList<R>| (l.seg[t + 1] - l.seg[t]) as usize;
+                size(&self.awake) + size(&self.resting)
+            })
+            .max()
+            .unwrap_or(0);
+        if self.layout_crowding.is_none() {
+            self.layout_crowding = Some(self.crowding);
+        }
 
         self.sweep(out);
-        out.sort_unstable();
+        sort_pairs(out, n, &mut self.counts, &mut self.pair_scratch);
         debug_assert!(out.windows(2).all(|w| w[0] < w[1]));
     }
 
     /// Compares the wanted membership of every index (from the flags) with the remembered
     /// one and records the changes: indices joining a list go to the `*_added` scratch
-    /// lists, and the state is updated (the lists drop their leavers themselves, in
-    /// [`SortedList::refresh`]). Returns whether the resting list's membership changed.
+    /// lists, and the state and the present count are updated (the lists drop their
+    /// leavers themselves, in [`SortedList::refresh`]). Returns whether the resting list's
+    /// membership changed.
     fn update_membership(&mut self, active: &[bool], present: &[bool]) -> bool {
         let n = active.len();
         let mut resting_changed = false;
         if self.state.len() > n {
             resting_changed |= self.state[n..].contains(&RESTING);
+            self.count -= self.state[n..].iter().filter(|&&s| s != OUT).count();
             self.state.truncate(n);
         }
         self.state.resize(n, OUT);
@@ -358,6 +713,7 @@ impl<R: Real> BroadPhase<R> {
                     continue;
                 }
                 resting_changed |= *s == RESTING || w == RESTING;
+                self.count = self.count + usize::from(w != OUT) - usize::from(*s != OUT);
                 let i = (c * CHUNK + k) as u32;
                 match w {
                     AWAKE => self.awake_added.push(i),
@@ -370,55 +726,68 @@ impl<R: Real> BroadPhase<R> {
         resting_changed
     }
 
-    /// Rebuilds the running and per-block maxima of the resting list's upper bounds along
-    /// the sweep axis.
-    fn build_resting_maxima(&mut self) {
-        let hi = &self.resting.hi[0];
-        self.resting_prefix_hi.clear();
-        self.resting_block_hi.clear();
-        let mut running: Option<R> = None;
-        for &h in hi {
-            let m = running.map_or(h, |r| r.max(h));
-            running = Some(m);
-            self.resting_prefix_hi.push(m);
+    /// Chooses the layout on the first call, and again when the number of present boxes
+    /// has more than doubled or halved, or the fullest strip on the last call held more than
+    /// twice as many entries as on the first call with the layout. Returns true when the
+    /// layout changed, so that both lists must be rebuilt.
+    fn update_layout(&mut self, boxes: &[Aabb<R>], present: &[bool]) -> bool {
+        if let Some(layout) = &self.layout {
+            let grown = self.count > 2 * self.layout_count + 64;
+            let shrunk = 2 * self.count + 64 < self.layout_count;
+            let crowded = self
+                .layout_crowding
+                .is_some_and(|c| self.crowding > 2 * c + 64);
+            if !(grown || shrunk || crowded) {
+                return false;
+            }
+            let new = Layout::choose(boxes, present, self.count);
+            self.layout_count = self.count;
+            self.layout_crowding = None;
+            if new.same_as(layout) {
+                return false;
+            }
+            self.layout = Some(new);
+        } else {
+            self.layout = Some(Layout::choose(boxes, present, self.count));
+            self.layout_count = self.count;
+            self.layout_crowding = None;
         }
-        for block in hi.chunks(BLOCK) {
-            let m = block.iter().skip(1).fold(block[0], |m, &h| m.max(h));
-            self.resting_block_hi.push(m);
-        }
+        true
     }
 
     /// Finds the pairs awake × awake and awake × resting, unordered, into `out`.
+    ///
+    /// Awake × awake: a sweep within each strip, and a merged sweep of each strip with
+    /// each higher strip its boxes reach. Awake × resting: each strip of awake boxes against
+    /// the resting strips it reaches and the lower resting strips that reach it, by a
+    /// merged sweep, or by a probe per awake box when the awake boxes are few there.
     fn sweep(&self, out: &mut Vec<(u32, u32)>) {
-        let awake = &self.awake;
-        let resting = &self.resting;
-        let mut place = 0;
-        for i in 0..awake.len() {
-            let q = awake.probe(i);
-            let end = awake.window_end(i + 1, q.hi[0]);
-            awake.scan(i + 1..end, &q, out);
-            if resting.len() > 0 {
-                let key = (q.lo[0], q.index);
-                place += resting.keys[place..].partition_point(|k| key_less(k, &key));
-                self.probe_resting(&q, place, out);
+        let (awake, resting) = (&self.awake, &self.resting);
+        for t in 0..awake.seg.len().saturating_sub(1) {
+            let here = awake.strip(t);
+            if here.is_empty() {
+                continue;
             }
-        }
-    }
-
-    /// Tests an awake box against the resting list, where `place` is its position in the
-    /// resting list's key order: forward while the resting boxes start within its reach,
-    /// backward while some earlier resting box still reaches its lower bound.
-    fn probe_resting(&self, q: &Probe<R>, place: usize, out: &mut Vec<(u32, u32)>) {
-        let resting = &self.resting;
-        let end = resting.window_end(place, q.hi[0]);
-        resting.scan(place..end, q, out);
-        let mut k = place;
-        while k > 0 && self.resting_prefix_hi[k - 1] >= q.lo[0] {
-            let start = (k - 1) / BLOCK * BLOCK;
-            if self.resting_block_hi[start / BLOCK] >= q.lo[0] {
-                resting.scan(start..k, q, out);
+            self_sweep(here, out);
+            let reach = awake.reach[t] as usize;
+            for s in t + 1..=reach {
+                cross_sweep(here, awake.strip(s), out);
             }
-            k = start;
+            if resting.len() == 0 {
+                continue;
+            }
+            let below = (resting.down[t] as usize..t).filter(|&s| resting.reach[s] as usize >= t);
+            for s in below.chain(t..=reach) {
+                let there = resting.strip(s);
+                let probe_cost = here.len() * (there.len().max(1).ilog2() as usize + 8);
+                if probe_cost < here.len() + there.len() {
+                    for q in here {
+                        resting.probe_strip(s, q, out);
+                    }
+                } else {
+                    cross_sweep(here, there, out);
+                }
+            }
         }
     }
 }
