@@ -1,21 +1,631 @@
-//! Broadphase (placeholder until the broadphase branch lands).
+//! Sort-and-sweep broadphase: which pairs of bounding boxes overlap.
+//!
+//! [`BroadPhase::find_pairs`] takes every body's box and two flags (present, awake) and
+//! returns the overlapping pairs with at least one awake member, in ascending order. The
+//! answer is a pure function of the input; what the broadphase keeps between calls (a
+//! layout and the sort orders of the previous call) only makes the next call cheaper.
+//!
+//! # How it works
+//!
+//! **Layout.** Of the three axes, the *sweep axis* is the one along which the fewest boxes
+//! overlap, and the *strip axis* the next one (measured on a sample of up to [`SAMPLE`]
+//! boxes). The strip axis is cut into strips at boundaries taken from the sample's lower
+//! bounds, at least one median box size apart, so that a box usually spans one or two
+//! strips. Each box belongs to the strip of its lower bound along the strip axis. The
+//! layout is chosen on the first call and again when the number of boxes or the crowding
+//! of the fullest strip has grown a lot; it only uses comparisons and the box sizes.
+//!
+//! **Order.** Boxes are sorted by the total key (strip, lower bound along the sweep axis by
+//! [`Real::total_cmp`], index), the same on every machine. Awake boxes and resting boxes
+//! (present but not awake: static or sleeping) are kept in two separate sorted lists.
+//!
+//! **Pairs.** Two overlapping boxes in strips s ≤ t have t ≤ the strip of the first one's
+//! upper bound. So for each awake box `a` (strips `first..=last`):
+//!
+//! - awake boxes of its own strip: the classic sweep, forward from `a` while the lower
+//!   bound is within `a`'s upper bound;
+//! - awake boxes of the strips `first+1..=last`: a probe of each strip;
+//! - resting boxes of the strips `first..=last`, and of lower strips holding a resting box
+//!   that reaches up to `first`: a probe of each.
+//!
+//! A probe binary-searches `a`'s place in the strip, walks forward while the lower bounds
+//! are within reach, and walks backward, by blocks of [`BLOCK`], while the running
+//! maximum of the upper bounds (and the block's own maximum) still reaches `a`, so a long
+//! box (a ground slab) does not make every probe walk the whole strip. Every candidate gets
+//! the full test of [`Aabb::overlaps`]; each pair is met exactly once, and the list is
+//! sorted at the end.
+//!
+//! **Caching.** The resting list is re-sorted only when its membership or one of its boxes
+//! changes, which is checked bit for bit on each call. Both lists are re-sorted by
+//! insertion sort from the previous order, which is nearly sorted between frames; when
+//! many boxes join at once, or the insertion sort has moved too much, a full sort takes
+//! over. Either way the result is the unique order of the total keys. A resting world
+//! therefore costs the awake boxes' own sweep and probes, plus one pass over the flags and
+//! one comparison of the resting boxes.
+
+use core::cmp::Ordering;
 
 use super::aabb::Aabb;
 use crate::math::{Fx, Real};
 
-/// Brute force, for now.
-#[derive(Debug, Default)]
+/// Boxes per block of a sorted list; the backward walk skips a block whose boxes all end
+/// before the probe starts.
+const BLOCK: usize = 32;
+
+/// Largest number of boxes the layout is chosen from.
+const SAMPLE: usize = 1024;
+
+/// The layout aims at no more strips than this.
+const MAX_STRIPS: usize = 64;
+
+/// Membership of a box index: in neither list (absent, or beyond the input).
+const OUT: u8 = 0;
+/// Membership of a box index: in the awake list.
+const AWAKE: u8 = 1;
+/// Membership of a box index: in the resting list.
+const RESTING: u8 = 2;
+
+/// The total order of entries: strip, then lower bound along the sweep axis by
+/// [`Real::total_cmp`], then index.
+#[inline(always)]
+fn entry_cmp<R: Real>(a: &Entry<R>, b: &Entry<R>) -> Ordering {
+    a.strip
+        .cmp(&b.strip)
+        .then_with(|| a.bounds.lo[0].total_cmp(&b.bounds.lo[0]))
+        .then(a.index.cmp(&b.index))
+}
+
+/// True when entry `a` comes strictly before entry `b`.
+#[inline(always)]
+fn entry_less<R: Real>(a: &Entry<R>, b: &Entry<R>) -> bool {
+    entry_cmp(a, b) == Ordering::Less
+}
+
+/// Sorts `entries` in the total order, assuming that all but the last `fresh` of them are
+/// nearly sorted already. Insertion sort, unless `fresh` is a large share of the list or
+/// the insertion sort has moved more than a few times the list's length; then a full sort.
+/// Entries are unique (indices differ), so the result does not depend on the method.
+fn sort_entries<R: Real>(entries: &mut [Entry<R>], fresh: usize) {
+    let n = entries.len();
+    if fresh > n / 4 + 8 {
+        entries.sort_unstable_by(entry_cmp);
+        return;
+    }
+    let budget = 8 * n + 64;
+    let mut moves = 0;
+    for i in 1..n {
+        if !entry_less(&entries[i], &entries[i - 1]) {
+            continue;
+        }
+        let x = entries[i];
+        let mut j = i;
+        while j > 0 && entry_less(&x, &entries[j - 1]) {
+            entries[j] = entries[j - 1];
+            j -= 1;
+        }
+        entries[j] = x;
+        moves += i - j;
+        if moves > budget {
+            entries.sort_unstable_by(entry_cmp);
+            return;
+        }
+    }
+}
+
+/// Sorts the pairs in ascending order. Many pairs (compared with the number of boxes `n`)
+/// are sorted by two counting passes, by the second index and then stably by the first,
+/// in O(pairs + n); fewer by a comparison sort.
+fn sort_pairs(
+    pairs: &mut Vec<(u32, u32)>,
+    n: usize,
+    counts: &mut Vec<u32>,
+    scratch: &mut Vec<(u32, u32)>,
+) {
+    if pairs.len() < 256 || pairs.len() < n / 2 {
+        pairs.sort_unstable();
+        return;
+    }
+    scratch.clear();
+    scratch.resize(pairs.len(), (0, 0));
+    for pass in 0..2 {
+        let (from, to): (&Vec<(u32, u32)>, &mut Vec<(u32, u32)>) = if pass == 0 {
+            (&*pairs, &mut *scratch)
+        } else {
+            (&*scratch, &mut *pairs)
+        };
+        let digit = |p: &(u32, u32)| if pass == 0 { p.1 } else { p.0 } as usize;
+        counts.clear();
+        counts.resize(n + 1, 0);
+        for p in from {
+            counts[digit(p) + 1] += 1;
+        }
+        for k in 0..n {
+            counts[k + 1] += counts[k];
+        }
+        for p in from {
+            let slot = &mut counts[digit(p)];
+            to[*slot as usize] = *p;
+            *slot += 1;
+        }
+    }
+}
+
+/// True when the two values have the same bits.
+#[inline(always)]
+fn same<R: Real>(a: R, b: R) -> bool {
+    a.canonical_bits() == b.canonical_bits()
+}
+
+/// The axes and strips the boxes are sorted by.
+#[derive(Clone, Debug)]
+struct Layout<R: Real> {
+    /// Axis of each lane: sweep axis, strip axis, the remaining axis.
+    lanes: [usize; 3],
+    /// Strip boundaries along the strip axis, strictly increasing: strip `t` holds the
+    /// lower bounds `v` with `bounds[t - 1] ≤ v < bounds[t]`.
+    bounds: Vec<R>,
+}
+
+impl<R: Real> Layout<R> {
+    /// Number of strips.
+    #[inline]
+    fn strips(&self) -> usize {
+        self.bounds.len() + 1
+    }
+
+    /// The strip holding the value `v` of the strip axis.
+    #[inline(always)]
+    fn strip(&self, v: R) -> u32 {
+        self.bounds.partition_point(|b| *b <= v) as u32
+    }
+
+    /// [`Layout::strip`], checking the strip `hint` first (boxes seldom change strips).
+    #[inline(always)]
+    fn strip_near(&self, v: R, hint: u32) -> u32 {
+        let h = hint as usize;
+        let b = &self.bounds;
+        if h <= b.len() && (h == 0 || b[h - 1] <= v) && (h == b.len() || !(b[h] <= v)) {
+            hint
+        } else {
+            self.strip(v)
+        }
+    }
+
+    /// True when both layouts are the same bit for bit.
+    fn same_as(&self, other: &Self) -> bool {
+        self.lanes == other.lanes
+            && self.bounds.len() == other.bounds.len()
+            && self
+                .bounds
+                .iter()
+                .zip(&other.bounds)
+                .all(|(&a, &b)| same(a, b))
+    }
+
+    /// Chooses the layout for the present boxes from a sample of about [`SAMPLE`] of them
+    /// (all of them when there are no more). For each axis it counts the sampled pairs
+    /// overlapping along that axis; the sweep axis has the fewest, the strip axis the next
+    /// fewest (ties go to the lower axis). The strip boundaries are sampled lower bounds
+    /// along the strip axis, each at least the median sampled box size beyond the previous
+    /// one and with at least `max(4, samples / MAX_STRIPS)` sampled boxes between them.
+    fn choose(boxes: &[Aabb<R>], present: &[bool], count: usize) -> Self {
+        // A pseudo-random choice of indices (a multiplicative hash under a threshold), so
+        // that the sample does not alias with a regular arrangement of the bodies.
+        let threshold = if count <= SAMPLE {
+            u32::MAX
+        } else {
+            (u64::from(u32::MAX) * SAMPLE as u64 / count as u64) as u32
+        };
+        let sample: Vec<usize> = (0..boxes.len())
+            .filter(|&i| present[i] && (i as u32).wrapping_mul(0x9E37_79B9) <= threshold)
+            .collect();
+        let mut layout = Self {
+            lanes: [0, 1, 2],
+            bounds: Vec::new(),
+        };
+        if sample.len() < 2 {
+            return layout;
+        }
+        let spans = |axis: usize| {
+            let mut spans: Vec<(R, R)> = sample
+                .iter()
+                .map(|&i| (boxes[i].min[axis], boxes[i].max[axis]))
+                .collect();
+            spans.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+            spans
+        };
+        let mut overlaps = [0usize; 3];
+        for (axis, o) in overlaps.iter_mut().enumerate() {
+            let spans = spans(axis);
+            *o = spans
+                .iter()
+                .enumerate()
+                .map(|(i, &(_, hi))| {
+                    spans
+                        .partition_point(|&(lo, _)| lo <= hi)
+                        .saturating_sub(i + 1)
+                })
+                .sum();
+        }
+        let mut axes = [0, 1, 2];
+        axes.sort_by_key(|&a| (overlaps[a], a));
+        layout.lanes = axes;
+
+        let spans = spans(axes[1]);
+        let mut sizes: Vec<R> = spans.iter().map(|&(lo, hi)| hi - lo).collect();
+        let middle = sizes.len() / 2;
+        let size = *sizes.select_nth_unstable_by(middle, R::total_cmp).1;
+        let min_between = (spans.len() / MAX_STRIPS).max(4);
+        let mut last = spans[0].0;
+        let mut between = 0;
+        for &(lo, _) in &spans[1..] {
+            between += 1;
+            if between >= min_between && lo > last && lo >= last + size {
+                layout.bounds.push(lo);
+                last = lo;
+                between = 0;
+            }
+        }
+        layout
+    }
+}
+
+/// The components of `v` as an array, x first.
+#[inline(always)]
+fn components<R: Real>(v: &crate::math::Vec3<R>) -> [R; 3] {
+    [v.x, v.y, v.z]
+}
+
+/// A box with its bounds in lane order (sweep axis first, strip axis second).
+#[derive(Clone, Copy, Debug)]
+struct Bounds<R: Real> {
+    /// Lower bounds per lane.
+    lo: [R; 3],
+    /// Upper bounds per lane.
+    hi: [R; 3],
+}
+
+impl<R: Real> Bounds<R> {
+    /// The bounds of `b` in the lane order `lanes`.
+    #[inline(always)]
+    fn of(b: &Aabb<R>, lanes: [usize; 3]) -> Self {
+        let (min, max) = (components(&b.min), components(&b.max));
+        Self {
+            lo: [min[lanes[0]], min[lanes[1]], min[lanes[2]]],
+            hi: [max[lanes[0]], max[lanes[1]], max[lanes[2]]],
+        }
+    }
+
+    /// [`Aabb::overlaps`], without branches.
+    #[inline(always)]
+    fn overlaps(&self, o: &Self) -> bool {
+        (u8::from(self.lo[0] <= o.hi[0])
+            & u8::from(o.lo[0] <= self.hi[0])
+            & u8::from(self.lo[1] <= o.hi[1])
+            & u8::from(o.lo[1] <= self.hi[1])
+            & u8::from(self.lo[2] <= o.hi[2])
+            & u8::from(o.lo[2] <= self.hi[2]))
+            != 0
+    }
+
+    /// True when both are the same bit for bit.
+    #[inline(always)]
+    fn same_as(&self, o: &Self) -> bool {
+        (0..3).all(|l| same(self.lo[l], o.lo[l]) && same(self.hi[l], o.hi[l]))
+    }
+}
+
+/// One box of a sorted list: its bounds, index and strips. The list is sorted by
+/// [`entry_cmp`].
+#[derive(Clone, Copy, Debug)]
+struct Entry<R: Real> {
+    /// The bounds in lane order.
+    bounds: Bounds<R>,
+    /// Index of the box in the input.
+    index: u32,
+    /// Strip of the lower bound along the strip axis.
+    strip: u32,
+    /// Strip of the upper bound along the strip axis (at least `strip`).
+    last: u32,
+}
+
+impl<R: Real> Entry<R> {
+    /// Fills in the bounds and strips of box `index` of `boxes`; the strips already in the
+    /// entry serve as hints.
+    #[inline(always)]
+    fn set(&mut self, boxes: &[Aabb<R>], index: u32, layout: &Layout<R>) {
+        self.bounds = Bounds::of(&boxes[index as usize], layout.lanes);
+        self.index = index;
+        self.strip = layout.strip_near(self.bounds.lo[1], self.strip);
+        self.last = layout
+            .strip_near(self.bounds.hi[1], self.last)
+            .max(self.strip);
+    }
+}
+
+/// A sorted list of boxes, with per-strip and per-block summaries for the probes.
+#[derive(Clone, Debug, Default)]
+struct SortedList<R: Real> {
+    /// The boxes, in order.
+    entries: Vec<Entry<R>>,
+    /// Start of each strip's run of entries, and the end: `strips + 1` offsets.
+    seg: Vec<u32>,
+    /// Running maximum of the upper bound along the sweep axis within each strip.
+    prefix_hi: Vec<R>,
+    /// Maximum of the upper bound along the sweep axis per [`BLOCK`] of entries.
+    block_hi: Vec<R>,
+    /// Per strip, the highest strip reached by the upper bound of one of its boxes (at
+    /// least the strip itself).
+    reach: Vec<u32>,
+    /// Per strip `s`, the lowest strip `t ≤ s` whose reach is at least `s`.
+    down: Vec<u32>,
+}
+
+impl<R: Real> SortedList<R> {
+    /// Number of boxes in the list.
+    #[inline]
+    fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Brings the list up to date: keeps the entries whose index still has membership
+    /// `tag` in `state`, refreshes their bounds from `boxes`, appends `added`, re-sorts
+    /// (from the previous order unless `full`) and rebuilds the summaries.
+    fn refresh(
+        &mut self,
+        boxes: &[Aabb<R>],
+        state: &[u8],
+        tag: u8,
+        added: &[u32],
+        layout: &Layout<R>,
+        full: bool,
+    ) {
+        let n = boxes.len();
+        self.entries.retain_mut(|e| {
+            let i = e.index;
+            let keep = (i as usize) < n && state[i as usize] == tag;
+            if keep {
+                e.set(boxes, i, layout);
+            }
+            keep
+        });
+        self.entries.extend(added.iter().map(|&i| {
+            let mut e = Entry {
+                bounds: Bounds::of(&boxes[i as usize], layout.lanes),
+                index: i,
+                strip: 0,
+                last: 0,
+            };
+            e.set(boxes, i, layout);
+            e
+        }));
+        let fresh = if full { self.len() } else { added.len() };
+        sort_entries(&mut self.entries, fresh);
+        self.summarize(layout);
+    }
+
+    /// Rebuilds the per-strip and per-block summaries from the sorted entries.
+    fn summarize(&mut self, layout: &Layout<R>) {
+        let strips = layout.strips();
+        self.prefix_hi.clear();
+        self.seg.clear();
+        self.seg.resize(strips + 1, 0);
+        self.reach.clear();
+        self.reach.extend(0..strips as u32);
+        let mut running = R::MIN;
+        let mut strip = u32::MAX;
+        for e in &self.entries {
+            if e.strip != strip {
+                strip = e.strip;
+                running = e.bounds.hi[0];
+            }
+            running = running.max(e.bounds.hi[0]);
+            self.prefix_hi.push(running);
+            self.seg[e.strip as usize + 1] += 1;
+            let reach = &mut self.reach[e.strip as usize];
+            *reach = (*reach).max(e.last);
+        }
+        for t in 0..strips {
+            self.seg[t + 1] += self.seg[t];
+        }
+        self.block_hi.clear();
+        self.block_hi
+            .extend(self.entries.chunks(BLOCK).map(|block| {
+                block
+                    .iter()
+                    .skip(1)
+                    .fold(block[0].bounds.hi[0], |m, e| m.max(e.bounds.hi[0]))
+            }));
+        self.down.clear();
+        self.down.extend(0..strips as u32);
+        for t in 0..strips {
+            for s in t + 1..=self.reach[t] as usize {
+                self.down[s] = self.down[s].min(t as u32);
+            }
+        }
+    }
+
+    /// True when every box of the list is bit for bit the box at its index in `boxes`
+    /// (every index is assumed to be in range).
+    fn unchanged(&self, boxes: &[Aabb<R>], lanes: [usize; 3]) -> bool {
+        self.entries.iter().all(|e| {
+            e.bounds
+                .same_as(&Bounds::of(&boxes[e.index as usize], lanes))
+        })
+    }
+
+    /// The entries of strip `t`.
+    #[inline(always)]
+    fn strip(&self, t: usize) -> &[Entry<R>] {
+        &self.entries[self.seg[t] as usize..self.seg[t + 1] as usize]
+    }
+
+    /// Every box of strip `t` that overlaps `q` (a box of the other list): a binary search
+    /// for `q`'s place in the strip, then forward while the lower bounds are within `q`'s
+    /// reach, and backward over the entries from the first one whose running maximum of the
+    /// upper bounds reaches `q`, skipping the blocks that all end before it.
+    fn probe_strip(&self, t: usize, q: &Entry<R>, out: &mut Vec<(u32, u32)>) {
+        let (start, end) = (self.seg[t] as usize, self.seg[t + 1] as usize);
+        let (lo, hi) = (q.bounds.lo[0], q.bounds.hi[0]);
+        let place = start + self.entries[start..end].partition_point(|e| comes_before(e, q));
+        let after = &self.entries[place..end];
+        scan(&after[..window(after, hi)], q, out);
+        let mut k = start + self.prefix_hi[start..place].partition_point(|h| *h < lo);
+        while k < place {
+            let block = k / BLOCK;
+            let to = place.min((block + 1) * BLOCK);
+            if self.block_hi[block] >= lo {
+                scan(&self.entries[k..to], q, out);
+            }
+            k = to;
+        }
+    }
+}
+
+/// True when `a` comes before `b` in the order within a strip: lower bound along the sweep
+/// axis by [`Real::total_cmp`], then index.
+#[inline(always)]
+fn comes_before<R: Real>(a: &Entry<R>, b: &Entry<R>) -> bool {
+    match a.bounds.lo[0].total_cmp(&b.bounds.lo[0]) {
+        Ordering::Less => true,
+        Ordering::Greater => false,
+        Ordering::Equal => a.index < b.index,
+    }
+}
+
+/// The length of the forward window of `entries` (sorted): how many of the first entries
+/// have their lower bound along the sweep axis within `reach`.
+#[inline(always)]
+fn window<R: Real>(entries: &[Entry<R>], reach: R) -> usize {
+    entries
+        .iter()
+        .take_while(|e| e.bounds.lo[0] <= reach)
+        .count()
+}
+
+/// Tests the box `q` against `entries` with the full overlap test and pushes each
+/// overlapping pair as (smaller, larger index).
+///
+/// Branch-free: each chunk of entries is filtered into a small buffer by a running count
+/// (whether a candidate overlaps is not predictable, and a branch on it would cost more
+/// than the test), then the hits are pushed.
+#[inline(always)]
+fn scan<R: Real>(entries: &[Entry<R>], q: &Entry<R>, out: &mut Vec<(u32, u32)>) {
+    const CHUNK: usize = 64;
+    let mut hits = [0u32; CHUNK];
+    for chunk in entries.chunks(CHUNK) {
+        let mut count = 0;
+        for e in chunk {
+            hits[count % CHUNK] = e.index;
+            count += usize::from(e.bounds.overlaps(&q.bounds));
+        }
+        for &other in &hits[..count] {
+            out.push(if q.index < other {
+                (q.index, other)
+            } else {
+                (other, q.index)
+            });
+        }
+    }
+}
+
+/// Every overlapping pair within one strip (sorted): each box against the boxes after it
+/// whose lower bound is within its reach.
+fn self_sweep<R: Real>(entries: &[Entry<R>], out: &mut Vec<(u32, u32)>) {
+    for (i, q) in entries.iter().enumerate() {
+        let after = &entries[i + 1..];
+        scan(&after[..window(after, q.bounds.hi[0])], q, out);
+    }
+}
+
+/// Every overlapping pair between two sorted runs of different boxes: a merged sweep in
+/// which each box, when its turn comes, is tested against the boxes of the other run that
+/// come after it and start within its reach. Each pair overlapping along the sweep axis is
+/// tested once, by whichever of the two comes first.
+fn cross_sweep<R: Real>(xs: &[Entry<R>], ys: &[Entry<R>], out: &mut Vec<(u32, u32)>) {
+    let (mut i, mut j) = (0, 0);
+    while i < xs.len() && j < ys.len() {
+        if comes_before(&xs[i], &ys[j]) {
+            let (q, rest) = (&xs[i], &ys[j..]);
+            scan(&rest[..window(rest, q.bounds.hi[0])], q, out);
+            i += 1;
+        } else {
+            let (q, rest) = (&ys[j], &xs[i..]);
+            scan(&rest[..window(rest, q.bounds.hi[0])], q, out);
+            j += 1;
+        }
+    }
+}
+
+/// Sort-and-sweep broadphase. Its internal state (the layout and the remembered sort
+/// orders) is a cache: the pairs it returns depend only on the boxes and flags passed in,
+/// never on history, so snapshots, restores and different peers get identical pairs.
+#[derive(Clone, Debug)]
 pub struct BroadPhase<R: Real = Fx> {
-    _marker: core::marker::PhantomData<R>,
+    /// Axes and strips, once chosen.
+    layout: Option<Layout<R>>,
+    /// Number of present boxes when the layout was chosen.
+    layout_count: usize,
+    /// Entries in the fullest strip (both lists) on the first call with the layout.
+    layout_crowding: Option<usize>,
+    /// Entries in the fullest strip (both lists) on the last call.
+    crowding: usize,
+    /// Membership of each box index ([`OUT`], [`AWAKE`] or [`RESTING`]) as of the last call.
+    state: Vec<u8>,
+    /// Number of present boxes as of the last call.
+    count: usize,
+    /// Awake boxes.
+    awake: SortedList<R>,
+    /// Resting boxes (present, not awake).
+    resting: SortedList<R>,
+    /// Scratch: indices that joined the awake list this call.
+    awake_added: Vec<u32>,
+    /// Scratch: indices that joined the resting list this call.
+    resting_added: Vec<u32>,
+    /// Scratch for sorting the pairs: counts per index.
+    counts: Vec<u32>,
+    /// Scratch for sorting the pairs: the pairs sorted by their second index.
+    pair_scratch: Vec<(u32, u32)>,
+}
+
+impl<R: Real> Default for BroadPhase<R> {
+    /// An empty broadphase; see [`BroadPhase::new`].
+    fn default() -> Self {
+        Self::new()
+    }
 }
 
 impl<R: Real> BroadPhase<R> {
-    /// A broadphase with nothing cached.
+    /// An empty broadphase with nothing cached.
     pub fn new() -> Self {
-        Self::default()
+        Self {
+            layout: None,
+            layout_count: 0,
+            layout_crowding: None,
+            crowding: 0,
+            state: Vec::new(),
+            count: 0,
+            awake: SortedList::default(),
+            resting: SortedList::default(),
+            awake_added: Vec::new(),
+            resting_added: Vec::new(),
+            counts: Vec::new(),
+            pair_scratch: Vec::new(),
+        }
     }
 
-    /// Every overlapping pair with at least one active box, ascending.
+    /// Every pair `(a, b)`, `a < b` (indices into `boxes`), whose boxes overlap
+    /// ([`Aabb::overlaps`], touching included) and where at least one of the two is
+    /// `active[i]` (awake); pairs of two inactive boxes (static or sleeping) are never
+    /// reported. Boxes with `present[i] == false` (empty slots, planes) are skipped.
+    /// `out` is cleared and filled in ascending `(a, b)` order, without duplicates.
+    ///
+    /// The result depends only on the arguments, not on earlier calls.
+    ///
+    /// # Panics
+    ///
+    /// If `active` or `present` is not as long as `boxes`, or there are more than
+    /// `u32::MAX` boxes.
     pub fn find_pairs(
         &mut self,
         boxes: &[Aabb<R>],
@@ -23,15 +633,159 @@ impl<R: Real> BroadPhase<R> {
         present: &[bool],
         out: &mut Vec<(u32, u32)>,
     ) {
+        let n = boxes.len();
+        assert_eq!(active.len(), n, "find_pairs: one active flag per box");
+        assert_eq!(present.len(), n, "find_pairs: one present flag per box");
+        assert!(u32::try_from(n).is_ok(), "find_pairs: too many boxes");
         out.clear();
-        for a in 0..boxes.len() {
-            for b in a + 1..boxes.len() {
-                if present[a]
-                    && present[b]
-                    && (active[a] || active[b])
-                    && boxes[a].overlaps(&boxes[b])
-                {
-                    out.push((a as u32, b as u32));
+
+        let mut resting_dirty = self.update_membership(active, present);
+        let full = self.update_layout(boxes, present);
+        let layout = self.layout.as_ref().expect("a layout is chosen");
+        if !resting_dirty && !full {
+            resting_dirty = !self.resting.unchanged(boxes, layout.lanes);
+        }
+        if resting_dirty || full {
+            self.resting.refresh(
+                boxes,
+                &self.state,
+                RESTING,
+                &self.resting_added,
+                layout,
+                full,
+            );
+        }
+        self.awake
+            .refresh(boxes, &self.state, AWAKE, &self.awake_added, layout, full);
+        self.crowding = (0..layout.strips())
+            .map(|t| {
+                let size = |l: &SortedList<R>| (l.seg[t + 1] - l.seg[t]) as usize;
+                size(&self.awake) + size(&self.resting)
+            })
+            .max()
+            .unwrap_or(0);
+        if self.layout_crowding.is_none() {
+            self.layout_crowding = Some(self.crowding);
+        }
+
+        self.sweep(out);
+        sort_pairs(out, n, &mut self.counts, &mut self.pair_scratch);
+        debug_assert!(out.windows(2).all(|w| w[0] < w[1]));
+    }
+
+    /// Compares the wanted membership of every index (from the flags) with the remembered
+    /// one and records the changes: indices joining a list go to the `*_added` scratch
+    /// lists, and the state and the present count are updated (the lists drop their
+    /// leavers themselves, in [`SortedList::refresh`]). Returns whether the resting list's
+    /// membership changed.
+    fn update_membership(&mut self, active: &[bool], present: &[bool]) -> bool {
+        let n = active.len();
+        let mut resting_changed = false;
+        if self.state.len() > n {
+            resting_changed |= self.state[n..].contains(&RESTING);
+            self.count -= self.state[n..].iter().filter(|&&s| s != OUT).count();
+            self.state.truncate(n);
+        }
+        self.state.resize(n, OUT);
+        self.awake_added.clear();
+        self.resting_added.clear();
+
+        // 1 when present and awake, 2 when present and resting, 0 when absent.
+        let want = |a: bool, p: bool| u8::from(p) * (1 + u8::from(!a));
+        const CHUNK: usize = 64;
+        let chunks = self
+            .state
+            .chunks_mut(CHUNK)
+            .zip(active.chunks(CHUNK))
+            .zip(present.chunks(CHUNK));
+        for (c, ((state, active), present)) in chunks.enumerate() {
+            let differs = state
+                .iter()
+                .zip(active)
+                .zip(present)
+                .fold(false, |d, ((&s, &a), &p)| d | (s != want(a, p)));
+            if !differs {
+                continue;
+            }
+            for (k, ((s, &a), &p)) in state.iter_mut().zip(active).zip(present).enumerate() {
+                let w = want(a, p);
+                if *s == w {
+                    continue;
+                }
+                resting_changed |= *s == RESTING || w == RESTING;
+                self.count = self.count + usize::from(w != OUT) - usize::from(*s != OUT);
+                let i = (c * CHUNK + k) as u32;
+                match w {
+                    AWAKE => self.awake_added.push(i),
+                    RESTING => self.resting_added.push(i),
+                    _ => {}
+                }
+                *s = w;
+            }
+        }
+        resting_changed
+    }
+
+    /// Chooses the layout on the first call, and again when the number of present boxes
+    /// has more than doubled or halved, or the fullest strip on the last call held more than
+    /// twice as many entries as on the first call with the layout. Returns true when the
+    /// layout changed, so that both lists must be rebuilt.
+    fn update_layout(&mut self, boxes: &[Aabb<R>], present: &[bool]) -> bool {
+        if let Some(layout) = &self.layout {
+            let grown = self.count > 2 * self.layout_count + 64;
+            let shrunk = 2 * self.count + 64 < self.layout_count;
+            let crowded = self
+                .layout_crowding
+                .is_some_and(|c| self.crowding > 2 * c + 64);
+            if !(grown || shrunk || crowded) {
+                return false;
+            }
+            let new = Layout::choose(boxes, present, self.count);
+            self.layout_count = self.count;
+            self.layout_crowding = None;
+            if new.same_as(layout) {
+                return false;
+            }
+            self.layout = Some(new);
+        } else {
+            self.layout = Some(Layout::choose(boxes, present, self.count));
+            self.layout_count = self.count;
+            self.layout_crowding = None;
+        }
+        true
+    }
+
+    /// Finds the pairs awake × awake and awake × resting, unordered, into `out`.
+    ///
+    /// Awake × awake: a sweep within each strip, and a merged sweep of each strip with
+    /// each higher strip its boxes reach. Awake × resting: each strip of awake boxes against
+    /// the resting strips it reaches and the lower resting strips that reach it, by a
+    /// merged sweep, or by a probe per awake box when the awake boxes are few there.
+    fn sweep(&self, out: &mut Vec<(u32, u32)>) {
+        let (awake, resting) = (&self.awake, &self.resting);
+        for t in 0..awake.seg.len().saturating_sub(1) {
+            let here = awake.strip(t);
+            if here.is_empty() {
+                continue;
+            }
+            self_sweep(here, out);
+            let reach = awake.reach[t] as usize;
+            for s in t + 1..=reach {
+                cross_sweep(here, awake.strip(s), out);
+            }
+            if resting.len() == 0 {
+                continue;
+            }
+            let below = (resting.down[t] as usize..t).filter(|&s| resting.reach[s] as usize >= t);
+            for s in below.chain(t..=reach) {
+                let there = resting.strip(s);
+                let probe_cost = here.len() * (there.len().max(1).ilog2() as usize + 8);
+                if probe_cost < here.len() + there.len() {
+                    for q in here {
+                        resting.probe_strip(s, q, out);
+                    }
+                } else {
+                    cross_sweep(here, there, out);
                 }
             }
         }

@@ -1,0 +1,228 @@
+//! Broadphase cost: `BroadPhase::find_pairs` on the scenes of the Rapier comparison, in
+//! I32F32, with a warm cache (the same boxes as the previous call, as in a resting frame)
+//! unless the name says `moving`.
+//!
+//! - `lattice_4096`: 4096 spheres of radius 0.5 on a 16×16×16 lattice of spacing 1.1 m, all
+//!   awake (no pair overlaps: the sweep's worst case, 16 equal lower bounds per axis).
+//! - `lattice_4096_10pct_awake`: the same with 90 % of the bodies asleep.
+//! - `lattice_4096_moving`: all awake, alternating between two jittered copies of the
+//!   lattice, so every call re-sorts.
+//! - `pile_4096`: the spheres packed in a 20×20 m box, 400 per layer, ~26 000 pairs; also
+//!   `pile_4096_10pct_awake`.
+//! - `pyramid_210`: a 20-box-wide 2D pyramid of unit boxes, all touching their neighbours.
+//! - `falling_1000`: 1000 spheres on a jittered 10×10×10 lattice, next to a brute-force
+//!   O(n²) pass over the same boxes (`falling_1000_brute_force`).
+//!
+//! After criterion's report, the brute-force / broadphase time ratio at n = 1000 is measured
+//! again in this run and printed.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use fixstep::math::{Fx, Pcg32, Vec3};
+use fixstep::rigid::Aabb;
+use fixstep::rigid::broadphase::BroadPhase;
+
+/// Boxes and flags of one frame.
+struct Scene {
+    boxes: Vec<Aabb<Fx>>,
+    active: Vec<bool>,
+    present: Vec<bool>,
+}
+
+impl Scene {
+    fn new(boxes: Vec<Aabb<Fx>>) -> Self {
+        let n = boxes.len();
+        Self {
+            boxes,
+            active: vec![true; n],
+            present: vec![true; n],
+        }
+    }
+
+    /// Puts every body but each tenth one to sleep.
+    fn tenth_awake(mut self) -> Self {
+        for (i, a) in self.active.iter_mut().enumerate() {
+            *a = i % 10 == 0;
+        }
+        self
+    }
+}
+
+/// The box of a sphere of radius `r` at `c`.
+fn sphere(c: [f64; 3], r: f64) -> Aabb<Fx> {
+    Aabb {
+        min: Vec3::from_f64(c[0] - r, c[1] - r, c[2] - r),
+        max: Vec3::from_f64(c[0] + r, c[1] + r, c[2] + r),
+    }
+}
+
+/// Spheres of radius 0.5 on a `side`³ lattice of spacing `spacing`, each moved by up to
+/// ±`jitter` per axis.
+fn lattice(side: usize, spacing: f64, jitter: f64, seed: u64) -> Vec<Aabb<Fx>> {
+    let mut rng = Pcg32::new(seed, 1);
+    let mut out = Vec::new();
+    for x in 0..side {
+        for y in 0..side {
+            for z in 0..side {
+                let c = [x, y, z].map(|k| k as f64 * spacing + rng.range(-jitter, jitter));
+                out.push(sphere(c, 0.5));
+            }
+        }
+    }
+    out
+}
+
+/// 4096 spheres of radius 0.5 piled in a 20×20 m box: layers of 20×20 at spacing 1 m, each
+/// jittered by ±0.05 m, so neighbours touch or overlap about half the time.
+fn pile() -> Vec<Aabb<Fx>> {
+    let mut rng = Pcg32::new(9, 2);
+    (0..4096)
+        .map(|i| {
+            let (layer, cell) = (i / 400, i % 400);
+            let c = [cell % 20, layer, cell / 20].map(|k| k as f64 + 0.5 + rng.range(-0.05, 0.05));
+            sphere(c, 0.5)
+        })
+        .collect()
+}
+
+/// A 2D pyramid of unit boxes, 20 at the base: 210 boxes, each touching its neighbours.
+fn pyramid() -> Vec<Aabb<Fx>> {
+    let mut out = Vec::new();
+    for layer in 0..20 {
+        for k in 0..20 - layer {
+            let x = layer as f64 * 0.5 + k as f64;
+            let y = layer as f64;
+            out.push(Aabb {
+                min: Vec3::from_f64(x, y, 0.0),
+                max: Vec3::from_f64(x + 1.0, y + 1.0, 1.0),
+            });
+        }
+    }
+    out
+}
+
+/// Every pair of overlapping boxes, all awake, by testing all n(n−1)/2 of them.
+fn brute_force(boxes: &[Aabb<Fx>], out: &mut Vec<(u32, u32)>) {
+    out.clear();
+    for a in 0..boxes.len() {
+        for b in a + 1..boxes.len() {
+            if boxes[a].overlaps(&boxes[b]) {
+                out.push((a as u32, b as u32));
+            }
+        }
+    }
+}
+
+/// Benchmarks `find_pairs` on `scene`, warm: the cache holds the same frame.
+fn bench_scene(
+    c: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    name: &str,
+    scene: &Scene,
+) {
+    let mut bp = BroadPhase::new();
+    let mut out = Vec::new();
+    bp.find_pairs(&scene.boxes, &scene.active, &scene.present, &mut out);
+    println!("{name}: {} boxes, {} pairs", scene.boxes.len(), out.len());
+    c.bench_function(name, |b| {
+        b.iter(|| {
+            bp.find_pairs(
+                black_box(&scene.boxes),
+                &scene.active,
+                &scene.present,
+                &mut out,
+            );
+            black_box(out.len())
+        })
+    });
+}
+
+fn broadphase(c: &mut Criterion) {
+    let mut group = c.benchmark_group("broadphase");
+    group.sample_size(30);
+
+    let lattice_scene = Scene::new(lattice(16, 1.1, 0.0, 1));
+    bench_scene(&mut group, "lattice_4096", &lattice_scene);
+    bench_scene(
+        &mut group,
+        "lattice_4096_10pct_awake",
+        &Scene::new(lattice(16, 1.1, 0.0, 1)).tenth_awake(),
+    );
+    {
+        let frames = [
+            Scene::new(lattice(16, 1.1, 0.02, 2)),
+            Scene::new(lattice(16, 1.1, 0.02, 3)),
+        ];
+        let mut bp = BroadPhase::new();
+        let mut out = Vec::new();
+        let mut k = 0;
+        group.bench_function("lattice_4096_moving", |b| {
+            b.iter(|| {
+                k ^= 1;
+                let s = &frames[k];
+                bp.find_pairs(black_box(&s.boxes), &s.active, &s.present, &mut out);
+                black_box(out.len())
+            })
+        });
+    }
+    bench_scene(&mut group, "pile_4096", &Scene::new(pile()));
+    bench_scene(
+        &mut group,
+        "pile_4096_10pct_awake",
+        &Scene::new(pile()).tenth_awake(),
+    );
+    bench_scene(&mut group, "pyramid_210", &Scene::new(pyramid()));
+
+    let falling = Scene::new(lattice(10, 1.2, 0.2, 4));
+    bench_scene(&mut group, "falling_1000", &falling);
+    let mut out = Vec::new();
+    group.bench_function("falling_1000_brute_force", |b| {
+        b.iter(|| {
+            brute_force(black_box(&falling.boxes), &mut out);
+            black_box(out.len())
+        })
+    });
+    group.finish();
+
+    ratio_at_1000(&falling);
+}
+
+/// Times the broadphase and the brute force on the same 1000 boxes, alternating, and prints
+/// the fastest of each (the least disturbed by other processes) and their ratio.
+fn ratio_at_1000(scene: &Scene) {
+    let mut bp = BroadPhase::new();
+    let (mut fast, mut slow) = (Vec::new(), Vec::new());
+    let mut out = Vec::new();
+    bp.find_pairs(&scene.boxes, &scene.active, &scene.present, &mut out);
+    let mut check = Vec::new();
+    brute_force(&scene.boxes, &mut check);
+    assert_eq!(out, check, "broadphase and brute force disagree");
+    for _ in 0..31 {
+        let t = Instant::now();
+        for _ in 0..20 {
+            bp.find_pairs(
+                black_box(&scene.boxes),
+                &scene.active,
+                &scene.present,
+                &mut out,
+            );
+        }
+        fast.push(t.elapsed().as_secs_f64() / 20.0);
+        let t = Instant::now();
+        brute_force(black_box(&scene.boxes), &mut out);
+        slow.push(t.elapsed().as_secs_f64());
+    }
+    fast.sort_by(f64::total_cmp);
+    slow.sort_by(f64::total_cmp);
+    let (f, s) = (fast[0], slow[0]);
+    println!(
+        "broadphase/falling_1000: sweep {:.1} µs, brute force {:.1} µs, brute force / sweep = {:.1}×",
+        f * 1e6,
+        s * 1e6,
+        s / f
+    );
+}
+
+criterion_group!(benches, broadphase);
+criterion_main!(benches);
