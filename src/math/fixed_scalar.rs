@@ -344,6 +344,20 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
         ))
     }
 
+    /// The three exact 128-bit products summed, then rounded once to nearest (ties toward
+    /// +∞) and saturated and counted once. Exact unless two products are both near 2¹²⁶,
+    /// which needs operands near the ends of the range; the 128-bit sum then saturates too.
+    #[inline(always)]
+    fn dot3(a: [Self; 3], b: [Self; 3]) -> Self {
+        let product = |i: usize| a[i].to_bits() as i128 * b[i].to_bits() as i128;
+        let sum = product(0)
+            .saturating_add(product(1))
+            .saturating_add(product(2));
+        Self::from_bits(saturate_i128(
+            sum.saturating_add(1i128 << (Self::FRAC_BITS - 1)) >> Self::FRAC_BITS,
+        ))
+    }
+
     /// `(a·c + 2^(F−1)) >> F` without a range check or a 128-bit shift. A [`Fraction`] has
     /// 0 ≤ c < 2^(F−1) as bits, so c' = c·2^(64−F) < 2⁶³ is an `i64`, and
     /// round(a·c'/2⁶⁴) = round(a·c/2^F) (`round_mul_high`) is the checked `a * c`, which

@@ -132,6 +132,15 @@ pub trait Real:
         self + a * b
     }
 
+    /// a₀b₀ + a₁b₁ + a₂b₂ for the rigid-body solver. The default is exactly the operator
+    /// expression `a[0] * b[0] + a[1] * b[1] + a[2] * b[2]`; a format may sum the exact
+    /// products and round once, which is faster and more accurate but not bit-identical to
+    /// the operators (the fixed-point formats do).
+    #[inline(always)]
+    fn dot3(a: [Self; 3], b: [Self; 3]) -> Self {
+        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    }
+
     /// `self * c` for a [`Fraction`] c (0 ≤ c < 1/2), which is never out of range. The
     /// default is exactly `self * c`; a format may skip the range check.
     #[inline(always)]

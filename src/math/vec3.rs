@@ -57,6 +57,13 @@ impl<R: Real> Vec3<R> {
         self.x * other.x + self.y * other.y + self.z * other.z
     }
 
+    /// a·b with the products summed exactly and rounded once ([`Real::dot3`]): for the
+    /// rigid-body solver, whose results need not match [`Vec3::dot`] bit for bit.
+    #[inline(always)]
+    pub fn dot_fused(self, other: Self) -> R {
+        R::dot3(self.to_array(), other.to_array())
+    }
+
     /// a × b.
     #[inline(always)]
     pub fn cross(self, other: Self) -> Self {

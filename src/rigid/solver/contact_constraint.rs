@@ -58,6 +58,11 @@ pub(crate) struct ContactConstraint<R: Real> {
     pub contact: u32,
     normal: Vec3<R>,
     tangents: [Vec3<R>; 2],
+    /// n/m_a, n/m_b, t/m_a and t/m_b: the velocity change per unit impulse, 1/kg.
+    normal_a: Vec3<R>,
+    normal_b: Vec3<R>,
+    tangents_a: [Vec3<R>; 2],
+    tangents_b: [Vec3<R>; 2],
     friction: R,
     restitution: R,
     /// Contacts with a static or kinematic body are twice as stiff.
@@ -132,6 +137,10 @@ pub(crate) fn prepare<R: Real>(
         contact: index,
         normal: n,
         tangents,
+        normal_a: n * ba.inv_mass,
+        normal_b: n * bb.inv_mass,
+        tangents_a: tangents.map(|t| t * ba.inv_mass),
+        tangents_b: tangents.map(|t| t * bb.inv_mass),
         friction,
         restitution,
         rigid_partner: ba.inv_mass == R::ZERO || bb.inv_mass == R::ZERO,
@@ -172,20 +181,42 @@ impl<R: Real> ContactConstraint<R> {
     pub fn warm_start(&self, bodies: &mut [SolverBody<R>]) {
         let (ba, bb) = pair(bodies, self.a, self.b);
         for cp in &self.points[..self.count] {
-            let p = self.normal * cp.normal_impulse
-                + self.tangents[0] * cp.tangent_impulse[0]
-                + self.tangents[1] * cp.tangent_impulse[1];
-            let ang_a = cp.in_a * cp.normal_impulse
-                + cp.it_a[0] * cp.tangent_impulse[0]
-                + cp.it_a[1] * cp.tangent_impulse[1];
-            let ang_b = cp.in_b * cp.normal_impulse
-                + cp.it_b[0] * cp.tangent_impulse[0]
-                + cp.it_b[1] * cp.tangent_impulse[1];
-            ba.v -= p * ba.inv_mass;
-            ba.w -= ang_a;
-            bb.v += p * bb.inv_mass;
-            bb.w += ang_b;
+            let [t0, t1] = cp.tangent_impulse;
+            if cp.normal_impulse == R::ZERO && t0 == R::ZERO && t1 == R::ZERO {
+                continue;
+            }
+            let n = cp.normal_impulse;
+            ba.v -= self.normal_a * n + self.tangents_a[0] * t0 + self.tangents_a[1] * t1;
+            ba.w -= cp.in_a * n + cp.it_a[0] * t0 + cp.it_a[1] * t1;
+            bb.v += self.normal_b * n + self.tangents_b[0] * t0 + self.tangents_b[1] * t1;
+            bb.w += cp.in_b * n + cp.it_b[0] * t0 + cp.it_b[1] * t1;
         }
+    }
+
+    /// The relative normal velocity of point `cp`, v_n (m/s).
+    #[inline(always)]
+    fn normal_velocity(
+        &self,
+        cp: &ConstraintPoint<R>,
+        ba: &SolverBody<R>,
+        bb: &SolverBody<R>,
+    ) -> R {
+        (bb.v - ba.v).dot_fused(self.normal) + bb.w.dot_fused(cp.rn_b) - ba.w.dot_fused(cp.rn_a)
+    }
+
+    /// Applies the normal impulse `applied` (N·s) at point `cp`.
+    #[inline(always)]
+    fn apply_normal(
+        &self,
+        cp: &ConstraintPoint<R>,
+        ba: &mut SolverBody<R>,
+        bb: &mut SolverBody<R>,
+        applied: R,
+    ) {
+        ba.v -= self.normal_a * applied;
+        ba.w -= cp.in_a * applied;
+        bb.v += self.normal_b * applied;
+        bb.w += cp.in_b * applied;
     }
 
     /// One Gauss–Seidel pass over the points: the normal impulses, then friction.
@@ -198,7 +229,8 @@ impl<R: Real> ContactConstraint<R> {
     ///
     /// Friction: each tangent's impulse −m_t v_t is added, then the accumulated tangent
     /// impulse is clamped to the disc |λ_t| ≤ μ λ_n (Coulomb's cone, not a box, so sliding
-    /// speed does not depend on the direction).
+    /// speed does not depend on the direction). A point with no normal and no tangent
+    /// impulse is skipped: its cone has radius 0, so nothing would change.
     pub fn solve(
         &mut self,
         bodies: &mut [SolverBody<R>],
@@ -208,11 +240,11 @@ impl<R: Real> ContactConstraint<R> {
         use_bias: bool,
     ) {
         let (ba, bb) = pair(bodies, self.a, self.b);
-        let n = self.normal;
-        let d_p = bb.dp - ba.dp;
-        for cp in &mut self.points[..self.count] {
-            let s =
-                cp.base_separation + d_p.dot(n) + bb.dtheta.dot(cp.rn_b) - ba.dtheta.dot(cp.rn_a);
+        let moved_apart = (bb.dp - ba.dp).dot_fused(self.normal);
+        for k in 0..self.count {
+            let cp = &self.points[k];
+            let s = cp.base_separation + moved_apart + bb.dtheta.dot_fused(cp.rn_b)
+                - ba.dtheta.dot_fused(cp.rn_a);
             let (bias, mass_scale, impulse_scale) = if s > R::ZERO {
                 (s * inv_h, R::ONE, R::ZERO)
             } else if use_bias {
@@ -224,43 +256,43 @@ impl<R: Real> ContactConstraint<R> {
             } else {
                 (R::ZERO, R::ONE, R::ZERO)
             };
-            let vn = (bb.v - ba.v).dot(n) + bb.w.dot(cp.rn_b) - ba.w.dot(cp.rn_a);
+            let vn = self.normal_velocity(cp, ba, bb);
             let impulse =
                 -(cp.normal_mass * mass_scale * (vn + bias)) - impulse_scale * cp.normal_impulse;
             let new_impulse = (cp.normal_impulse + impulse).max(R::ZERO);
             let applied = new_impulse - cp.normal_impulse;
+            self.apply_normal(&self.points[k], ba, bb, applied);
+            let cp = &mut self.points[k];
             cp.normal_impulse = new_impulse;
             cp.max_normal_impulse = cp.max_normal_impulse.max(applied);
-            let p = n * applied;
-            ba.v -= p * ba.inv_mass;
-            ba.w -= cp.in_a * applied;
-            bb.v += p * bb.inv_mass;
-            bb.w += cp.in_b * applied;
         }
         let friction = self.friction;
         for cp in &mut self.points[..self.count] {
+            if cp.normal_impulse == R::ZERO && cp.tangent_impulse == [R::ZERO; 2] {
+                continue;
+            }
             let dv = bb.v - ba.v;
             let mut new_impulse = cp.tangent_impulse;
             for (j, impulse) in new_impulse.iter_mut().enumerate() {
-                let vt = dv.dot(self.tangents[j]) + bb.w.dot(cp.rt_b[j]) - ba.w.dot(cp.rt_a[j]);
+                let vt = dv.dot_fused(self.tangents[j]) + bb.w.dot_fused(cp.rt_b[j])
+                    - ba.w.dot_fused(cp.rt_a[j]);
                 *impulse -= cp.tangent_mass[j] * vt;
             }
             let limit = friction * cp.normal_impulse;
             let length_squared = new_impulse[0] * new_impulse[0] + new_impulse[1] * new_impulse[1];
             if length_squared > limit * limit {
-                let scale = limit / length_squared.sqrt();
+                let scale = limit * length_squared.rsqrt();
                 new_impulse = [new_impulse[0] * scale, new_impulse[1] * scale];
             }
-            let applied = [
+            let [a0, a1] = [
                 new_impulse[0] - cp.tangent_impulse[0],
                 new_impulse[1] - cp.tangent_impulse[1],
             ];
             cp.tangent_impulse = new_impulse;
-            let p = self.tangents[0] * applied[0] + self.tangents[1] * applied[1];
-            ba.v -= p * ba.inv_mass;
-            ba.w -= cp.it_a[0] * applied[0] + cp.it_a[1] * applied[1];
-            bb.v += p * bb.inv_mass;
-            bb.w += cp.it_b[0] * applied[0] + cp.it_b[1] * applied[1];
+            ba.v -= self.tangents_a[0] * a0 + self.tangents_a[1] * a1;
+            ba.w -= cp.it_a[0] * a0 + cp.it_a[1] * a1;
+            bb.v += self.tangents_b[0] * a0 + self.tangents_b[1] * a1;
+            bb.w += cp.it_b[0] * a0 + cp.it_b[1] * a1;
         }
     }
 
@@ -272,21 +304,17 @@ impl<R: Real> ContactConstraint<R> {
             return;
         }
         let (ba, bb) = pair(bodies, self.a, self.b);
-        let n = self.normal;
-        for cp in &mut self.points[..self.count] {
+        for k in 0..self.count {
+            let cp = &self.points[k];
             if cp.relative_velocity > -threshold || cp.max_normal_impulse == R::ZERO {
                 continue;
             }
-            let vn = (bb.v - ba.v).dot(n) + bb.w.dot(cp.rn_b) - ba.w.dot(cp.rn_a);
+            let vn = self.normal_velocity(cp, ba, bb);
             let impulse = -(cp.normal_mass * (vn + self.restitution * cp.relative_velocity));
             let new_impulse = (cp.normal_impulse + impulse).max(R::ZERO);
             let applied = new_impulse - cp.normal_impulse;
-            cp.normal_impulse = new_impulse;
-            let p = n * applied;
-            ba.v -= p * ba.inv_mass;
-            ba.w -= cp.in_a * applied;
-            bb.v += p * bb.inv_mass;
-            bb.w += cp.in_b * applied;
+            self.apply_normal(cp, ba, bb, applied);
+            self.points[k].normal_impulse = new_impulse;
         }
     }
 
