@@ -338,3 +338,74 @@ fn spinner_flips_with_the_period_of_eulers_equations() {
         "flip period {measured} s, Euler's equations give {reference} s"
     );
 }
+
+/// The metrics count awake and sleeping bodies and report the deepest overlap: the stack
+/// starts awake and falls asleep. A soft contact of frequency f carrying a load F settles
+/// where Σ m_eff (2π f)² s = F; between two unit cubes each of the 4 corner points has
+/// m_eff = 1/(2/m + 2·|r × n|²/I) = m/8, so the contact under the 9 upper boxes sinks
+/// s = 9 m g / (m/2 · (2π·45)²) ≈ 2.2 mm. The deepest point must be within ±50 % of it (the
+/// points of a slightly tilted box share the load unevenly).
+#[test]
+fn metrics_report_sleep_and_penetration() {
+    let mut world = world_of(&builtin_scene("stack").expect("stack"));
+    let m = world.metrics();
+    assert_eq!((m.awake_bodies, m.sleeping_bodies), (10, 0));
+    run(&mut world, 300);
+    let m = world.metrics();
+    assert_eq!((m.awake_bodies, m.sleeping_bodies), (0, 10));
+    let expected = 9.0 * 9.81 * 2.0 / (2.0 * std::f64::consts::PI * 45.0f64).powi(2);
+    assert!(
+        (m.max_penetration - expected).abs() <= 0.5 * expected,
+        "max penetration {} m, expected about {expected} m",
+        m.max_penetration
+    );
+}
+
+/// Commands reach bodies: an impulse wakes a sleeping box and moves it, a removed body's
+/// handle goes stale, and a command to a stale handle is counted as ignored.
+#[test]
+fn commands_wake_push_and_remove_bodies() {
+    use fixstep::world::{Command, PlayerInput, Target};
+    let mut world = world_of(&builtin_scene("stack").expect("stack"));
+    run(&mut world, 300);
+    let boxes = dynamic_handles(&world);
+    let top = *boxes.last().expect("boxes");
+    assert_eq!(rigid(&world).is_sleeping(top), Some(true));
+    let input = |commands: Vec<Command<Fx>>| TickInput {
+        tick: world.tick(),
+        players: vec![PlayerInput {
+            player: 0,
+            commands,
+        }],
+    };
+    let push = input(vec![Command::ApplyImpulse {
+        target: Target::Body(top),
+        impulse: Vec3::new(Fx::from_int(2000), Fx::ZERO, Fx::ZERO),
+        point: None,
+    }]);
+    let report = world.step(&push);
+    assert_eq!(report.ignored_commands, 0);
+    assert_eq!(rigid(&world).is_sleeping(top), Some(false));
+    assert!(vel(&world, top)[0] > 1.0, "the impulse moved the box");
+    let remove = TickInput {
+        tick: world.tick(),
+        players: vec![PlayerInput {
+            player: 0,
+            commands: vec![Command::Remove {
+                target: Target::Body(top),
+            }],
+        }],
+    };
+    world.step(&remove);
+    assert_eq!(rigid(&world).position(top), None);
+    let again = TickInput {
+        tick: world.tick(),
+        players: vec![PlayerInput {
+            player: 0,
+            commands: vec![Command::Remove {
+                target: Target::Body(top),
+            }],
+        }],
+    };
+    assert_eq!(world.step(&again).ignored_commands, 1);
+}
