@@ -316,12 +316,6 @@ impl<R: Real> Bounds<R> {
             hi: [max[lanes[0]], max[lanes[1]], max[lanes[2]]],
         }
     }
-
-    /// True when both are the same bit for bit.
-    #[inline(always)]
-    fn same_as(&self, o: &Self) -> bool {
-        (0..3).all(|l| same(self.lo[l], o.lo[l]) && same(self.hi[l], o.hi[l]))
-    }
 }
 
 /// One box of a sorted list: its bounds, index and strips. The list is sorted by
@@ -550,15 +544,6 @@ impl<R: Real> SortedList<R> {
             }
         }
     }
-
-    /// True when every box of the list is bit for bit the box at its index in `boxes`
-    /// (every index is assumed to be in range).
-    fn unchanged(&self, boxes: &[Aabb<R>], lanes: [usize; 3]) -> bool {
-        self.all.entries.iter().all(|e| {
-            e.bounds
-                .same_as(&Bounds::of(&boxes[e.index as usize], lanes))
-        })
-    }
 }
 
 /// True when `a` comes before `b` in the order within a strip: lower bound along the sweep
@@ -695,6 +680,9 @@ pub struct BroadPhase<R: Real = Fx> {
     awake: SortedList<R>,
     /// Resting boxes (present, not awake).
     resting: SortedList<R>,
+    /// The resting boxes in index order, as they were when the resting list was last
+    /// rebuilt.
+    resting_boxes: Vec<Aabb<R>>,
     /// Scratch: indices that joined the awake list this call.
     awake_added: Vec<u32>,
     /// Scratch: indices that joined the resting list this call.
@@ -724,6 +712,7 @@ impl<R: Real> BroadPhase<R> {
             count: 0,
             awake: SortedList::default(),
             resting: SortedList::default(),
+            resting_boxes: Vec::new(),
             awake_added: Vec::new(),
             resting_added: Vec::new(),
             counts: Vec::new(),
@@ -760,7 +749,7 @@ impl<R: Real> BroadPhase<R> {
         let full = self.update_layout(boxes, present);
         let layout = self.layout.as_ref().expect("a layout is chosen");
         if !resting_dirty && !full {
-            resting_dirty = !self.resting.unchanged(boxes, layout.lanes);
+            resting_dirty = !self.resting_unchanged(boxes);
         }
         if resting_dirty || full {
             self.resting.refresh(
@@ -770,6 +759,14 @@ impl<R: Real> BroadPhase<R> {
                 &self.resting_added,
                 layout,
                 full,
+            );
+            self.resting_boxes.clear();
+            self.resting_boxes.extend(
+                self.state
+                    .iter()
+                    .zip(boxes)
+                    .filter(|&(&s, _)| s == RESTING)
+                    .map(|(_, b)| *b),
             );
         }
         self.awake
@@ -792,6 +789,27 @@ impl<R: Real> BroadPhase<R> {
         self.sweep(&mut sink);
         sort_pairs(out, n, &mut self.counts, &mut self.pair_scratch);
         debug_assert!(out.windows(2).all(|w| w[0] < w[1]));
+    }
+
+    /// True when every resting box is bit for bit the box it was when the resting list
+    /// was last rebuilt: one pass over the boxes in index order. Assumes the membership
+    /// has not changed since.
+    fn resting_unchanged(&self, boxes: &[Aabb<R>]) -> bool {
+        let same = |a: &Aabb<R>, b: &Aabb<R>| {
+            let eq = |x: R, y: R| x.canonical_bits() == y.canonical_bits();
+            eq(a.min.x, b.min.x)
+                & eq(a.min.y, b.min.y)
+                & eq(a.min.z, b.min.z)
+                & eq(a.max.x, b.max.x)
+                & eq(a.max.y, b.max.y)
+                & eq(a.max.z, b.max.z)
+        };
+        let mut kept = self.resting_boxes.iter();
+        self.state
+            .iter()
+            .zip(boxes)
+            .filter(|&(&s, _)| s == RESTING)
+            .all(|(_, b)| kept.next().is_some_and(|k| same(b, k)))
     }
 
     /// Compares the wanted membership of every index (from the flags) with the remembered
