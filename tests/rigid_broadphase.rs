@@ -357,6 +357,34 @@ fn sleeping_world_with_a_few_movers_over_many_frames() {
 }
 
 #[test]
+fn collapsing_and_spreading_layouts() {
+    // A wide cloud of boxes collapses onto a line along y and spreads out again, so the
+    // strips chosen for the first frames become badly crowded and the layout is chosen
+    // again; on the way, three boxes in four vanish for a while and come back.
+    let mut rng = Pcg32::new(17, 2);
+    let base = random_frame::<Fx>(&mut rng, 600, 60, 6, 6);
+    let mut bp = BroadPhase::new();
+    for frame in 0..24 {
+        let mut f = base.clone();
+        // Horizontal scale 1, 1/2, …, 1/2048, then back up.
+        let shift = if frame < 12 { frame } else { 23 - frame };
+        let scale = Fx::from_ratio(1, 1 << shift);
+        for b in &mut f.boxes {
+            for v in [&mut b.min, &mut b.max] {
+                v.x *= scale;
+                v.z *= scale;
+            }
+        }
+        if (6..10).contains(&frame) {
+            for (i, p) in f.present.iter_mut().enumerate() {
+                *p &= i % 4 == 0;
+            }
+        }
+        assert_eq!(sweep(&mut bp, &f), brute(&f), "frame {frame}");
+    }
+}
+
+#[test]
 fn other_formats_match_brute_force() {
     let mut rng = Pcg32::new(8, 8);
     let f = random_frame::<f64>(&mut rng, 700, 80, 8, 5);
