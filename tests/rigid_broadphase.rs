@@ -385,6 +385,30 @@ fn collapsing_and_spreading_layouts() {
 }
 
 #[test]
+fn new_layout_with_untouched_resting_boxes() {
+    // The resting boxes never change, but many awake boxes arrive in a differently shaped
+    // region, so the layout is chosen again: the resting list must follow it.
+    let mut rng = Pcg32::new(23, 4);
+    let resting = random_frame::<Fx>(&mut rng, 300, 80, 8, 0);
+    let mut crowd = random_frame::<Fx>(&mut rng, 900, 80, 8, 10);
+    for b in &mut crowd.boxes {
+        // A thin slab across x and z, tall in y.
+        b.min.y *= Fx::from_int(8);
+        b.max.y *= Fx::from_int(8);
+        b.min.x *= Fx::from_ratio(1, 16);
+        b.max.x *= Fx::from_ratio(1, 16);
+    }
+    let mut bp = BroadPhase::new();
+    for awake in [20, 900, 20, 900] {
+        let mut f = resting.clone();
+        f.boxes.extend_from_slice(&crowd.boxes[..awake]);
+        f.active.extend(vec![true; awake]);
+        f.present.extend(vec![true; awake]);
+        assert_eq!(sweep(&mut bp, &f), brute(&f), "{awake} awake");
+    }
+}
+
+#[test]
 fn other_formats_match_brute_force() {
     let mut rng = Pcg32::new(8, 8);
     let f = random_frame::<f64>(&mut rng, 700, 80, 8, 5);
