@@ -8,40 +8,46 @@
 //! # How it works
 //!
 //! **Layout.** Of the three axes, the *sweep axis* is the one along which the fewest boxes
-//! overlap, and the *strip axis* the next one (measured on a sample of up to [`SAMPLE`]
-//! boxes). The strip axis is cut into strips at boundaries taken from the sample's lower
-//! bounds, at least one median box size apart, so that a box usually spans one or two
-//! strips. Each box belongs to the strip of its lower bound along the strip axis. The
-//! layout is chosen on the first call and again when the number of boxes or the crowding
-//! of the fullest strip has grown a lot; it only uses comparisons and the box sizes.
+//! overlap, and the *strip axis* the next one (counted on a sample of about [`SAMPLE`]
+//! boxes). The strip axis is cut into strips at sampled lower bounds, each between one and
+//! two median box sizes beyond the previous one, where it cuts the fewest boxes (in a
+//! lattice, between the rows), so that a box usually lies in one strip or two. Each box
+//! belongs to the strip of its lower bound along the strip axis. The layout is chosen on
+//! the first call, and again when the number of boxes has doubled or halved or the fullest
+//! strip has become twice as crowded. Choosing it takes comparisons and, for the sizes,
+//! subtractions, which saturate (and count) only for boxes wider than the format's range.
 //!
 //! **Order.** Boxes are sorted by the total key (strip, lower bound along the sweep axis by
 //! [`Real::total_cmp`], index), the same on every machine. Awake boxes and resting boxes
-//! (present but not awake: static or sleeping) are kept in two separate sorted lists.
+//! (present but not awake: static or sleeping) are kept in two separate sorted lists, and
+//! each list also keeps, in the same order, its boxes that reach beyond their own strip.
 //!
-//! **Pairs.** Two overlapping boxes in strips s ≤ t have t ≤ the strip of the first one's
-//! upper bound. So for each awake box `a` (strips `first..=last`):
+//! **Pairs.** Two overlapping boxes in strips s < t have t ≤ the strip of the first one's
+//! upper bound. So for each strip `t` of awake boxes:
 //!
-//! - awake boxes of its own strip: the classic sweep, forward from `a` while the lower
-//!   bound is within `a`'s upper bound;
-//! - awake boxes of the strips `first+1..=last`: a probe of each strip;
-//! - resting boxes of the strips `first..=last`, and of lower strips holding a resting box
-//!   that reaches up to `first`: a probe of each.
+//! - the awake boxes of `t` among themselves: the classic sweep, each box against those
+//!   after it whose lower bound is within its upper bound;
+//! - the awake boxes of `t` reaching higher strips against the awake and the resting boxes
+//!   of those strips;
+//! - all the awake boxes of `t` against the resting boxes of `t`, and against the resting
+//!   boxes of lower strips that reach `t`.
 //!
-//! A probe binary-searches `a`'s place in the strip, walks forward while the lower bounds
-//! are within reach, and walks backward, by blocks of [`BLOCK`], while the running
-//! maximum of the upper bounds (and the block's own maximum) still reaches `a`, so a long
-//! box (a ground slab) does not make every probe walk the whole strip. Every candidate gets
-//! the full test of [`Aabb::overlaps`]; each pair is met exactly once, and the list is
-//! sorted at the end.
+//! Two runs of boxes are compared by a merged sweep of both, or, when one side has few
+//! boxes, by a probe per box: a binary search for its place in the other run, forward
+//! while the lower bounds are within reach, and backward from the first entry whose running
+//! maximum of the upper bounds reaches it, skipping blocks of [`BLOCK`] entries that all end
+//! before it (so a long resting box, a ground slab, does not make every probe walk the
+//! whole strip). Every candidate gets the test of [`Aabb::overlaps`], without branches,
+//! less the sweep-axis bounds the order already guarantees. Each pair is met exactly once,
+//! and the pairs are sorted at the end.
 //!
-//! **Caching.** The resting list is re-sorted only when its membership or one of its boxes
+//! **Caching.** The resting list is rebuilt only when its membership or one of its boxes
 //! changes, which is checked bit for bit on each call. Both lists are re-sorted by
 //! insertion sort from the previous order, which is nearly sorted between frames; when
 //! many boxes join at once, or the insertion sort has moved too much, a full sort takes
 //! over. Either way the result is the unique order of the total keys. A resting world
-//! therefore costs the awake boxes' own sweep and probes, plus one pass over the flags and
-//! one comparison of the resting boxes.
+//! therefore costs the awake boxes' own sweeps and probes, plus one pass over the flags
+//! and one comparison of the resting boxes with their copy.
 
 use core::cmp::Ordering;
 
@@ -116,7 +122,7 @@ fn sort_entries<R: Real>(entries: &mut [Entry<R>], fresh: usize) {
 /// are sorted by two counting passes, by the second index and then stably by the first,
 /// in O(pairs + n); fewer by a comparison sort.
 fn sort_pairs(
-    pairs: &mut Vec<(u32, u32)>,
+    pairs: &mut [(u32, u32)],
     n: usize,
     counts: &mut Vec<u32>,
     scratch: &mut Vec<(u32, u32)>,
@@ -127,26 +133,30 @@ fn sort_pairs(
     }
     scratch.clear();
     scratch.resize(pairs.len(), (0, 0));
-    for pass in 0..2 {
-        let (from, to): (&Vec<(u32, u32)>, &mut Vec<(u32, u32)>) = if pass == 0 {
-            (&*pairs, &mut *scratch)
-        } else {
-            (&*scratch, &mut *pairs)
-        };
-        let digit = |p: &(u32, u32)| if pass == 0 { p.1 } else { p.0 } as usize;
-        counts.clear();
-        counts.resize(n + 1, 0);
-        for p in from {
-            counts[digit(p) + 1] += 1;
-        }
-        for k in 0..n {
-            counts[k + 1] += counts[k];
-        }
-        for p in from {
-            let slot = &mut counts[digit(p)];
-            to[*slot as usize] = *p;
-            *slot += 1;
-        }
+    counting_pass(pairs, scratch, counts, n, |p| p.1);
+    counting_pass(scratch, pairs, counts, n, |p| p.0);
+}
+
+/// Copies `from` into `to` (as long) ordered by `digit` (below `n`), stably.
+fn counting_pass(
+    from: &[(u32, u32)],
+    to: &mut [(u32, u32)],
+    counts: &mut Vec<u32>,
+    n: usize,
+    digit: impl Fn(&(u32, u32)) -> u32,
+) {
+    counts.clear();
+    counts.resize(n + 1, 0);
+    for p in from {
+        counts[digit(p) as usize + 1] += 1;
+    }
+    for k in 0..n {
+        counts[k + 1] += counts[k];
+    }
+    for p in from {
+        let slot = &mut counts[digit(p) as usize];
+        to[*slot as usize] = *p;
+        *slot += 1;
     }
 }
 
@@ -184,7 +194,7 @@ impl<R: Real> Layout<R> {
     fn strip_near(&self, v: R, hint: u32) -> u32 {
         let h = hint as usize;
         let b = &self.bounds;
-        if h <= b.len() && (h == 0 || b[h - 1] <= v) && (h == b.len() || !(b[h] <= v)) {
+        if h <= b.len() && (h == 0 || b[h - 1] <= v) && (h == b.len() || v < b[h]) {
             hint
         } else {
             self.strip(v)
@@ -265,20 +275,14 @@ impl<R: Real> Layout<R> {
         };
         let min_between = (spans.len() / MAX_STRIPS).max(4);
         let (mut last, mut from) = (spans[0].0, 0);
-        loop {
-            // The first lower bound that may start a strip, then the one cutting the fewest
-            // boxes among those less than one box size beyond it (the earliest on a tie).
-            let Some(first) = (from + min_between..spans.len())
-                .find(|&k| spans[k].0 > last && spans[k].0 >= last + size)
-            else {
-                break;
-            };
+        // The first lower bound that may start a strip, then the one cutting the fewest
+        // boxes among those less than one box size beyond it (the earliest on a tie).
+        while let Some(first) = (from + min_between..spans.len())
+            .find(|&k| spans[k].0 > last && spans[k].0 >= last + size)
+        {
             let limit = spans[first].0 + size;
             let mut best = (cut(spans[first].0), first);
-            for k in first + 1..spans.len() {
-                if !(spans[k].0 < limit) {
-                    break;
-                }
+            for k in (first + 1..spans.len()).take_while(|&k| spans[k].0 < limit) {
                 if spans[k].0 > spans[k - 1].0 {
                     best = best.min((cut(spans[k].0), k));
                 }
@@ -523,7 +527,12 @@ impl<R: Real> SortedList<R> {
             .all
             .entries
             .iter()
-            .filter(|e| !(e.bounds.lo[0] <= e.bounds.hi[0]))
+            .filter(|e| {
+                !matches!(
+                    e.bounds.lo[0].partial_cmp(&e.bounds.hi[0]),
+                    Some(Ordering::Less | Ordering::Equal)
+                )
+            })
             .count();
         self.up.entries.clear();
         self.up
