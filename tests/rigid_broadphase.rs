@@ -142,6 +142,19 @@ proptest! {
         prop_assert_eq!(pairs, brute(&f));
     }
 
+    /// Boxes with `min > max` along some axes (which no shape produces) still get exactly
+    /// the pairs of `Aabb::overlaps`.
+    #[test]
+    fn inverted_boxes_match_brute_force(
+        specs in prop::collection::vec(
+            ([-8i32..8, -8i32..8, -8i32..8], [-3i32..5, -3i32..5, -3i32..5], any::<bool>(), 0u8..10),
+            0..60,
+        ),
+    ) {
+        let f = frame_from::<Fx>(&specs);
+        prop_assert_eq!(sweep(&mut BroadPhase::new(), &f), brute(&f));
+    }
+
     /// A broadphase warmed on unrelated frames gives the same pairs as a fresh one.
     #[test]
     fn history_does_not_matter(
@@ -340,6 +353,58 @@ fn sleeping_world_with_a_few_movers_over_many_frames() {
             assert!(brute(&f).contains(&(awake.min(resting) as u32, awake.max(resting) as u32)));
         }
         assert_eq!(sweep(&mut bp, &f), brute(&f), "frame {frame}");
+    }
+}
+
+#[test]
+fn collapsing_and_spreading_layouts() {
+    // A wide cloud of boxes collapses onto a line along y and spreads out again, so the
+    // strips chosen for the first frames become badly crowded and the layout is chosen
+    // again; on the way, three boxes in four vanish for a while and come back.
+    let mut rng = Pcg32::new(17, 2);
+    let base = random_frame::<Fx>(&mut rng, 600, 60, 6, 6);
+    let mut bp = BroadPhase::new();
+    for frame in 0..24 {
+        let mut f = base.clone();
+        // Horizontal scale 1, 1/2, …, 1/2048, then back up.
+        let shift = if frame < 12 { frame } else { 23 - frame };
+        let scale = Fx::from_ratio(1, 1 << shift);
+        for b in &mut f.boxes {
+            for v in [&mut b.min, &mut b.max] {
+                v.x *= scale;
+                v.z *= scale;
+            }
+        }
+        if (6..10).contains(&frame) {
+            for (i, p) in f.present.iter_mut().enumerate() {
+                *p &= i % 4 == 0;
+            }
+        }
+        assert_eq!(sweep(&mut bp, &f), brute(&f), "frame {frame}");
+    }
+}
+
+#[test]
+fn new_layout_with_untouched_resting_boxes() {
+    // The resting boxes never change, but many awake boxes arrive in a differently shaped
+    // region, so the layout is chosen again: the resting list must follow it.
+    let mut rng = Pcg32::new(23, 4);
+    let resting = random_frame::<Fx>(&mut rng, 300, 80, 8, 0);
+    let mut crowd = random_frame::<Fx>(&mut rng, 900, 80, 8, 10);
+    for b in &mut crowd.boxes {
+        // A thin slab across x and z, tall in y.
+        b.min.y *= Fx::from_int(8);
+        b.max.y *= Fx::from_int(8);
+        b.min.x *= Fx::from_ratio(1, 16);
+        b.max.x *= Fx::from_ratio(1, 16);
+    }
+    let mut bp = BroadPhase::new();
+    for awake in [20, 900, 20, 900] {
+        let mut f = resting.clone();
+        f.boxes.extend_from_slice(&crowd.boxes[..awake]);
+        f.active.extend(vec![true; awake]);
+        f.present.extend(vec![true; awake]);
+        assert_eq!(sweep(&mut bp, &f), brute(&f), "{awake} awake");
     }
 }
 

@@ -8,40 +8,46 @@
 //! # How it works
 //!
 //! **Layout.** Of the three axes, the *sweep axis* is the one along which the fewest boxes
-//! overlap, and the *strip axis* the next one (measured on a sample of up to [`SAMPLE`]
-//! boxes). The strip axis is cut into strips at boundaries taken from the sample's lower
-//! bounds, at least one median box size apart, so that a box usually spans one or two
-//! strips. Each box belongs to the strip of its lower bound along the strip axis. The
-//! layout is chosen on the first call and again when the number of boxes or the crowding
-//! of the fullest strip has grown a lot; it only uses comparisons and the box sizes.
+//! overlap, and the *strip axis* the next one (counted on a sample of about [`SAMPLE`]
+//! boxes). The strip axis is cut into strips at sampled lower bounds, each between one and
+//! two median box sizes beyond the previous one, where it cuts the fewest boxes (in a
+//! lattice, between the rows), so that a box usually lies in one strip or two. Each box
+//! belongs to the strip of its lower bound along the strip axis. The layout is chosen on
+//! the first call, and again when the number of boxes has doubled or halved or the fullest
+//! strip has become twice as crowded. Choosing it takes comparisons and, for the sizes,
+//! subtractions, which saturate (and count) only for boxes wider than the format's range.
 //!
 //! **Order.** Boxes are sorted by the total key (strip, lower bound along the sweep axis by
 //! [`Real::total_cmp`], index), the same on every machine. Awake boxes and resting boxes
-//! (present but not awake: static or sleeping) are kept in two separate sorted lists.
+//! (present but not awake: static or sleeping) are kept in two separate sorted lists, and
+//! each list also keeps, in the same order, its boxes that reach beyond their own strip.
 //!
-//! **Pairs.** Two overlapping boxes in strips s ≤ t have t ≤ the strip of the first one's
-//! upper bound. So for each awake box `a` (strips `first..=last`):
+//! **Pairs.** Two overlapping boxes in strips s < t have t ≤ the strip of the first one's
+//! upper bound. So for each strip `t` of awake boxes:
 //!
-//! - awake boxes of its own strip: the classic sweep, forward from `a` while the lower
-//!   bound is within `a`'s upper bound;
-//! - awake boxes of the strips `first+1..=last`: a probe of each strip;
-//! - resting boxes of the strips `first..=last`, and of lower strips holding a resting box
-//!   that reaches up to `first`: a probe of each.
+//! - the awake boxes of `t` among themselves: the classic sweep, each box against those
+//!   after it whose lower bound is within its upper bound;
+//! - the awake boxes of `t` reaching higher strips against the awake and the resting boxes
+//!   of those strips;
+//! - all the awake boxes of `t` against the resting boxes of `t`, and against the resting
+//!   boxes of lower strips that reach `t`.
 //!
-//! A probe binary-searches `a`'s place in the strip, walks forward while the lower bounds
-//! are within reach, and walks backward, by blocks of [`BLOCK`], while the running
-//! maximum of the upper bounds (and the block's own maximum) still reaches `a`, so a long
-//! box (a ground slab) does not make every probe walk the whole strip. Every candidate gets
-//! the full test of [`Aabb::overlaps`]; each pair is met exactly once, and the list is
-//! sorted at the end.
+//! Two runs of boxes are compared by a merged sweep of both, or, when one side has few
+//! boxes, by a probe per box: a binary search for its place in the other run, forward
+//! while the lower bounds are within reach, and backward from the first entry whose running
+//! maximum of the upper bounds reaches it, skipping blocks of [`BLOCK`] entries that all end
+//! before it (so a long resting box, a ground slab, does not make every probe walk the
+//! whole strip). Every candidate gets the test of [`Aabb::overlaps`], without branches,
+//! less the sweep-axis bounds the order already guarantees. Each pair is met exactly once,
+//! and the pairs are sorted at the end.
 //!
-//! **Caching.** The resting list is re-sorted only when its membership or one of its boxes
+//! **Caching.** The resting list is rebuilt only when its membership or one of its boxes
 //! changes, which is checked bit for bit on each call. Both lists are re-sorted by
 //! insertion sort from the previous order, which is nearly sorted between frames; when
 //! many boxes join at once, or the insertion sort has moved too much, a full sort takes
 //! over. Either way the result is the unique order of the total keys. A resting world
-//! therefore costs the awake boxes' own sweep and probes, plus one pass over the flags and
-//! one comparison of the resting boxes.
+//! therefore costs the awake boxes' own sweeps and probes, plus one pass over the flags
+//! and one comparison of the resting boxes with their copy.
 
 use core::cmp::Ordering;
 
@@ -116,7 +122,7 @@ fn sort_entries<R: Real>(entries: &mut [Entry<R>], fresh: usize) {
 /// are sorted by two counting passes, by the second index and then stably by the first,
 /// in O(pairs + n); fewer by a comparison sort.
 fn sort_pairs(
-    pairs: &mut Vec<(u32, u32)>,
+    pairs: &mut [(u32, u32)],
     n: usize,
     counts: &mut Vec<u32>,
     scratch: &mut Vec<(u32, u32)>,
@@ -127,26 +133,30 @@ fn sort_pairs(
     }
     scratch.clear();
     scratch.resize(pairs.len(), (0, 0));
-    for pass in 0..2 {
-        let (from, to): (&Vec<(u32, u32)>, &mut Vec<(u32, u32)>) = if pass == 0 {
-            (&*pairs, &mut *scratch)
-        } else {
-            (&*scratch, &mut *pairs)
-        };
-        let digit = |p: &(u32, u32)| if pass == 0 { p.1 } else { p.0 } as usize;
-        counts.clear();
-        counts.resize(n + 1, 0);
-        for p in from {
-            counts[digit(p) + 1] += 1;
-        }
-        for k in 0..n {
-            counts[k + 1] += counts[k];
-        }
-        for p in from {
-            let slot = &mut counts[digit(p)];
-            to[*slot as usize] = *p;
-            *slot += 1;
-        }
+    counting_pass(pairs, scratch, counts, n, |p| p.1);
+    counting_pass(scratch, pairs, counts, n, |p| p.0);
+}
+
+/// Copies `from` into `to` (as long) ordered by `digit` (below `n`), stably.
+fn counting_pass(
+    from: &[(u32, u32)],
+    to: &mut [(u32, u32)],
+    counts: &mut Vec<u32>,
+    n: usize,
+    digit: impl Fn(&(u32, u32)) -> u32,
+) {
+    counts.clear();
+    counts.resize(n + 1, 0);
+    for p in from {
+        counts[digit(p) as usize + 1] += 1;
+    }
+    for k in 0..n {
+        counts[k + 1] += counts[k];
+    }
+    for p in from {
+        let slot = &mut counts[digit(p) as usize];
+        to[*slot as usize] = *p;
+        *slot += 1;
     }
 }
 
@@ -184,7 +194,7 @@ impl<R: Real> Layout<R> {
     fn strip_near(&self, v: R, hint: u32) -> u32 {
         let h = hint as usize;
         let b = &self.bounds;
-        if h <= b.len() && (h == 0 || b[h - 1] <= v) && (h == b.len() || !(b[h] <= v)) {
+        if h <= b.len() && (h == 0 || b[h - 1] <= v) && (h == b.len() || v < b[h]) {
             hint
         } else {
             self.strip(v)
@@ -206,8 +216,9 @@ impl<R: Real> Layout<R> {
     /// (all of them when there are no more). For each axis it counts the sampled pairs
     /// overlapping along that axis; the sweep axis has the fewest, the strip axis the next
     /// fewest (ties go to the lower axis). The strip boundaries are sampled lower bounds
-    /// along the strip axis, each at least the median sampled box size beyond the previous
-    /// one and with at least `max(4, samples / MAX_STRIPS)` sampled boxes between them.
+    /// along the strip axis: each is the one cutting the fewest sampled boxes among those
+    /// between one and two median box sizes beyond the previous boundary, with at least
+    /// `max(4, samples / MAX_STRIPS)` sampled boxes between them.
     fn choose(boxes: &[Aabb<R>], present: &[bool], count: usize) -> Self {
         // A pseudo-random choice of indices (a multiplicative hash under a threshold), so
         // that the sample does not alias with a regular arrangement of the bodies.
@@ -255,16 +266,30 @@ impl<R: Real> Layout<R> {
         let mut sizes: Vec<R> = spans.iter().map(|&(lo, hi)| hi - lo).collect();
         let middle = sizes.len() / 2;
         let size = *sizes.select_nth_unstable_by(middle, R::total_cmp).1;
+        let mut highs: Vec<R> = spans.iter().map(|&(_, hi)| hi).collect();
+        highs.sort_unstable_by(R::total_cmp);
+        // Sampled boxes cut by a boundary at `b`: lower bound below it, upper bound not.
+        let cut = |b: R| {
+            let below = spans.partition_point(|&(lo, _)| lo < b);
+            below.saturating_sub(highs.partition_point(|&h| h < b))
+        };
         let min_between = (spans.len() / MAX_STRIPS).max(4);
-        let mut last = spans[0].0;
-        let mut between = 0;
-        for &(lo, _) in &spans[1..] {
-            between += 1;
-            if between >= min_between && lo > last && lo >= last + size {
-                layout.bounds.push(lo);
-                last = lo;
-                between = 0;
+        let (mut last, mut from) = (spans[0].0, 0);
+        // The first lower bound that may start a strip, then the one cutting the fewest
+        // boxes among those less than one box size beyond it (the earliest on a tie).
+        while let Some(first) = (from + min_between..spans.len())
+            .find(|&k| spans[k].0 > last && spans[k].0 >= last + size)
+        {
+            let limit = spans[first].0 + size;
+            let mut best = (cut(spans[first].0), first);
+            for k in (first + 1..spans.len()).take_while(|&k| spans[k].0 < limit) {
+                if spans[k].0 > spans[k - 1].0 {
+                    best = best.min((cut(spans[k].0), k));
+                }
             }
+            last = spans[best.1].0;
+            from = best.1;
+            layout.bounds.push(last);
         }
         layout
     }
@@ -294,24 +319,6 @@ impl<R: Real> Bounds<R> {
             lo: [min[lanes[0]], min[lanes[1]], min[lanes[2]]],
             hi: [max[lanes[0]], max[lanes[1]], max[lanes[2]]],
         }
-    }
-
-    /// [`Aabb::overlaps`], without branches.
-    #[inline(always)]
-    fn overlaps(&self, o: &Self) -> bool {
-        (u8::from(self.lo[0] <= o.hi[0])
-            & u8::from(o.lo[0] <= self.hi[0])
-            & u8::from(self.lo[1] <= o.hi[1])
-            & u8::from(o.lo[1] <= self.hi[1])
-            & u8::from(self.lo[2] <= o.hi[2])
-            & u8::from(o.lo[2] <= self.hi[2]))
-            != 0
-    }
-
-    /// True when both are the same bit for bit.
-    #[inline(always)]
-    fn same_as(&self, o: &Self) -> bool {
-        (0..3).all(|l| same(self.lo[l], o.lo[l]) && same(self.hi[l], o.hi[l]))
     }
 }
 
@@ -343,9 +350,9 @@ impl<R: Real> Entry<R> {
     }
 }
 
-/// A sorted list of boxes, with per-strip and per-block summaries for the probes.
+/// Boxes sorted by [`entry_cmp`], with per-strip offsets and the summaries the probes use.
 #[derive(Clone, Debug, Default)]
-struct SortedList<R: Real> {
+struct Runs<R: Real> {
     /// The boxes, in order.
     entries: Vec<Entry<R>>,
     /// Start of each strip's run of entries, and the end: `strips + 1` offsets.
@@ -354,18 +361,125 @@ struct SortedList<R: Real> {
     prefix_hi: Vec<R>,
     /// Maximum of the upper bound along the sweep axis per [`BLOCK`] of entries.
     block_hi: Vec<R>,
+}
+
+impl<R: Real> Runs<R> {
+    /// Rebuilds the offsets and summaries for `strips` strips from the sorted entries.
+    fn summarize(&mut self, strips: usize) {
+        self.seg.clear();
+        self.seg.resize(strips + 1, 0);
+        self.prefix_hi.clear();
+        let mut running = R::MIN;
+        let mut strip = u32::MAX;
+        for e in &self.entries {
+            if e.strip != strip {
+                strip = e.strip;
+                running = e.bounds.hi[0];
+            }
+            running = running.max(e.bounds.hi[0]);
+            self.prefix_hi.push(running);
+            self.seg[e.strip as usize + 1] += 1;
+        }
+        for t in 0..strips {
+            self.seg[t + 1] += self.seg[t];
+        }
+        self.block_hi.clear();
+        self.block_hi
+            .extend(self.entries.chunks(BLOCK).map(|block| {
+                block
+                    .iter()
+                    .skip(1)
+                    .fold(block[0].bounds.hi[0], |m, e| m.max(e.bounds.hi[0]))
+            }));
+    }
+
+    /// The run of strip `t`.
+    #[inline(always)]
+    fn run(&self, t: usize) -> Run<'_, R> {
+        let (start, end) = (self.seg[t] as usize, self.seg[t + 1] as usize);
+        Run {
+            entries: &self.entries[start..end],
+            prefix_hi: &self.prefix_hi[start..end],
+            block_hi: &self.block_hi,
+            offset: start,
+        }
+    }
+}
+
+/// The boxes of one strip, sorted, with their summaries.
+#[derive(Clone, Copy, Debug)]
+struct Run<'a, R: Real> {
+    /// The boxes, in order.
+    entries: &'a [Entry<R>],
+    /// Running maximum of the upper bound along the sweep axis.
+    prefix_hi: &'a [R],
+    /// Maximum of the upper bound along the sweep axis per [`BLOCK`] of the whole list.
+    block_hi: &'a [R],
+    /// Position of the run's first entry in the whole list.
+    offset: usize,
+}
+
+impl<R: Real> Run<'_, R> {
+    /// Every box of the run that overlaps `q` (a box not in the run): a binary search for
+    /// `q`'s place, then forward while the lower bounds are within `q`'s reach, and
+    /// backward over the entries from the first one whose running maximum of the upper
+    /// bounds reaches `q`, skipping the blocks that all end before it.
+    fn probe(&self, q: &Entry<R>, sink: &mut Sink<'_>) {
+        let (lo, hi) = (q.bounds.lo[0], q.bounds.hi[0]);
+        let place = self.entries.partition_point(|e| comes_before(e, q));
+        let after = &self.entries[place..];
+        scan(&after[..window(after, hi)], q, false, sink);
+        let mut k = self.prefix_hi[..place].partition_point(|h| *h < lo);
+        while k < place {
+            let block = (self.offset + k) / BLOCK;
+            let to = place.min((block + 1) * BLOCK - self.offset);
+            if self.block_hi[block] >= lo {
+                scan(&self.entries[k..to], q, true, sink);
+            }
+            k = to;
+        }
+    }
+
+    /// Every overlapping pair between the boxes of two runs of different boxes: a probe
+    /// of `other` per box of `self` when they are few enough for the binary searches to
+    /// cost less than a merged sweep, otherwise [`cross_sweep`].
+    fn cross(&self, other: &Run<'_, R>, sink: &mut Sink<'_>) {
+        let (mine, theirs) = (self.entries.len(), other.entries.len());
+        if mine == 0 || theirs == 0 {
+            return;
+        }
+        if mine * (theirs.ilog2() as usize + 8) < mine + theirs {
+            for q in self.entries {
+                other.probe(q, sink);
+            }
+        } else {
+            cross_sweep(self.entries, other.entries, sink);
+        }
+    }
+}
+
+/// A sorted list of boxes: all of them by strip, and those reaching beyond their strip.
+#[derive(Clone, Debug, Default)]
+struct SortedList<R: Real> {
+    /// All the boxes of the list.
+    all: Runs<R>,
+    /// The boxes whose upper bound along the strip axis lies in a higher strip than their
+    /// lower bound (in the same order).
+    up: Runs<R>,
     /// Per strip, the highest strip reached by the upper bound of one of its boxes (at
     /// least the strip itself).
     reach: Vec<u32>,
     /// Per strip `s`, the lowest strip `t ≤ s` whose reach is at least `s`.
     down: Vec<u32>,
+    /// Number of boxes without `min ≤ max` along the sweep axis.
+    inverted: usize,
 }
 
 impl<R: Real> SortedList<R> {
     /// Number of boxes in the list.
     #[inline]
     fn len(&self) -> usize {
-        self.entries.len()
+        self.all.entries.len()
     }
 
     /// Brings the list up to date: keeps the entries whose index still has membership
@@ -381,7 +495,8 @@ impl<R: Real> SortedList<R> {
         full: bool,
     ) {
         let n = boxes.len();
-        self.entries.retain_mut(|e| {
+        let entries = &mut self.all.entries;
+        entries.retain_mut(|e| {
             let i = e.index;
             let keep = (i as usize) < n && state[i as usize] == tag;
             if keep {
@@ -389,7 +504,7 @@ impl<R: Real> SortedList<R> {
             }
             keep
         });
-        self.entries.extend(added.iter().map(|&i| {
+        entries.extend(added.iter().map(|&i| {
             let mut e = Entry {
                 bounds: Bounds::of(&boxes[i as usize], layout.lanes),
                 index: i,
@@ -399,85 +514,43 @@ impl<R: Real> SortedList<R> {
             e.set(boxes, i, layout);
             e
         }));
-        let fresh = if full { self.len() } else { added.len() };
-        sort_entries(&mut self.entries, fresh);
-        self.summarize(layout);
+        let fresh = if full { entries.len() } else { added.len() };
+        sort_entries(entries, fresh);
+        self.summarize(layout.strips());
     }
 
-    /// Rebuilds the per-strip and per-block summaries from the sorted entries.
-    fn summarize(&mut self, layout: &Layout<R>) {
-        let strips = layout.strips();
-        self.prefix_hi.clear();
-        self.seg.clear();
-        self.seg.resize(strips + 1, 0);
+    /// Rebuilds the reaching sub-list and the per-strip and per-block summaries from the
+    /// sorted entries.
+    fn summarize(&mut self, strips: usize) {
+        self.all.summarize(strips);
+        self.inverted = self
+            .all
+            .entries
+            .iter()
+            .filter(|e| {
+                !matches!(
+                    e.bounds.lo[0].partial_cmp(&e.bounds.hi[0]),
+                    Some(Ordering::Less | Ordering::Equal)
+                )
+            })
+            .count();
+        self.up.entries.clear();
+        self.up
+            .entries
+            .extend(self.all.entries.iter().filter(|e| e.last > e.strip));
+        self.up.summarize(strips);
         self.reach.clear();
         self.reach.extend(0..strips as u32);
-        let mut running = R::MIN;
-        let mut strip = u32::MAX;
-        for e in &self.entries {
-            if e.strip != strip {
-                strip = e.strip;
-                running = e.bounds.hi[0];
-            }
-            running = running.max(e.bounds.hi[0]);
-            self.prefix_hi.push(running);
-            self.seg[e.strip as usize + 1] += 1;
+        for e in &self.up.entries {
             let reach = &mut self.reach[e.strip as usize];
             *reach = (*reach).max(e.last);
         }
-        for t in 0..strips {
-            self.seg[t + 1] += self.seg[t];
-        }
-        self.block_hi.clear();
-        self.block_hi
-            .extend(self.entries.chunks(BLOCK).map(|block| {
-                block
-                    .iter()
-                    .skip(1)
-                    .fold(block[0].bounds.hi[0], |m, e| m.max(e.bounds.hi[0]))
-            }));
         self.down.clear();
         self.down.extend(0..strips as u32);
         for t in 0..strips {
             for s in t + 1..=self.reach[t] as usize {
                 self.down[s] = self.down[s].min(t as u32);
             }
-        }
-    }
-
-    /// True when every box of the list is bit for bit the box at its index in `boxes`
-    /// (every index is assumed to be in range).
-    fn unchanged(&self, boxes: &[Aabb<R>], lanes: [usize; 3]) -> bool {
-        self.entries.iter().all(|e| {
-            e.bounds
-                .same_as(&Bounds::of(&boxes[e.index as usize], lanes))
-        })
-    }
-
-    /// The entries of strip `t`.
-    #[inline(always)]
-    fn strip(&self, t: usize) -> &[Entry<R>] {
-        &self.entries[self.seg[t] as usize..self.seg[t + 1] as usize]
-    }
-
-    /// Every box of strip `t` that overlaps `q` (a box of the other list): a binary search
-    /// for `q`'s place in the strip, then forward while the lower bounds are within `q`'s
-    /// reach, and backward over the entries from the first one whose running maximum of the
-    /// upper bounds reaches `q`, skipping the blocks that all end before it.
-    fn probe_strip(&self, t: usize, q: &Entry<R>, out: &mut Vec<(u32, u32)>) {
-        let (start, end) = (self.seg[t] as usize, self.seg[t + 1] as usize);
-        let (lo, hi) = (q.bounds.lo[0], q.bounds.hi[0]);
-        let place = start + self.entries[start..end].partition_point(|e| comes_before(e, q));
-        let after = &self.entries[place..end];
-        scan(&after[..window(after, hi)], q, out);
-        let mut k = start + self.prefix_hi[start..place].partition_point(|h| *h < lo);
-        while k < place {
-            let block = k / BLOCK;
-            let to = place.min((block + 1) * BLOCK);
-            if self.block_hi[block] >= lo {
-                scan(&self.entries[k..to], q, out);
-            }
-            k = to;
         }
     }
 }
@@ -503,23 +576,61 @@ fn window<R: Real>(entries: &[Entry<R>], reach: R) -> usize {
         .count()
 }
 
-/// Tests the box `q` against `entries` with the full overlap test and pushes each
-/// overlapping pair as (smaller, larger index).
+/// Where the pairs go, and what the tests need to know.
+struct Sink<'a> {
+    /// The pairs found, unordered.
+    out: &'a mut Vec<(u32, u32)>,
+    /// Every box has `min ≤ max` along the sweep axis (see [`scan`]).
+    valid: bool,
+}
+
+/// Tests the box `q` against `entries` with the full overlap test, less what is known, and
+/// pushes each overlapping pair as (smaller, larger index).
 ///
-/// Branch-free: each chunk of entries is filtered into a small buffer by a running count
-/// (whether a candidate overlaps is not predictable, and a branch on it would cost more
-/// than the test), then the hits are pushed.
+/// The entries come before `q` in the order when `before`, otherwise after it and within
+/// its reach. When every box has `min ≤ max` along the sweep axis, the entries after `q`
+/// overlap it along that axis, and those before it start within its reach; then only the
+/// remaining bounds are compared.
 #[inline(always)]
-fn scan<R: Real>(entries: &[Entry<R>], q: &Entry<R>, out: &mut Vec<(u32, u32)>) {
-    const CHUNK: usize = 64;
-    let mut hits = [0u32; CHUNK];
-    for chunk in entries.chunks(CHUNK) {
-        let mut count = 0;
-        for e in chunk {
-            hits[count % CHUNK] = e.index;
-            count += usize::from(e.bounds.overlaps(&q.bounds));
+fn scan<R: Real>(entries: &[Entry<R>], q: &Entry<R>, before: bool, sink: &mut Sink<'_>) {
+    match (sink.valid, before) {
+        (true, false) => scan_with::<R, false, false>(entries, q, sink.out),
+        (true, true) => scan_with::<R, true, false>(entries, q, sink.out),
+        (false, _) => scan_with::<R, true, true>(entries, q, sink.out),
+    }
+}
+
+/// [`scan`], comparing the candidate's upper bound along the sweep axis with `q`'s lower
+/// bound when `UPPER`, and its lower bound with `q`'s upper bound when `LOWER`.
+///
+/// Whether a candidate overlaps is not predictable, so there is no branch on it: each
+/// chunk of 64 candidates is tested into a bit mask, then the set bits are pushed.
+#[inline(always)]
+fn scan_with<R: Real, const UPPER: bool, const LOWER: bool>(
+    entries: &[Entry<R>],
+    q: &Entry<R>,
+    out: &mut Vec<(u32, u32)>,
+) {
+    let b = &q.bounds;
+    for chunk in entries.chunks(64) {
+        let mut mask = 0u64;
+        for (k, e) in chunk.iter().enumerate() {
+            let o = &e.bounds;
+            let mut hit = u8::from(o.lo[1] <= b.hi[1])
+                & u8::from(b.lo[1] <= o.hi[1])
+                & u8::from(o.lo[2] <= b.hi[2])
+                & u8::from(b.lo[2] <= o.hi[2]);
+            if UPPER {
+                hit &= u8::from(b.lo[0] <= o.hi[0]);
+            }
+            if LOWER {
+                hit &= u8::from(o.lo[0] <= b.hi[0]);
+            }
+            mask |= u64::from(hit) << k;
         }
-        for &other in &hits[..count] {
+        while mask != 0 {
+            let other = chunk[mask.trailing_zeros() as usize].index;
+            mask &= mask - 1;
             out.push(if q.index < other {
                 (q.index, other)
             } else {
@@ -531,10 +642,10 @@ fn scan<R: Real>(entries: &[Entry<R>], q: &Entry<R>, out: &mut Vec<(u32, u32)>) 
 
 /// Every overlapping pair within one strip (sorted): each box against the boxes after it
 /// whose lower bound is within its reach.
-fn self_sweep<R: Real>(entries: &[Entry<R>], out: &mut Vec<(u32, u32)>) {
+fn self_sweep<R: Real>(entries: &[Entry<R>], sink: &mut Sink<'_>) {
     for (i, q) in entries.iter().enumerate() {
         let after = &entries[i + 1..];
-        scan(&after[..window(after, q.bounds.hi[0])], q, out);
+        scan(&after[..window(after, q.bounds.hi[0])], q, false, sink);
     }
 }
 
@@ -542,16 +653,16 @@ fn self_sweep<R: Real>(entries: &[Entry<R>], out: &mut Vec<(u32, u32)>) {
 /// which each box, when its turn comes, is tested against the boxes of the other run that
 /// come after it and start within its reach. Each pair overlapping along the sweep axis is
 /// tested once, by whichever of the two comes first.
-fn cross_sweep<R: Real>(xs: &[Entry<R>], ys: &[Entry<R>], out: &mut Vec<(u32, u32)>) {
+fn cross_sweep<R: Real>(xs: &[Entry<R>], ys: &[Entry<R>], sink: &mut Sink<'_>) {
     let (mut i, mut j) = (0, 0);
     while i < xs.len() && j < ys.len() {
         if comes_before(&xs[i], &ys[j]) {
             let (q, rest) = (&xs[i], &ys[j..]);
-            scan(&rest[..window(rest, q.bounds.hi[0])], q, out);
+            scan(&rest[..window(rest, q.bounds.hi[0])], q, false, sink);
             i += 1;
         } else {
             let (q, rest) = (&ys[j], &xs[i..]);
-            scan(&rest[..window(rest, q.bounds.hi[0])], q, out);
+            scan(&rest[..window(rest, q.bounds.hi[0])], q, false, sink);
             j += 1;
         }
     }
@@ -578,6 +689,9 @@ pub struct BroadPhase<R: Real = Fx> {
     awake: SortedList<R>,
     /// Resting boxes (present, not awake).
     resting: SortedList<R>,
+    /// The resting boxes in index order, as they were when the resting list was last
+    /// rebuilt.
+    resting_boxes: Vec<Aabb<R>>,
     /// Scratch: indices that joined the awake list this call.
     awake_added: Vec<u32>,
     /// Scratch: indices that joined the resting list this call.
@@ -607,6 +721,7 @@ impl<R: Real> BroadPhase<R> {
             count: 0,
             awake: SortedList::default(),
             resting: SortedList::default(),
+            resting_boxes: Vec::new(),
             awake_added: Vec::new(),
             resting_added: Vec::new(),
             counts: Vec::new(),
@@ -643,7 +758,7 @@ impl<R: Real> BroadPhase<R> {
         let full = self.update_layout(boxes, present);
         let layout = self.layout.as_ref().expect("a layout is chosen");
         if !resting_dirty && !full {
-            resting_dirty = !self.resting.unchanged(boxes, layout.lanes);
+            resting_dirty = !self.resting_unchanged(boxes);
         }
         if resting_dirty || full {
             self.resting.refresh(
@@ -654,12 +769,20 @@ impl<R: Real> BroadPhase<R> {
                 layout,
                 full,
             );
+            self.resting_boxes.clear();
+            self.resting_boxes.extend(
+                self.state
+                    .iter()
+                    .zip(boxes)
+                    .filter(|&(&s, _)| s == RESTING)
+                    .map(|(_, b)| *b),
+            );
         }
         self.awake
             .refresh(boxes, &self.state, AWAKE, &self.awake_added, layout, full);
         self.crowding = (0..layout.strips())
             .map(|t| {
-                let size = |l: &SortedList<R>| (l.seg[t + 1] - l.seg[t]) as usize;
+                let size = |l: &SortedList<R>| (l.all.seg[t + 1] - l.all.seg[t]) as usize;
                 size(&self.awake) + size(&self.resting)
             })
             .max()
@@ -668,9 +791,34 @@ impl<R: Real> BroadPhase<R> {
             self.layout_crowding = Some(self.crowding);
         }
 
-        self.sweep(out);
+        let mut sink = Sink {
+            out,
+            valid: self.awake.inverted == 0 && self.resting.inverted == 0,
+        };
+        self.sweep(&mut sink);
         sort_pairs(out, n, &mut self.counts, &mut self.pair_scratch);
         debug_assert!(out.windows(2).all(|w| w[0] < w[1]));
+    }
+
+    /// True when every resting box is bit for bit the box it was when the resting list
+    /// was last rebuilt: one pass over the boxes in index order. Assumes the membership
+    /// has not changed since.
+    fn resting_unchanged(&self, boxes: &[Aabb<R>]) -> bool {
+        let same = |a: &Aabb<R>, b: &Aabb<R>| {
+            let eq = |x: R, y: R| x.canonical_bits() == y.canonical_bits();
+            eq(a.min.x, b.min.x)
+                & eq(a.min.y, b.min.y)
+                & eq(a.min.z, b.min.z)
+                & eq(a.max.x, b.max.x)
+                & eq(a.max.y, b.max.y)
+                & eq(a.max.z, b.max.z)
+        };
+        let mut kept = self.resting_boxes.iter();
+        self.state
+            .iter()
+            .zip(boxes)
+            .filter(|&(&s, _)| s == RESTING)
+            .all(|(_, b)| kept.next().is_some_and(|k| same(b, k)))
     }
 
     /// Compares the wanted membership of every index (from the flags) with the remembered
@@ -757,36 +905,35 @@ impl<R: Real> BroadPhase<R> {
 
     /// Finds the pairs awake × awake and awake × resting, unordered, into `out`.
     ///
-    /// Awake × awake: a sweep within each strip, and a merged sweep of each strip with
-    /// each higher strip its boxes reach. Awake × resting: each strip of awake boxes against
-    /// the resting strips it reaches and the lower resting strips that reach it, by a
-    /// merged sweep, or by a probe per awake box when the awake boxes are few there.
-    fn sweep(&self, out: &mut Vec<(u32, u32)>) {
+    /// For each strip `t` of awake boxes: a sweep within the strip; its boxes reaching
+    /// higher strips against the awake and resting boxes there; and all its boxes against
+    /// the resting boxes of the strip and the resting boxes of lower strips that reach it.
+    /// Each pair of strips is handled by a merged sweep, or by a probe per box when the
+    /// boxes on one side are few (see [`Run::cross`]).
+    fn sweep(&self, sink: &mut Sink<'_>) {
         let (awake, resting) = (&self.awake, &self.resting);
-        for t in 0..awake.seg.len().saturating_sub(1) {
-            let here = awake.strip(t);
-            if here.is_empty() {
+        for t in 0..awake.reach.len() {
+            let here = awake.all.run(t);
+            if here.entries.is_empty() {
                 continue;
             }
-            self_sweep(here, out);
+            self_sweep(here.entries, sink);
+            let up = awake.up.run(t);
             let reach = awake.reach[t] as usize;
             for s in t + 1..=reach {
-                cross_sweep(here, awake.strip(s), out);
+                up.cross(&awake.all.run(s), sink);
             }
             if resting.len() == 0 {
                 continue;
             }
-            let below = (resting.down[t] as usize..t).filter(|&s| resting.reach[s] as usize >= t);
-            for s in below.chain(t..=reach) {
-                let there = resting.strip(s);
-                let probe_cost = here.len() * (there.len().max(1).ilog2() as usize + 8);
-                if probe_cost < here.len() + there.len() {
-                    for q in here {
-                        resting.probe_strip(s, q, out);
-                    }
-                } else {
-                    cross_sweep(here, there, out);
+            for s in resting.down[t] as usize..t {
+                if resting.reach[s] as usize >= t {
+                    here.cross(&resting.up.run(s), sink);
                 }
+            }
+            here.cross(&resting.all.run(t), sink);
+            for s in t + 1..=reach {
+                up.cross(&resting.all.run(s), sink);
             }
         }
     }
