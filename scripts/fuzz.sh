@@ -29,7 +29,7 @@ ensure_cargo_fuzz() {
 SCENE_LEN_OFFSET=54
 SCENE_OFFSET=94
 # Scenes too large to make useful fuzz seeds (thousands of bodies).
-SEEDLESS_SCENES=' balls falling '
+SEEDLESS_SCENES=' balls falling pyramid '
 
 seeds() {
   cargo build --release --quiet
