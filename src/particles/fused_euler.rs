@@ -41,14 +41,15 @@
 //! once. The guarded operators never count, so the counter sees exactly the general path's
 //! saturations.
 //!
-//! # I32F32 with AVX2
+//! # I32F32 in vector code
 //!
-//! On x86-64 processors with AVX2 (detected at run time), I32F32 blocks go to `avx2`
-//! first: one pass takes the magnitudes of the block's values, and when these bound every
-//! result of the block inside the range (so that the general path saturates nowhere in it),
-//! the block is computed in place, four lanes at a time, by exact integer identities for
-//! the rounded products. Other blocks run as above. The result is the general path's in
-//! every case; other processors, targets and formats never take this path.
+//! On x86-64 processors with AVX2 or AVX-512 (detected at run time), I32F32 blocks go to
+//! `x86` first: one pass takes the magnitudes of the block's values, and when these bound
+//! every result of the block inside the range (so that the general path saturates nowhere
+//! in it), the block is computed in place, four or eight lanes at a time, by exact integer
+//! identities for the rounded products. Other blocks run as above. The result is the
+//! general path's in every case; other processors, targets and formats never take this
+//! path.
 
 use super::forces::{LinearField, add_linear_drag, applies_to, forces_to_accelerations};
 use super::integrators::kick_then_drift;
@@ -60,9 +61,9 @@ const BLOCK: usize = 64;
 
 /// One semi-implicit Euler step of length `h` (s) of every movable particle in `field`.
 ///
-/// I32F32 takes the AVX2 kernel of `avx2` on x86-64 processors that have AVX2 (checked at
-/// run time); everything else takes the portable guarded computation. Both give the
-/// general path's bits.
+/// I32F32 takes the vector kernels of `x86` on x86-64 processors that have AVX2 or AVX-512
+/// (checked at run time); everything else takes the portable guarded computation. Both
+/// give the general path's bits.
 pub(super) fn step<R: Real>(
     field: &LinearField<R>,
     h: Fraction<R>,
@@ -70,7 +71,7 @@ pub(super) fn step<R: Real>(
     attributes: &Attributes<R>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if avx2::step(field, h, kinematics, attributes) {
+    if x86::step(field, h, kinematics, attributes) {
         return;
     }
     step_portable(field, h, kinematics, attributes);
@@ -223,7 +224,7 @@ fn zip_with<R: Real>(a: Vec3<R>, b: Vec3<R>, mut f: impl FnMut(R, R) -> R) -> Ve
     Vec3::new(f(a.x, b.x), f(a.y, b.y), f(a.z, b.z))
 }
 
-#[cfg(target_arch = "x86_64")]
-mod avx2;
 #[cfg(test)]
 mod tests;
+#[cfg(target_arch = "x86_64")]
+mod x86;

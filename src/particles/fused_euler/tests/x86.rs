@@ -1,15 +1,16 @@
-//! The AVX2 path against the checked scalar operators, the portable guarded step and the
-//! general path, bit for bit: its lane products on any operands (rounding ties and negative
-//! values included), single blocks whose magnitudes sit anywhere from zero to the range
-//! limits (so that the bound check accepts some and refuses others), and whole steps. On a
-//! processor without AVX2 these tests pass without checking anything.
+//! The vector kernels (AVX2 and AVX-512, each the processor has) against the checked scalar
+//! operators, the portable guarded step and the general path, bit for bit: their lane
+//! products on any operands (rounding ties and negative values included), single blocks
+//! whose magnitudes sit anywhere from zero to the range limits (so that the bound check
+//! accepts some and refuses others), and whole steps. A kernel the processor lacks is not
+//! checked; with neither, these tests check nothing.
 
 use core::cell::Cell;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
-use super::super::avx2::{self, Constants, on_arrays};
+use super::super::x86::{Constants, Kernel, step_with};
 use super::super::{Block, step_portable};
 use super::{Case, Slot, build};
 use crate::math::saturation::count_saturations;
@@ -72,21 +73,36 @@ fn inv_mass_bits(bits: u32, negative: bool) -> BoxedStrategy<i64> {
     .boxed()
 }
 
+/// 1 to `max` slots, often a multiple of eight (which every kernel can take whole).
+fn slots(
+    slot: impl Strategy<Value = Slot> + Clone,
+    max: usize,
+) -> impl Strategy<Value = Vec<Slot>> {
+    prop_oneof![
+        prop::collection::vec(slot.clone(), 1..=max),
+        (1..=max / 8).prop_flat_map(move |n| prop::collection::vec(slot.clone(), 8 * n)),
+    ]
+}
+
 /// A drag's group restriction: mostly none.
 fn restriction() -> impl Strategy<Value = Option<u16>> {
     prop_oneof![3 => Just(None), 1 => (0u16..3).prop_map(Some)]
 }
 
-fn lanes(strategy: BoxedStrategy<i64>) -> impl Strategy<Value = [i64; 4]> {
-    [
-        strategy.clone(),
-        strategy.clone(),
-        strategy.clone(),
-        strategy,
-    ]
+/// The kernels the processor has.
+fn kernels() -> Vec<Kernel> {
+    [Kernel::avx2(), Kernel::avx512()]
+        .into_iter()
+        .flatten()
+        .collect()
 }
 
-fn vector(bits: u32) -> impl Strategy<Value = [i64; 3]> {
+/// Eight operands: a vector of each kernel.
+fn lanes(strategy: BoxedStrategy<i64>) -> impl Strategy<Value = Vec<i64>> {
+    prop::collection::vec(strategy, 8)
+}
+
+fn vector(bits: u32) -> impl Strategy<Value = [i64; 3]> + Clone {
     [sized(bits), sized(bits), sized(bits)]
 }
 
@@ -125,7 +141,7 @@ fn bounded_case(max_slots: usize) -> impl Strategy<Value = Case> {
                 prop::collection::vec((sized(34), Just(None)), 1..3),
             ];
             (
-                prop::collection::vec(slot, 1..=max_slots),
+                slots(slot, max_slots),
                 prop::collection::vec((fraction_bits(), restriction()), 0..=4),
                 gravity_fields,
                 vector(g_bits),
@@ -187,10 +203,10 @@ fn block<'a>(kinematics: &'a mut Kinematics<Fx>, attributes: &'a Attributes<Fx>)
     }
 }
 
-/// Steps one block of `case` with the AVX2 kernel and with the general path; the kernel must
-/// either refuse it and leave it untouched, or give the general path's bits when the
-/// general path saturates nowhere. Returns whether the kernel took the block.
-fn check_block(case: &Case) -> Result<bool, TestCaseError> {
+/// Steps one block of `case` with `kernel` and with the general path; the kernel must either
+/// refuse it and leave it untouched, or give the general path's bits when the general path
+/// saturates nowhere. Returns whether the kernel took the block.
+fn check_block(kernel: Kernel, case: &Case) -> Result<bool, TestCaseError> {
     let Some(Linear {
         kinematics,
         attributes,
@@ -202,8 +218,7 @@ fn check_block(case: &Case) -> Result<bool, TestCaseError> {
     };
     let constants = Constants::new(&field, h);
     let mut fast = kinematics.clone();
-    // SAFETY: the caller checked that the processor has AVX2.
-    let taken = unsafe { avx2::step_block(&mut block(&mut fast, &attributes), &constants) };
+    let taken = kernel.step_block(&mut block(&mut fast, &attributes), &constants);
     let mut general = kinematics.clone();
     let ((), saturations) = count_saturations(|| {
         block(&mut general, &attributes).step_checked(&field, h.get());
@@ -219,9 +234,9 @@ fn check_block(case: &Case) -> Result<bool, TestCaseError> {
     Ok(taken)
 }
 
-/// Steps `case` with the AVX2 path and the portable path; bits and saturation counts must
+/// Steps `case` with `kernel` and with the portable path; bits and saturation counts must
 /// agree.
-fn check_step(case: &Case) -> Result<(), TestCaseError> {
+fn check_step(kernel: Kernel, case: &Case) -> Result<(), TestCaseError> {
     let Some(Linear {
         kinematics,
         attributes,
@@ -233,7 +248,7 @@ fn check_step(case: &Case) -> Result<(), TestCaseError> {
     };
     let mut fast = kinematics.clone();
     let (taken, fast_saturations) =
-        count_saturations(|| avx2::step(&field, h, &mut fast, &attributes));
+        count_saturations(|| step_with(kernel, &field, h, &mut fast, &attributes));
     let mut portable = kinematics;
     let ((), portable_saturations) =
         count_saturations(|| step_portable(&field, h, &mut portable, &attributes));
@@ -253,14 +268,13 @@ proptest! {
         a in lanes(sized(64)),
         c in lanes(fraction_bits()),
     ) {
-        if avx2::available() {
-            // SAFETY: the processor has AVX2.
-            let lanes = unsafe { on_arrays::mul_fraction(a, c) };
-            for i in 0..4 {
+        for kernel in kernels() {
+            let lanes = kernel.mul_fraction(&a, &c);
+            for i in 0..a.len() {
                 let (product, saturations) =
                     count_saturations(|| Fx::from_bits(a[i]) * Fx::from_bits(c[i]));
                 prop_assert_eq!(saturations, 0);
-                prop_assert_eq!(lanes[i], product.to_bits());
+                prop_assert_eq!(lanes[i], product.to_bits(), "{:?}", kernel);
             }
         }
     }
@@ -272,64 +286,64 @@ proptest! {
         a in lanes(sized(63).prop_map(|a| a.clamp(-(1 << 62), 1 << 62)).boxed()),
         m in lanes(inv_mass_bits(62, false)),
     ) {
-        if avx2::available() {
-            // SAFETY: the processor has AVX2.
-            let lanes = unsafe { on_arrays::mul_mass_biased(a, m) };
-            for i in 0..4 {
+        for kernel in kernels() {
+            let lanes = kernel.mul_mass_biased(&a, &m);
+            for i in 0..a.len() {
                 let (product, saturations) =
                     count_saturations(|| Fx::from_bits(a[i]) * Fx::from_bits(m[i]));
                 if saturations == 0 {
-                    prop_assert_eq!(lanes[i], product.to_bits().wrapping_add(1 << 30));
+                    prop_assert_eq!(
+                        lanes[i],
+                        product.to_bits().wrapping_add(1 << 30),
+                        "{:?}",
+                        kernel
+                    );
                 }
             }
         }
     }
 
     /// Whole steps, physical and wild (`super::case`) and bounded, take the same bits
-    /// through the AVX2 path as through the portable one.
+    /// through each kernel as through the portable path.
     #[test]
-    fn avx2_step_matches_portable_step(case in prop_oneof![super::case(), bounded_case(200)]) {
-        if avx2::available() {
-            check_step(&case)?;
+    fn kernel_steps_match_portable_step(case in prop_oneof![super::case(), bounded_case(200)]) {
+        for kernel in kernels() {
+            check_step(kernel, &case)?;
         }
     }
 }
 
-/// Single blocks with magnitudes anywhere up to the range limits: every block the kernel
+/// Single blocks with magnitudes anywhere up to the range limits: every block a kernel
 /// takes gives the general path's bits, every block it refuses is untouched, and it takes
 /// and refuses many.
 #[test]
-fn avx2_block_matches_general_path() {
-    if !avx2::available() {
-        return;
+fn kernel_blocks_match_general_path() {
+    for kernel in kernels() {
+        let (taken, refused) = (Cell::new(0u32), Cell::new(0u32));
+        let mut runner = TestRunner::new(Config::with_cases(20_000));
+        runner
+            .run(&bounded_case(64), |case| {
+                let counter = if check_block(kernel, &case)? {
+                    &taken
+                } else {
+                    &refused
+                };
+                counter.set(counter.get() + 1);
+                Ok(())
+            })
+            .expect("the kernel's block gives the general path's bits");
+        let (taken, refused) = (taken.get(), refused.get());
+        assert!(
+            taken > 2_000 && refused > 2_000,
+            "{kernel:?}: taken {taken}, refused {refused}"
+        );
     }
-    let (taken, refused) = (Cell::new(0u32), Cell::new(0u32));
-    let mut runner = TestRunner::new(Config::with_cases(20_000));
-    runner
-        .run(&bounded_case(64), |case| {
-            let counter = if check_block(&case)? {
-                &taken
-            } else {
-                &refused
-            };
-            counter.set(counter.get() + 1);
-            Ok(())
-        })
-        .expect("the AVX2 block gives the general path's bits");
-    let (taken, refused) = (taken.get(), refused.get());
-    assert!(
-        taken > 2_000 && refused > 2_000,
-        "taken {taken}, refused {refused}"
-    );
 }
 
-/// The kernel takes blocks up to the bounds it documents (here e_x = 62: positions just
+/// The kernels take blocks up to the bounds they document (here e_x = 62: positions just
 /// under 2⁶¹, velocities and forces of 2⁵³, 1/m = 1.25 kg⁻¹), with ties in the products.
 #[test]
-fn avx2_block_at_its_bounds() {
-    if !avx2::available() {
-        return;
-    }
+fn kernel_block_at_its_bounds() {
     let slot = |i: i64| Slot {
         position: [(1 << 61) - 1 - i, -(1 << 61) + i, (1 << 60) + 2 * i],
         velocity: [(1 << 53) + 2, -(1 << 53) - 6, 2 + i],
@@ -344,5 +358,7 @@ fn avx2_block_at_its_bounds() {
         gravity: [1 << 30, -(42_125_000_000), -(1 << 33)],
         dt: 1 << 30,
     };
-    assert!(check_block(&case).expect("same bits"));
+    for kernel in kernels() {
+        assert!(check_block(kernel, &case).expect("same bits"), "{kernel:?}");
+    }
 }

@@ -1,66 +1,6 @@
-//! The fused step for I32F32 in AVX2: a bound check per block, then the block in place,
-//! four `i64` lanes at a time, without range checks.
-//!
-//! # Layout
-//!
-//! Positions, velocities and external forces are slices of `Vec3<Fx>`: runs of `i64` (x, y,
-//! z, x, y, z, …; `Vec3` is `repr(C)` and `Fx` a transparent `i64`). Four particles are
-//! twelve values, three vectors. Every operation applies to each component alike; only
-//! 1/m (one per particle, spread over the lanes of its three components), gravity (a
-//! pattern of components that repeats every three vectors) and, for a drag restricted to a
-//! group, the drag coefficient (0 in the lanes of particles of other groups: v·0 = 0 and
-//! F − 0 = F, as if the drag were skipped) differ from lane to lane.
-//!
-//! # Bounds
-//!
-//! Before a block is computed, one pass over it takes the bit length of the largest
-//! magnitude among its positions (b_x: every |x| ≤ 2^b_x), velocities (b_v), external
-//! forces (b_F) and inverse masses (b_m; a negative 1/m counts as 64 bits). With b_g that
-//! of gravity, every drag coefficient and h below 2³¹ (½) and at most four drags, the
-//! values of the module's equations, as exact integers (raw bits), satisfy:
-//!
-//! | value | bound |
-//! |---|---|
-//! | v·kⱼ, a·h, v'·h (rounded) | at most half the first factor's bound plus one: that bound |
-//! | F = F_ext − Σ v·kⱼ, every partial sum | ≤ 2^b_F + 4·2^b_v ≤ 2^e_F, e_F = max(b_F, b_v) + 3 |
-//! | F·(1/m) (rounded) | ≤ 2^(e_F + b_m − 32) + 1 ≤ 2^e_P, e_P = max(e_F + b_m − 32, 0) + 1 |
-//! | a = g + F·(1/m) | ≤ 2^e_a, e_a = max(b_g, e_P) + 1 |
-//! | v' = v + a·h | ≤ 2^e_v, e_v = max(b_v, e_a) + 1 |
-//! | x' = x + v'·h | ≤ 2^e_x, e_x = max(b_x, e_v) + 1 |
-//!
-//! When b_m ≤ 62, e_F ≤ 62 and e_x ≤ 62, every value of the table lies within 2⁶² of
-//! zero: no operation of the block leaves the range, so the general path saturates nowhere
-//! in it and its results are the exact rounded values. The kernel computes each of them
-//! exactly modulo 2⁶⁴ (wrapping additions, and the products below), and a value in range is
-//! determined by its residue, so the kernel's bits are the general path's. Blocks that
-//! fail the check (values within a factor of about eight of the range limits, or a huge
-//! 1/m) and a last block whose length is not a multiple of four take the portable guarded
-//! computation, which falls back to the general path when it must. Pinned and dead slots
-//! (1/m = 0) are computed like the others and then given back their old x and v.
-//!
-//! # Products
-//!
-//! AVX2 multiplies 32 by 32 bits into 64 (`vpmuldq` signed, `vpmuludq` unsigned), so each
-//! product is assembled from halves. The checked `*` is ⌊(a·b + 2³¹)/2³²⌋ (to nearest,
-//! ties toward +∞).
-//!
-//! * By a fraction c ∈ [0, 2³¹) (v·kⱼ, a·h, v'·h), for every a: with a = a_h·2³² + a_l,
-//!   a_h = ⌊a/2³²⌋ (the high half, signed) and 0 ≤ a_l < 2³² (the low half, unsigned),
-//!   ⌊(a·c + 2³¹)/2³²⌋ = a_h·c + ⌊(a_l·c + 2³¹)/2³²⌋, since a_h·c·2³² is a multiple of
-//!   2³²: one signed product, and one unsigned product plus 2³¹ (below 2⁶³) shifted right.
-//! * By 1/m = m, for |a| ≤ 2⁶² and 0 ≤ m < 2⁶²: with both split around their low half
-//!   read as signed, a = a_h·2³² + a_l with a_l ∈ [−2³¹, 2³¹) and a_h = ⌊(a + 2³¹)/2³²⌋
-//!   (which fits in 32 signed bits), m likewise,
-//!   ⌊(a·m + 2³¹)/2³²⌋ = a_h·m_h·2³² + a_h·m_l + a_l·m_h + ⌊(a_l·m_l + 2³¹)/2³²⌋: four
-//!   signed products. a_l·m_l + 2³¹ + 2⁶² lies in [2³², 2⁶³ + 2³¹], so its logical shift
-//!   by 32 is the floor plus 2³⁰, which the kernel takes off gravity beforehand. Each term,
-//!   hence the sum, is exact modulo 2⁶⁴.
-//!
-//! The proptests in `tests/avx2.rs` compare the lane products with the checked `*`, blocks
-//! with the general path and steps with the portable path, bit for bit, on values from
-//! zero to the range limits, rounding ties and negative values included.
+//! The AVX2 kernel: four `i64` lanes, four particles (three vectors) at a time. The
+//! arithmetic and why it gives the general path's bits are in the parent module.
 
-use core::any::Any;
 use core::arch::x86_64::{
     __m256i, _mm256_add_epi64, _mm256_and_si256, _mm256_blendv_epi8, _mm256_cmpeq_epi64,
     _mm256_cmpgt_epi64, _mm256_extract_epi64, _mm256_loadu_si256, _mm256_mul_epi32,
@@ -68,132 +8,10 @@ use core::arch::x86_64::{
     _mm256_set1_epi64x, _mm256_setzero_si256, _mm256_slli_epi64, _mm256_srli_epi64,
     _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
 };
-use core::mem::{offset_of, size_of};
 
-use super::{Block, Buffers, for_each_block};
-use crate::math::{Fraction, Fx, Real, Vec3};
-use crate::particles::forces::LinearField;
-use crate::particles::storage::{Attributes, Kinematics};
-
-// The layout the loads and stores rely on: `Fx` is one `i64` (`repr(transparent)` over the
-// `fixed` crate's `repr(transparent)` `FixedI64`), `Vec3<Fx>` is x, y, z in a row.
-const _: () = {
-    assert!(size_of::<Fx>() == 8);
-    assert!(size_of::<Vec3<Fx>>() == 24);
-    assert!(offset_of!(Vec3<Fx>, x) == 0);
-    assert!(offset_of!(Vec3<Fx>, y) == 8);
-    assert!(offset_of!(Vec3<Fx>, z) == 16);
-};
-
-/// The fused step with this kernel, when it applies: `R` is I32F32 and the processor has
-/// AVX2. Returns whether it ran.
-pub(super) fn step<R: Real>(
-    field: &LinearField<R>,
-    h: Fraction<R>,
-    kinematics: &mut Kinematics<R>,
-    attributes: &Attributes<R>,
-) -> bool {
-    let (Some(field), Some(&h), Some(kinematics), Some(attributes)) = (
-        (field as &dyn Any).downcast_ref::<LinearField<Fx>>(),
-        (&h as &dyn Any).downcast_ref::<Fraction<Fx>>(),
-        (kinematics as &mut dyn Any).downcast_mut::<Kinematics<Fx>>(),
-        (attributes as &dyn Any).downcast_ref::<Attributes<Fx>>(),
-    ) else {
-        return false;
-    };
-    if !available() {
-        return false;
-    }
-    let constants = Constants::new(field, h);
-    let mut buffers = Buffers::new();
-    for_each_block(kinematics, attributes, |mut block| {
-        // SAFETY: `available()` above found AVX2 on this processor.
-        if !unsafe { step_block(&mut block, &constants) } {
-            block.step_portable(&mut buffers, field, h);
-        }
-    });
-    true
-}
-
-/// Whether the processor running this has AVX2.
-pub(super) fn available() -> bool {
-    std::arch::is_x86_feature_detected!("avx2")
-}
-
-/// The step's parameters as raw bits.
-pub(super) struct Constants {
-    /// g, m/s².
-    gravity: [i64; 3],
-    /// Bit length of the largest |g| component.
-    gravity_bits: u32,
-    /// kⱼ (kg/s), each in [0, 2³¹), with the group each is restricted to.
-    drags: [(i64, Option<u16>); 4],
-    drag_count: usize,
-    /// Whether some drag is restricted to a group.
-    restricted: bool,
-    /// h (s), in [0, 2³¹).
-    h: i64,
-}
-
-impl Constants {
-    /// The parameters of a step of length `h` in `field`.
-    pub(super) fn new(field: &LinearField<Fx>, h: Fraction<Fx>) -> Self {
-        let g = field.uniform_gravity;
-        let gravity = [g.x.to_bits(), g.y.to_bits(), g.z.to_bits()];
-        let mut drags = [(0, None); 4];
-        for (drag, &(k, group)) in drags.iter_mut().zip(field.drags()) {
-            *drag = (k.get().to_bits(), group);
-        }
-        Self {
-            gravity,
-            gravity_bits: bit_length(gravity.iter().fold(0, |acc, &g| acc | magnitude(g))),
-            drags,
-            drag_count: field.drags().len(),
-            restricted: field.drags().iter().any(|&(_, group)| group.is_some()),
-            h: h.get().to_bits(),
-        }
-    }
-
-    /// Whether a block whose positions, velocities, external forces and inverse masses
-    /// have magnitudes of at most these bit lengths stays in range (module documentation,
-    /// "Bounds").
-    fn in_range(&self, bits: BlockBits) -> bool {
-        let e_force = bits.forces.max(bits.velocities) + 3;
-        if bits.inv_masses > 62 || e_force > 62 {
-            return false;
-        }
-        let e_product = (e_force + bits.inv_masses).saturating_sub(32) + 1;
-        let e_acceleration = self.gravity_bits.max(e_product) + 1;
-        let e_velocity = bits.velocities.max(e_acceleration) + 1;
-        let e_position = bits.positions.max(e_velocity) + 1;
-        e_position <= 62
-    }
-}
-
-/// Bit lengths of the largest magnitudes in a block (|value| ≤ 2^bits; a negative inverse
-/// mass counts as 64).
-#[derive(Clone, Copy, Debug)]
-struct BlockBits {
-    positions: u32,
-    velocities: u32,
-    forces: u32,
-    inv_masses: u32,
-    /// Whether some slot has 1/m = 0.
-    pinned: bool,
-}
-
-/// |v| for v ≥ 0, |v| − 1 for v < 0 (the bits of v with the sign's copies cleared): its bit
-/// length b gives |v| ≤ 2^b.
-#[inline(always)]
-fn magnitude(v: i64) -> u64 {
-    (v ^ (v >> 63)) as u64
-}
-
-/// The number of significant bits of `bits` (0 for 0).
-#[inline(always)]
-fn bit_length(bits: u64) -> u32 {
-    u64::BITS - bits.leading_zeros()
-}
+use super::super::Block;
+use super::{BlockBits, Constants, bit_length};
+use crate::math::{Fx, Vec3};
 
 /// Steps the block in place when its length is a multiple of four and its bounds keep
 /// every value in range; returns whether it did (if not, the block is untouched).
@@ -280,8 +98,7 @@ fn step_in_place<const DRAGS: usize, const MIXED: bool>(
     block: &mut Block<'_, Fx>,
     constants: &Constants,
 ) {
-    // g − 2³⁰, which `mul_mass_biased`'s 2³⁰ completes.
-    let [gx, gy, gz] = constants.gravity.map(|g| g.wrapping_sub(1 << 30));
+    let [gx, gy, gz] = constants.gravity_biased();
     let mut drags = [(_mm256_setzero_si256(), None); DRAGS];
     for (lanes, &(k, group)) in drags.iter_mut().zip(&constants.drags) {
         *lanes = (_mm256_set1_epi64x(k), group);
@@ -460,13 +277,13 @@ fn mul_mass_biased(a: __m256i, m: &MassLanes) -> __m256i {
     )
 }
 
-/// The twelve components of four vectors, as three vectors of lanes.
+/// The components of four vectors, as three vectors of lanes.
 #[inline]
 #[target_feature(enable = "avx2")]
 fn load(values: &[Vec3<Fx>; 4]) -> [__m256i; 3] {
     let p = values.as_ptr().cast::<__m256i>();
-    // SAFETY: `values` is 96 bytes of `i64` (layout asserted above); the three unaligned
-    // 32-byte reads at byte 0, 32 and 64 stay inside it.
+    // SAFETY: `values` is 96 bytes of `i64` (layout asserted in the parent module); the
+    // three unaligned 32-byte reads at byte 0, 32 and 64 stay inside it.
     unsafe {
         [
             _mm256_loadu_si256(p),
@@ -480,7 +297,8 @@ fn load(values: &[Vec3<Fx>; 4]) -> [__m256i; 3] {
 #[inline]
 #[target_feature(enable = "avx2")]
 fn load_masses(values: &[Fx; 4]) -> __m256i {
-    // SAFETY: `values` is 32 bytes of `i64` (layout asserted above); the read is unaligned.
+    // SAFETY: `values` is 32 bytes of `i64` (layout asserted in the parent module); the
+    // read is unaligned.
     unsafe { _mm256_loadu_si256(values.as_ptr().cast::<__m256i>()) }
 }
 
@@ -489,9 +307,9 @@ fn load_masses(values: &[Fx; 4]) -> __m256i {
 #[target_feature(enable = "avx2")]
 fn store(values: &mut [Vec3<Fx>; 4], lanes: [__m256i; 3]) {
     let p = values.as_mut_ptr().cast::<__m256i>();
-    // SAFETY: `values` is 96 bytes of `i64` (layout asserted above), borrowed mutably; the
-    // three unaligned 32-byte writes at byte 0, 32 and 64 stay inside it, and every bit
-    // pattern is a valid `Fx`.
+    // SAFETY: `values` is 96 bytes of `i64` (layout asserted in the parent module),
+    // borrowed mutably; the three unaligned 32-byte writes at byte 0, 32 and 64 stay
+    // inside it, and every bit pattern is a valid `Fx`.
     unsafe {
         _mm256_storeu_si256(p, lanes[0]);
         _mm256_storeu_si256(p.add(1), lanes[1]);
@@ -499,35 +317,41 @@ fn store(values: &mut [Vec3<Fx>; 4], lanes: [__m256i; 3]) {
     }
 }
 
-/// The lane operations on arrays, for the tests.
+/// [`mul_fraction`] of each pair, for the tests.
 #[cfg(test)]
-pub(super) mod on_arrays {
-    use super::{__m256i, _mm256_extract_epi64, _mm256_set_epi64x, MassLanes};
+#[target_feature(enable = "avx2")]
+pub(super) fn mul_fraction_on(a: &[i64], c: &[i64]) -> Vec<i64> {
+    let (a, c) = (a.as_chunks::<4>().0, c.as_chunks::<4>().0);
+    a.iter()
+        .zip(c)
+        .flat_map(|(a, c)| values(mul_fraction(lanes(a), lanes(c))))
+        .collect()
+}
 
-    #[target_feature(enable = "avx2")]
-    fn lanes(values: [i64; 4]) -> __m256i {
-        _mm256_set_epi64x(values[3], values[2], values[1], values[0])
-    }
+/// [`mul_mass_biased`] of each pair, for the tests.
+#[cfg(test)]
+#[target_feature(enable = "avx2")]
+pub(super) fn mul_mass_biased_on(a: &[i64], m: &[i64]) -> Vec<i64> {
+    let (a, m) = (a.as_chunks::<4>().0, m.as_chunks::<4>().0);
+    a.iter()
+        .zip(m)
+        .flat_map(|(a, m)| values(mul_mass_biased(lanes(a), &MassLanes::new(lanes(m)))))
+        .collect()
+}
 
-    #[target_feature(enable = "avx2")]
-    fn values(lanes: __m256i) -> [i64; 4] {
-        [
-            _mm256_extract_epi64::<0>(lanes),
-            _mm256_extract_epi64::<1>(lanes),
-            _mm256_extract_epi64::<2>(lanes),
-            _mm256_extract_epi64::<3>(lanes),
-        ]
-    }
+#[cfg(test)]
+#[target_feature(enable = "avx2")]
+fn lanes(values: &[i64; 4]) -> __m256i {
+    _mm256_set_epi64x(values[3], values[2], values[1], values[0])
+}
 
-    /// [`super::mul_fraction`] on four lanes.
-    #[target_feature(enable = "avx2")]
-    pub(in super::super) fn mul_fraction(a: [i64; 4], c: [i64; 4]) -> [i64; 4] {
-        values(super::mul_fraction(lanes(a), lanes(c)))
-    }
-
-    /// [`super::mul_mass_biased`] on four lanes.
-    #[target_feature(enable = "avx2")]
-    pub(in super::super) fn mul_mass_biased(a: [i64; 4], m: [i64; 4]) -> [i64; 4] {
-        values(super::mul_mass_biased(lanes(a), &MassLanes::new(lanes(m))))
-    }
+#[cfg(test)]
+#[target_feature(enable = "avx2")]
+fn values(lanes: __m256i) -> [i64; 4] {
+    [
+        _mm256_extract_epi64::<0>(lanes),
+        _mm256_extract_epi64::<1>(lanes),
+        _mm256_extract_epi64::<2>(lanes),
+        _mm256_extract_epi64::<3>(lanes),
+    ]
 }
