@@ -35,9 +35,10 @@
 //! in it and its results are the exact rounded values. The kernels compute each of them
 //! exactly modulo 2⁶⁴ (wrapping additions, and the products below), and a value in range is
 //! determined by its residue, so the kernels' bits are the general path's. Blocks that
-//! fail the check (values within a factor of about eight of the range limits, or a huge
-//! 1/m) and a last block whose length is not a multiple of the lane count take the portable
-//! guarded computation, which falls back to the general path when it must. Pinned and dead
+//! fail the check (magnitudes within a factor of 4 to 32 of the range limits, depending on
+//! the quantity, or 1/m ≥ 2³⁰ kg⁻¹) and a last block whose length is not a multiple of the
+//! lane count take the portable guarded computation, which falls back to the general path
+//! when it must. Pinned and dead
 //! slots (1/m = 0) are computed like the others and then given back their old x and v.
 //!
 //! # Products

@@ -247,7 +247,7 @@ fn half() -> __m256i {
 }
 
 /// ⌊(a·c + 2³¹)/2³²⌋ per lane, for any a and 0 ≤ c < 2³¹: `mul_fraction`, the checked `*`
-/// by a [`Fraction`].
+/// by a [`Fraction`](crate::math::Fraction).
 #[inline]
 #[target_feature(enable = "avx2")]
 fn mul_fraction(a: __m256i, c: __m256i) -> __m256i {

@@ -249,7 +249,7 @@ fn half() -> __m512i {
 }
 
 /// ⌊(a·c + 2³¹)/2³²⌋ per lane, for any a and 0 ≤ c < 2³¹: `mul_fraction`, the checked `*`
-/// by a [`Fraction`].
+/// by a [`Fraction`](crate::math::Fraction).
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn mul_fraction(a: __m512i, c: __m512i) -> __m512i {
