@@ -155,6 +155,7 @@ impl<const DRAGS: usize, const MIXED: bool> Step<DRAGS, MIXED> {
             i64::from(groups[0]),
         );
         for (i, &(k, restriction)) in self.drags.iter().enumerate() {
+            // `step_block` makes every step with a restricted drag `MIXED`.
             match restriction {
                 Some(group) if MIXED => {
                     let acts = _mm256_cmpeq_epi64(groups, _mm256_set1_epi64x(i64::from(group)));
@@ -257,7 +258,7 @@ fn mul_fraction(a: __m256i, c: __m256i) -> __m256i {
 }
 
 /// ⌊(a·m + 2³¹)/2³²⌋ + 2³⁰ per lane (the checked `*` by 1/m, plus 2³⁰), modulo 2⁶⁴, for
-/// |a| ≤ 2⁶² and 0 ≤ m < 2⁶² (module documentation, "Products").
+/// |a| ≤ 2⁶² and 0 ≤ m < 2⁶² (the parent module's documentation, "Products").
 #[inline]
 #[target_feature(enable = "avx2")]
 fn mul_mass_biased(a: __m256i, m: &MassLanes) -> __m256i {

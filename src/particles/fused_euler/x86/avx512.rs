@@ -156,6 +156,7 @@ impl<const DRAGS: usize, const MIXED: bool> Step<DRAGS, MIXED> {
             i64::from(groups[0]),
         );
         for (i, &(k, restriction)) in self.drags.iter().enumerate() {
+            // `step_block` makes every step with a restricted drag `MIXED`.
             match restriction {
                 Some(group) if MIXED => {
                     let group = _mm512_set1_epi64(i64::from(group));
@@ -259,7 +260,7 @@ fn mul_fraction(a: __m512i, c: __m512i) -> __m512i {
 }
 
 /// ⌊(a·m + 2³¹)/2³²⌋ + 2³⁰ per lane (the checked `*` by 1/m, plus 2³⁰), modulo 2⁶⁴, for
-/// |a| ≤ 2⁶² and 0 ≤ m < 2⁶² (module documentation, "Products").
+/// |a| ≤ 2⁶² and 0 ≤ m < 2⁶² (the parent module's documentation, "Products").
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn mul_mass_biased(a: __m512i, m: &MassLanes) -> __m512i {
