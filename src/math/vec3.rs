@@ -8,6 +8,10 @@ use super::fixed_scalar::Fx;
 use super::real::Real;
 
 /// A 3-vector. Arithmetic follows the scalar's policy (saturating for fixed point).
+///
+/// `repr(C)`: x, y, z in this order with no padding, so a slice of `Vec3<Fx>` is a run of
+/// `i64` that SIMD kernels can load as it is.
+#[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub struct Vec3<R: Real = Fx> {

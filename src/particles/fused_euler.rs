@@ -40,6 +40,16 @@
 //! block gives the same bits and the same saturation count as running it over all slots at
 //! once. The guarded operators never count, so the counter sees exactly the general path's
 //! saturations.
+//!
+//! # I32F32 in vector code
+//!
+//! On x86-64 processors with AVX2 or AVX-512 (detected at run time), I32F32 blocks go to
+//! `x86` first: one pass takes the magnitudes of the block's values, and when these bound
+//! every result of the block inside the range (so that the general path saturates nowhere
+//! in it), the block is computed in place, four or eight lanes at a time, by exact integer
+//! identities for the rounded products. Other blocks run as above. The result is the
+//! general path's in every case; other processors, targets and formats never take this
+//! path.
 
 use super::forces::{LinearField, add_linear_drag, applies_to, forces_to_accelerations};
 use super::integrators::kick_then_drift;
@@ -50,31 +60,53 @@ use crate::math::{Fraction, Guard, Real, Vec3};
 const BLOCK: usize = 64;
 
 /// One semi-implicit Euler step of length `h` (s) of every movable particle in `field`.
+///
+/// I32F32 takes the vector kernels of `x86` on x86-64 processors that have AVX2 or AVX-512
+/// (checked at run time); everything else takes the portable guarded computation. Both
+/// give the general path's bits.
 pub(super) fn step<R: Real>(
     field: &LinearField<R>,
     h: Fraction<R>,
     kinematics: &mut Kinematics<R>,
     attributes: &Attributes<R>,
 ) {
-    let slots = kinematics.positions.len();
+    #[cfg(target_arch = "x86_64")]
+    if x86::step(field, h, kinematics, attributes) {
+        return;
+    }
+    step_portable(field, h, kinematics, attributes);
+}
+
+/// [`step`] with the portable guarded computation for every block.
+pub(super) fn step_portable<R: Real>(
+    field: &LinearField<R>,
+    h: Fraction<R>,
+    kinematics: &mut Kinematics<R>,
+    attributes: &Attributes<R>,
+) {
     let mut buffers = Buffers::new();
+    for_each_block(kinematics, attributes, |block| {
+        block.step_portable(&mut buffers, field, h);
+    });
+}
+
+/// Calls `f` on each block of [`BLOCK`] slots in turn.
+fn for_each_block<R: Real>(
+    kinematics: &mut Kinematics<R>,
+    attributes: &Attributes<R>,
+    mut f: impl FnMut(Block<'_, R>),
+) {
+    let slots = kinematics.positions.len();
     let mut start = 0;
     while start < slots {
         let range = start..slots.min(start + BLOCK);
-        let len = range.len();
-        let block = Block {
+        f(Block {
             positions: &mut kinematics.positions[range.clone()],
             velocities: &mut kinematics.velocities[range.clone()],
             external_forces: &attributes.external_forces[range.clone()],
             inv_masses: &attributes.inv_masses[range.clone()],
             groups: &attributes.groups[range.clone()],
-        };
-        if buffers.step_guarded(&block, field, h) {
-            block.velocities.copy_from_slice(&buffers.velocities[..len]);
-            block.positions.copy_from_slice(&buffers.positions[..len]);
-        } else {
-            block.step_checked(field, h.get());
-        }
+        });
         start = range.end;
     }
 }
@@ -89,6 +121,18 @@ struct Block<'a, R: Real> {
 }
 
 impl<R: Real> Block<'_, R> {
+    /// The block's step with the portable guarded computation into `buffers`, copied to the
+    /// state when its guard stays clear; through the general path's passes otherwise.
+    fn step_portable(self, buffers: &mut Buffers<R>, field: &LinearField<R>, h: Fraction<R>) {
+        if buffers.step_guarded(&self, field, h) {
+            let len = self.positions.len();
+            self.velocities.copy_from_slice(&buffers.velocities[..len]);
+            self.positions.copy_from_slice(&buffers.positions[..len]);
+        } else {
+            self.step_checked(field, h.get());
+        }
+    }
+
     /// The general path's passes, restricted to the block.
     fn step_checked(self, field: &LinearField<R>, h: R) {
         let mut forces = [Vec3::ZERO; BLOCK];
@@ -182,3 +226,5 @@ fn zip_with<R: Real>(a: Vec3<R>, b: Vec3<R>, mut f: impl FnMut(R, R) -> R) -> Ve
 
 #[cfg(test)]
 mod tests;
+#[cfg(target_arch = "x86_64")]
+mod x86;

@@ -5,6 +5,9 @@
 
 use proptest::prelude::*;
 
+#[cfg(target_arch = "x86_64")]
+mod x86;
+
 use crate::math::saturation::count_saturations;
 use crate::math::{Fraction, Fx, FxI48F16, Real, Vec3};
 use crate::particles::SpringDesc;
