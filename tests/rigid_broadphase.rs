@@ -449,3 +449,25 @@ fn mismatched_flags_panic() {
         &mut out,
     );
 }
+
+/// Boxes piled on one spot overlap pairwise: past `MAX_PAIRS` pairs the call reports that it
+/// stopped, with nothing in `out`, instead of filling memory.
+#[test]
+fn too_many_pairs_stop_the_scan() {
+    use fixstep::rigid::broadphase::MAX_PAIRS;
+    let n = 1000; // 499,500 pairs
+    assert!(n * (n - 1) / 2 > MAX_PAIRS);
+    let unit = Aabb {
+        min: Vec3::splat(Fx::ZERO),
+        max: Vec3::splat(Fx::ONE),
+    };
+    let mut out = Vec::new();
+    let mut bp = BroadPhase::<Fx>::new();
+    assert!(!bp.find_pairs(&vec![unit; n], &vec![true; n], &vec![true; n], &mut out));
+    assert!(out.is_empty());
+    // A smaller pile is reported in full by the same broadphase.
+    let m = 700; // 244,650 pairs
+    assert!(m * (m - 1) / 2 <= MAX_PAIRS);
+    assert!(bp.find_pairs(&vec![unit; m], &vec![true; m], &vec![true; m], &mut out));
+    assert_eq!(out.len(), m * (m - 1) / 2);
+}

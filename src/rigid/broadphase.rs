@@ -580,6 +580,8 @@ fn window<R: Real>(entries: &[Entry<R>], reach: R) -> usize {
 struct Sink<'a> {
     /// The pairs found, unordered.
     out: &'a mut Vec<(u32, u32)>,
+    /// Scanning stops once `out` holds more than this many pairs.
+    limit: usize,
     /// Every box has `min ≤ max` along the sweep axis (see [`scan`]).
     valid: bool,
 }
@@ -594,9 +596,9 @@ struct Sink<'a> {
 #[inline(always)]
 fn scan<R: Real>(entries: &[Entry<R>], q: &Entry<R>, before: bool, sink: &mut Sink<'_>) {
     match (sink.valid, before) {
-        (true, false) => scan_with::<R, false, false>(entries, q, sink.out),
-        (true, true) => scan_with::<R, true, false>(entries, q, sink.out),
-        (false, _) => scan_with::<R, true, true>(entries, q, sink.out),
+        (true, false) => scan_with::<R, false, false>(entries, q, sink.out, sink.limit),
+        (true, true) => scan_with::<R, true, false>(entries, q, sink.out, sink.limit),
+        (false, _) => scan_with::<R, true, true>(entries, q, sink.out, sink.limit),
     }
 }
 
@@ -610,9 +612,13 @@ fn scan_with<R: Real, const UPPER: bool, const LOWER: bool>(
     entries: &[Entry<R>],
     q: &Entry<R>,
     out: &mut Vec<(u32, u32)>,
+    limit: usize,
 ) {
     let b = &q.bounds;
     for chunk in entries.chunks(64) {
+        if out.len() > limit {
+            return;
+        }
         let mut mask = 0u64;
         for (k, e) in chunk.iter().enumerate() {
             let o = &e.bounds;
@@ -667,6 +673,11 @@ fn cross_sweep<R: Real>(xs: &[Entry<R>], ys: &[Entry<R>], sink: &mut Sink<'_>) {
         }
     }
 }
+
+/// The most overlapping pairs one call reports (2¹⁸, about 260,000; the 4096-ball pile has
+/// about 13,000). Beyond it the bodies are piled so densely that every pair's manifold and
+/// constraint would not fit in memory; see [`BroadPhase::find_pairs`].
+pub const MAX_PAIRS: usize = 1 << 18;
 
 /// Sort-and-sweep broadphase. Its internal state (the layout and the remembered sort
 /// orders) is a cache: the pairs it returns depend only on the boxes and flags passed in,
@@ -737,6 +748,11 @@ impl<R: Real> BroadPhase<R> {
     ///
     /// The result depends only on the arguments, not on earlier calls.
     ///
+    /// Returns false, with `out` empty, when more than [`MAX_PAIRS`] pairs overlap (boxes
+    /// piled on one spot): the scan stops there, so memory stays bounded. Whether that
+    /// happens depends only on the number of overlapping pairs, not on the order they are
+    /// found in, so it is the same on every machine.
+    ///
     /// # Panics
     ///
     /// If `active` or `present` is not as long as `boxes`, or there are more than
@@ -747,7 +763,7 @@ impl<R: Real> BroadPhase<R> {
         active: &[bool],
         present: &[bool],
         out: &mut Vec<(u32, u32)>,
-    ) {
+    ) -> bool {
         let n = boxes.len();
         assert_eq!(active.len(), n, "find_pairs: one active flag per box");
         assert_eq!(present.len(), n, "find_pairs: one present flag per box");
@@ -793,11 +809,17 @@ impl<R: Real> BroadPhase<R> {
 
         let mut sink = Sink {
             out,
+            limit: MAX_PAIRS,
             valid: self.awake.inverted == 0 && self.resting.inverted == 0,
         };
         self.sweep(&mut sink);
+        if out.len() > MAX_PAIRS {
+            out.clear();
+            return false;
+        }
         sort_pairs(out, n, &mut self.counts, &mut self.pair_scratch);
         debug_assert!(out.windows(2).all(|w| w[0] < w[1]));
+        true
     }
 
     /// True when every resting box is bit for bit the box it was when the resting list

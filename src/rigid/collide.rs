@@ -4,7 +4,9 @@
 //!    body is recomputed; those of static and sleeping bodies are cached.
 //! 2. The broadphase lists overlapping boxes with at least one moving body, in ascending
 //!    (a, b) order; static planes, which have no box, are tested against each moving body's
-//!    box directly.
+//!    box directly. When more than [`MAX_PAIRS`](super::broadphase::MAX_PAIRS) boxes overlap
+//!    (bodies piled on one spot), the step finds no new contacts and counts one saturation,
+//!    so the run warns instead of running out of memory.
 //! 3. The narrowphase computes each pair's manifold (part by part for compounds); each
 //!    point takes the impulses of the point with the same feature id in last step's contact
 //!    of the same key.
@@ -22,19 +24,27 @@ use super::shape::Shape;
 use super::system::RigidSystem;
 use super::transform::Transform;
 use crate::math::Real;
+use crate::math::saturation::record_saturation;
 
 impl<R: Real> RigidSystem<R> {
     /// Stage 1: recomputes the contact list (see the [module](self) documentation).
     pub(crate) fn collide(&mut self) {
         self.update_bounds();
         let scratch = &mut self.scratch;
-        scratch.broadphase.find_pairs(
+        let complete = scratch.broadphase.find_pairs(
             &scratch.aabbs,
             &scratch.active,
             &scratch.present,
             &mut scratch.pairs,
         );
-        for &plane in &scratch.planes {
+        if !complete {
+            // More than MAX_PAIRS boxes overlap: no new contacts this step, reported as a
+            // saturation (the run warns) rather than running out of memory.
+            record_saturation();
+            scratch.pairs.clear();
+        }
+        let planes: &[u32] = if complete { &scratch.planes } else { &[] };
+        for &plane in planes {
             let p = plane as usize;
             for (i, aabb) in scratch.aabbs.iter().enumerate() {
                 if scratch.active[i]
