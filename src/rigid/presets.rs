@@ -238,3 +238,62 @@ pub fn spinner<R: Real>() -> RigidDesc<R> {
         },
     }
 }
+
+/// The rigid part of the showcase, 10 m behind the particles (z = −10): a stack of four unit
+/// cubes, three bouncy balls (e = 0.6) dropped on and beside it, a capsule tumbling down
+/// from above, and a dumbbell (a compound of two balls on a bar) landing on one end, all on
+/// the ground plane y ≤ 0.
+pub fn showcase<R: Real>() -> RigidDesc<R> {
+    use super::shape::Part;
+    let z = -R::from_int(10);
+    let mut stack = unit_box(Vec3::new(R::ZERO, R::HALF, z));
+    stack.grid = Some(Grid {
+        count: (1, 4, 1),
+        spacing: Vec3::Y,
+    });
+    let mut balls = BodyDesc::new(
+        Shape::Sphere {
+            radius: ratio(3, 10),
+        },
+        Vec3::new(-R::ONE, R::from_int(6), z),
+    );
+    balls.material.restitution = ratio(6, 10);
+    balls.grid = Some(Grid {
+        count: (3, 1, 1),
+        spacing: Vec3::new(R::ONE, R::ONE, R::ZERO),
+    });
+    let mut capsule = BodyDesc::new(
+        Shape::Capsule {
+            radius: ratio(1, 4),
+            half_height: ratio(1, 2),
+        },
+        Vec3::new(R::TWO, R::from_int(3), z),
+    );
+    capsule.orientation = Quat::from_axis_angle(Vec3::new(R::ONE, R::ZERO, R::ONE), R::ONE);
+    capsule.angular_velocity = Vec3::new(R::ZERO, R::ZERO, R::from_int(3));
+    let ball = |x: i32| Part {
+        rotation: Quat::IDENTITY,
+        translation: Vec3::new(R::from_ratio(i64::from(x), 2), R::ZERO, R::ZERO),
+        shape: Shape::Sphere {
+            radius: ratio(1, 4),
+        },
+    };
+    let bar = Part {
+        rotation: Quat::IDENTITY,
+        translation: Vec3::ZERO,
+        shape: Shape::Box {
+            half_extents: Vec3::new(R::HALF, ratio(1, 20), ratio(1, 20)),
+        },
+    };
+    let mut dumbbell = BodyDesc::new(
+        Shape::Compound {
+            parts: vec![ball(-1), bar, ball(1)],
+        },
+        Vec3::new(-R::from_int(3), R::TWO, z),
+    );
+    dumbbell.orientation = Quat::from_axis_angle(Vec3::Z, ratio(1, 2));
+    RigidDesc {
+        bodies: vec![ground(), stack, balls, capsule, dumbbell],
+        solver: SolverSettings::default(),
+    }
+}

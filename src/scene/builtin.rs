@@ -9,7 +9,7 @@ use crate::rigid::presets as rigid;
 pub const BUILTIN_SCENES: [(&str, &str); 10] = [
     (
         "showcase",
-        "everything fixstep simulates so far: emitters, springs and damping",
+        "everything fixstep simulates so far: emitters, springs, damping, and rigid bodies stacking, bouncing and tumbling",
     ),
     (
         "fountain",
@@ -55,6 +55,7 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
     match *name {
         "showcase" => {
             scene.particles = Some(presets::showcase_particles());
+            scene.rigid = Some(rigid::showcase());
             scene.ticks = 600;
         }
         "fountain" => {
