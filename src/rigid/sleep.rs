@@ -83,6 +83,7 @@ impl<R: Real> RigidSystem<R> {
         let lin2 = self.settings.linear_sleep_speed * self.settings.linear_sleep_speed;
         let ang2 = self.settings.angular_sleep_speed * self.settings.angular_sleep_speed;
         let bodies = &mut self.bodies;
+        let scratch = &mut self.scratch;
         for i in 0..n {
             if !bodies.is_awake_dynamic(i) {
                 continue;
@@ -98,7 +99,9 @@ impl<R: Real> RigidSystem<R> {
 
         // Union-find over touching contacts between awake dynamic bodies; a body touching a
         // moving kinematic body stays awake.
-        let mut parent: Vec<u32> = (0..n as u32).collect();
+        let parent = &mut scratch.island_parent;
+        parent.clear();
+        parent.extend(0..n as u32);
         for c in &self.contacts {
             if c.count == 0 {
                 continue;
@@ -106,7 +109,7 @@ impl<R: Real> RigidSystem<R> {
             let (a, b) = (c.key.body_a as usize, c.key.body_b as usize);
             let (dyn_a, dyn_b) = (bodies.is_awake_dynamic(a), bodies.is_awake_dynamic(b));
             if dyn_a && dyn_b {
-                union(&mut parent, a, b);
+                union(parent, a, b);
             } else if dyn_a && kinematic_moving(bodies, b) {
                 bodies.sleep_time[a] = R::ZERO;
             } else if dyn_b && kinematic_moving(bodies, a) {
@@ -115,10 +118,12 @@ impl<R: Real> RigidSystem<R> {
         }
 
         // The shortest sleep time of each island, held at its root.
-        let mut island_time: Vec<R> = vec![R::MAX; n];
+        let island_time = &mut scratch.island_time;
+        island_time.clear();
+        island_time.resize(n, R::MAX);
         for i in 0..n {
             if bodies.is_awake_dynamic(i) {
-                let root = find(&mut parent, i);
+                let root = find(parent, i);
                 island_time[root] = island_time[root].min(bodies.sleep_time[i]);
             }
         }
@@ -126,7 +131,7 @@ impl<R: Real> RigidSystem<R> {
         let mut fell_asleep = Vec::new();
         for i in 0..n {
             if bodies.is_awake_dynamic(i) {
-                let root = find(&mut parent, i);
+                let root = find(parent, i);
                 if island_time[root] >= time_to_sleep {
                     bodies.asleep[i] = true;
                     bodies.island[i] = root as u32;

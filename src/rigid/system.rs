@@ -55,6 +55,10 @@ pub(crate) struct Scratch<R: Real> {
     pub broadphase: BroadPhase<R>,
     pub pairs: Vec<(u32, u32)>,
     pub solver: Solver<R>,
+    /// Union-find parents of the sleep stage, by slot.
+    pub island_parent: Vec<u32>,
+    /// The shortest sleep time of each island, at its root's slot.
+    pub island_time: Vec<R>,
 }
 
 impl<R: Real> Clone for Scratch<R> {
