@@ -1,7 +1,6 @@
 //! Stage 3 of a rigid step: build the solver's bodies and constraints, run the
 //! [solver](super::solver), and copy the velocities and impulses back.
 
-use super::desc::BodyKind;
 use super::material::{mix_friction, mix_restitution};
 use super::solver::{STATIC_BODY, Softness, SolverBody, prepare_constraint};
 use super::system::RigidSystem;
@@ -34,11 +33,8 @@ impl<R: Real> RigidSystem<R> {
                 dp: Vec3::ZERO,
                 dtheta: Vec3::ZERO,
                 inv_mass: bodies.inv_mass[i],
-                inv_inertia: if bodies.kind[i] == BodyKind::Dynamic {
-                    rotation.rotate_inertia(bodies.inv_inertia[i])
-                } else {
-                    crate::math::Mat3::ZERO
-                },
+                // Zero for kinematic bodies (their stored inverse inertia is zero).
+                inv_inertia: rotation.rotate_inertia(bodies.inv_inertia[i]),
             });
         }
 

@@ -1,9 +1,9 @@
 //! Sphere against capsule: a sphere against the closest point of the capsule's segment.
 
 use super::segments::Segment;
-use super::tolerance::unit_from_squared;
+use super::sphere_sphere::ball_contact;
 use crate::math::{Real, Vec3};
-use crate::rigid::manifold::{Manifold, ManifoldPoint};
+use crate::rigid::manifold::Manifold;
 
 /// The contact of sphere A (centre `centre`, radius `radius`, m) with capsule B (segment
 /// `segment`, radius `capsule_radius`, m). One point, id 0.
@@ -22,24 +22,7 @@ pub(super) fn sphere_capsule<R: Real>(
     margin: R,
 ) -> Manifold<R> {
     let q = segment.at(segment.closest_parameter(centre));
-    let d = q - centre;
-    let distance_squared = d.length_squared();
-    let radii = radius + capsule_radius;
-    let reach = radii + margin;
-    if distance_squared > reach * reach {
-        return Manifold::EMPTY;
-    }
-    let (normal, distance) = unit_from_squared(d, distance_squared)
-        .unwrap_or_else(|| (-segment.axis.any_orthonormal(), R::ZERO));
-    let separation = distance - radii;
-    let mut manifold = Manifold {
-        normal,
-        ..Manifold::EMPTY
-    };
-    manifold.push(ManifoldPoint {
-        point: centre + normal * (radius + separation * R::HALF),
-        separation,
-        id: 0,
-    });
-    manifold
+    ball_contact(centre, radius, q, capsule_radius, margin, || {
+        -segment.axis.any_orthonormal()
+    })
 }

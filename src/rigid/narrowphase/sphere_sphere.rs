@@ -19,6 +19,21 @@ pub(super) fn sphere_sphere<R: Real>(
     radius_b: R,
     margin: R,
 ) -> Manifold<R> {
+    ball_contact(centre_a, radius_a, centre_b, radius_b, margin, || Vec3::Y)
+}
+
+/// The contact of two balls, as [`sphere_sphere`], with the normal `fallback()` when the
+/// centres are too close to give a direction (the separation is then −r_A − r_B). A sphere
+/// against a capsule is this with the capsule's closest segment point as ball B.
+#[inline]
+pub(super) fn ball_contact<R: Real>(
+    centre_a: Vec3<R>,
+    radius_a: R,
+    centre_b: Vec3<R>,
+    radius_b: R,
+    margin: R,
+    fallback: impl FnOnce() -> Vec3<R>,
+) -> Manifold<R> {
     let d = centre_b - centre_a;
     let distance_squared = d.length_squared();
     let radii = radius_a + radius_b;
@@ -26,7 +41,8 @@ pub(super) fn sphere_sphere<R: Real>(
     if distance_squared > reach * reach {
         return Manifold::EMPTY;
     }
-    let (normal, distance) = unit_from_squared(d, distance_squared).unwrap_or((Vec3::Y, R::ZERO));
+    let (normal, distance) =
+        unit_from_squared(d, distance_squared).unwrap_or_else(|| (fallback(), R::ZERO));
     let separation = distance - radii;
     let mut manifold = Manifold {
         normal,
