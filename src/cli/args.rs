@@ -4,6 +4,8 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::viewer::View;
+
 /// Deterministic fixed-point physics: run scenes, record and verify replays.
 ///
 /// With no command, runs the showcase scene.
@@ -41,6 +43,9 @@ pub enum Command {
         #[arg(required = true, value_name = "FILE.replay")]
         files: Vec<PathBuf>,
     },
+    /// Draw a replay or a scene: PNG frames, an animated GIF and an interactive
+    /// DIR/index.html player.
+    Render(RenderArgs),
     /// Measure the integrators: accuracy against exact solutions, and stability limits.
     Bench {
         /// Which benchmark.
@@ -116,6 +121,66 @@ impl Default for RunArgs {
             from_snapshot: None,
         }
     }
+}
+
+/// Arguments of `fixstep render`.
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    /// A replay file (re-simulated with its inputs), a built-in scene name or a RON scene
+    /// file (run with its script).
+    #[arg(value_name = "REPLAY|SCENE")]
+    pub input: String,
+    /// Ticks to simulate (default: the replay's ticks, or the scene's `ticks`).
+    #[arg(long, value_name = "N")]
+    pub ticks: Option<u64>,
+    /// Output directory (created if missing).
+    #[arg(long, value_name = "DIR", default_value = "render-out")]
+    pub out: PathBuf,
+    /// Draw a frame every K ticks (and after the last tick).
+    #[arg(long, value_name = "K", default_value_t = 1,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// The view of the pictures and the GIF, and the player's first view.
+    #[arg(long, value_name = "iso|front|top", default_value = "iso", value_parser = parse_view)]
+    pub view: View,
+    /// Picture size in pixels, WIDTHxHEIGHT (each 16 to 4096).
+    #[arg(long, value_name = "WxH", default_value = "640x480", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// One flat colour per body, no shading, outlines or anti-aliasing (to count bodies).
+    #[arg(long)]
+    pub flat: bool,
+}
+
+/// A view name.
+fn parse_view(text: &str) -> Result<View, String> {
+    View::from_name(text).ok_or_else(|| format!("`{text}` is not a view: use iso, front or top"))
+}
+
+/// Smallest and largest picture side, px.
+const SIDE: core::ops::RangeInclusive<u32> = 16..=4096;
+
+/// A picture size `WxH`.
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = |why: &str| format!("`{text}` is not a picture size WIDTHxHEIGHT: {why}");
+    let (w, h) = text
+        .split_once(['x', 'X'])
+        .ok_or_else(|| bad("no `x` between width and height"))?;
+    let side = |part: &str, name: &str| -> Result<u32, String> {
+        let value: u32 = part
+            .trim()
+            .parse()
+            .map_err(|e| bad(&format!("the {name} `{part}` is not a whole number ({e})")))?;
+        if SIDE.contains(&value) {
+            Ok(value)
+        } else {
+            Err(bad(&format!(
+                "the {name} {value} is outside {} to {} pixels",
+                SIDE.start(),
+                SIDE.end()
+            )))
+        }
+    };
+    Ok((side(w, "width")?, side(h, "height")?))
 }
 
 /// A seed: decimal, or hexadecimal after `0x`.

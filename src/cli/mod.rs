@@ -8,6 +8,8 @@
 //! fixstep verify FILE.replay...
 //! fixstep info FILE.replay
 //! fixstep rerecord FILE.replay...
+//! fixstep render REPLAY|SCENE [--ticks N] [--out DIR] [--every K]
+//!                            [--view iso|front|top] [--size WxH] [--flat]
 //! fixstep bench accuracy [--out DIR] [--quick]
 //! fixstep bench stability [--out DIR]
 //! ```
@@ -22,6 +24,7 @@ mod info;
 mod metrics_csv;
 mod output;
 mod progress;
+mod render;
 mod rerecord;
 mod run;
 mod scene_arg;
@@ -34,7 +37,7 @@ use std::ffi::OsString;
 
 use clap::Parser;
 
-pub use args::{BenchCommand, Cli, Command, RunArgs};
+pub use args::{BenchCommand, Cli, Command, RenderArgs, RunArgs};
 pub use status::Status;
 
 /// Runs the command line of this process; returns the exit code.
@@ -68,6 +71,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         Some(Command::Verify { files }) => verify::verify_files(&files),
         Some(Command::Info { file }) => info::info(&file),
         Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
+        Some(Command::Render(args)) => render::render(&args),
         Some(Command::Bench { benchmark }) => bench::bench(&benchmark),
     };
     match result {

@@ -1,0 +1,77 @@
+//! A film: the frames of a run, every K ticks, with what they share (bounds and colours).
+
+use super::colour::Palette;
+use super::draw_list::{Bounds, Frame, Primitive};
+use super::draw_particles::draw_particles;
+use super::draw_rigid::{BodyColours, draw_rigid};
+use crate::math::{Fx, Real};
+use crate::replay::InputFeed;
+use crate::world::{TickInput, World};
+
+/// Fraction of the scene's largest side added around it, so the ground shows.
+const PADDING: f64 = 0.06;
+
+/// The drawn frames of a run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Film {
+    /// Frames at ticks 0, K, 2K, … and the last tick.
+    pub frames: Vec<Frame>,
+    /// The padded box around every figure of every frame: what each view is fitted to.
+    pub bounds: Bounds,
+    /// The colours of the whole film.
+    pub palette: Palette,
+    /// Ticks per simulated second.
+    pub tick_rate: u32,
+}
+
+/// The frame of the world's current tick.
+pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
+    let mut primitives: Vec<Primitive> = Vec::new();
+    if let Some(rigid) = world.rigid() {
+        draw_rigid(rigid, colours, &mut primitives);
+    }
+    if let Some(particles) = world.particles() {
+        draw_particles(particles, &mut primitives);
+    }
+    Frame {
+        tick: world.tick(),
+        energy: world.metrics().total_energy(),
+        checksum: world.checksum().total,
+        primitives,
+    }
+}
+
+impl Film {
+    /// Steps `world` `ticks` times with `inputs` (sorted by tick, as a replay's or a
+    /// scene's script), capturing a frame every `every` ticks (at least 1) and after the
+    /// last tick.
+    pub fn shoot(
+        mut world: World<Fx>,
+        inputs: &[TickInput<Fx>],
+        ticks: u64,
+        every: u64,
+        colours: BodyColours,
+    ) -> Film {
+        let every = every.max(1);
+        let mut feed = InputFeed::new(inputs);
+        let mut frames = vec![capture(&world, colours)];
+        for done in 1..=ticks {
+            let tick = world.tick();
+            world.step(feed.at(tick));
+            if done % every == 0 || done == ticks {
+                frames.push(capture(&world, colours));
+            }
+        }
+        Film::from_frames(frames, world.settings().tick_rate)
+    }
+
+    /// The film of `frames`, with their shared bounds and colours.
+    pub fn from_frames(frames: Vec<Frame>, tick_rate: u32) -> Film {
+        Film {
+            bounds: Bounds::of_frames(&frames).padded(PADDING),
+            palette: Palette::of_frames(&frames),
+            frames,
+            tick_rate,
+        }
+    }
+}

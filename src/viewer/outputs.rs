@@ -1,0 +1,145 @@
+//! Writing a film to a directory: PNG frames, an animated GIF and `index.html`.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc;
+
+use tiny_skia::Pixmap;
+
+use super::film::Film;
+use super::gif::GifWriter;
+use super::html::{PageSettings, page};
+use super::raster::{Look, encode_png, rasterise};
+use super::view::Projection;
+use crate::replay::{AtomicFile, write_atomic};
+
+/// Name of the animated GIF in the output directory.
+pub const GIF_NAME: &str = "animation.gif";
+
+/// Name of the player page in the output directory.
+pub const PAGE_NAME: &str = "index.html";
+
+/// Most threads drawing frames at once.
+const MAX_WORKERS: usize = 8;
+
+/// The PNG file name of the frame at `tick`: `tick-000060.png`.
+pub fn frame_name(tick: u64) -> String {
+    format!("tick-{tick:06}.png")
+}
+
+/// What [`write_outputs`] wrote.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Written {
+    /// The PNG frames, in tick order.
+    pub frames: Vec<PathBuf>,
+    pub gif: PathBuf,
+    pub page: PathBuf,
+}
+
+/// Draws every frame of `film` with `settings` and writes them into `dir` (which must
+/// exist) as PNG files, one GIF and the player page, each atomically. `title` names the
+/// film on the page.
+pub fn write_outputs(
+    film: &Film,
+    title: &str,
+    settings: &PageSettings,
+    dir: &Path,
+) -> Result<Written, String> {
+    let projection = Projection::fit(settings.view, &film.bounds, settings.width, settings.height);
+    let look = Look {
+        palette: film.palette,
+        bounds: film.bounds,
+        flat: settings.flat,
+    };
+    let gif_path = dir.join(GIF_NAME);
+    let gif_file = AtomicFile::create(&gif_path).map_err(|e| write_error(&gif_path, &e))?;
+    let seconds_per_frame = settings.every as f64 / f64::from(film.tick_rate.max(1));
+    let mut gif = GifWriter::new(gif_file, settings.width, settings.height, seconds_per_frame)?;
+    let mut frames = Vec::with_capacity(film.frames.len());
+    draw_in_parallel(film, &projection, &look, |tick, pixmap, png| {
+        let path = dir.join(frame_name(tick));
+        write_replacing(&path, &png).map_err(|e| write_error(&path, &e))?;
+        gif.push(&pixmap)?;
+        frames.push(path);
+        Ok(())
+    })?;
+    gif.finish()?
+        .commit()
+        .map_err(|e| write_error(&gif_path, &e))?;
+    let page_path = dir.join(PAGE_NAME);
+    write_atomic(&page_path, page(film, title, settings).as_bytes())
+        .map_err(|e| write_error(&page_path, &e))?;
+    Ok(Written {
+        frames,
+        gif: gif_path,
+        page: page_path,
+    })
+}
+
+/// A drawn frame: its tick, its pixels and their PNG encoding.
+type Drawn = (u64, Pixmap, Vec<u8>);
+
+/// Draws and PNG-encodes the frames of `film` on one worker thread per core (each frame
+/// is independent, so the bytes do not depend on the thread count) and hands them to
+/// `take` in tick order, on this thread. Stops at the first error.
+fn draw_in_parallel(
+    film: &Film,
+    projection: &Projection,
+    look: &Look,
+    mut take: impl FnMut(u64, Pixmap, Vec<u8>) -> Result<(), String>,
+) -> Result<(), String> {
+    let count = film.frames.len();
+    let workers = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .clamp(1, MAX_WORKERS);
+    std::thread::scope(|scope| {
+        let (sender, receiver) = mpsc::sync_channel::<(usize, Result<Drawn, String>)>(2 * workers);
+        for worker in 0..workers {
+            let sender = sender.clone();
+            scope.spawn(move || {
+                for index in (worker..count).step_by(workers) {
+                    let frame = &film.frames[index];
+                    let drawn = rasterise(frame, projection, look).and_then(|pixmap| {
+                        let png = encode_png(&pixmap)?;
+                        Ok((frame.tick, pixmap, png))
+                    });
+                    if sender.send((index, drawn)).is_err() {
+                        return;
+                    }
+                }
+            });
+        }
+        drop(sender);
+        // Frames arrive in any order; they are taken in index order.
+        let mut waiting: BTreeMap<usize, Result<Drawn, String>> = BTreeMap::new();
+        let mut next = 0;
+        for (index, drawn) in receiver {
+            waiting.insert(index, drawn);
+            while let Some(drawn) = waiting.remove(&next) {
+                let (tick, pixmap, png) = drawn?;
+                take(tick, pixmap, png)?;
+                next += 1;
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Writes `bytes` to a temporary file beside `path` and renames it over `path`, so readers
+/// see the old file or the new one, never a part. Unlike
+/// [`write_atomic`](crate::replay::write_atomic) it does not sync each file to disk: a
+/// render writes hundreds of frames, and syncing each would take most of the time.
+fn write_replacing(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let mut name = path.as_os_str().to_owned();
+    name.push(format!(".tmp-{}", std::process::id()));
+    let temporary = PathBuf::from(name);
+    let result = std::fs::write(&temporary, bytes).and_then(|()| std::fs::rename(&temporary, path));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&temporary);
+    }
+    result
+}
+
+fn write_error(path: &Path, error: &std::io::Error) -> String {
+    format!("{}: cannot write: {error}", path.display())
+}
