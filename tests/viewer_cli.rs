@@ -51,6 +51,16 @@ fn render_writes_frames_a_gif_and_the_player() {
         let bytes = std::fs::read(out.path().join(name)).expect(name);
         assert!(bytes.len() > 32, "{name}");
     }
+    let gif = std::fs::read(out.path().join("animation.gif")).expect("the GIF");
+    let mut decoder = gif::DecodeOptions::new()
+        .read_info(std::io::Cursor::new(gif))
+        .expect("a GIF");
+    assert_eq!((decoder.width(), decoder.height()), (96, 64));
+    let mut frames = 0;
+    while decoder.read_next_frame().expect("a frame").is_some() {
+        frames += 1;
+    }
+    assert_eq!(frames, 3, "ticks 0, 5 and 10");
     let page = std::fs::read_to_string(out.path().join("index.html")).expect("index.html");
     assert!(page.contains("<canvas") && page.contains("\"tick\":10"));
     assert!(

@@ -9,7 +9,7 @@
 use std::borrow::Cow;
 use std::io::Write;
 
-use gif::{Encoder, Repeat};
+use gif::{DisposalMethod, Encoder, Repeat};
 use tiny_skia::Pixmap;
 
 use super::colour::{BACKGROUND, GROUND, STATIC, body_colour};
@@ -25,7 +25,12 @@ pub struct GifWriter<W: Write> {
     height: u16,
     /// Hundredths of a second each frame shows.
     delay: u16,
+    /// Palette indices of the picture shown so far.
+    shown: Vec<u8>,
+    /// Palette indices of the frame being pushed.
     indices: Vec<u8>,
+    /// The changed rectangle of the frame being pushed, row by row.
+    patch: Vec<u8>,
 }
 
 /// The palette: the colour cube, then the viewer's flat colours.
@@ -91,7 +96,9 @@ impl<W: Write> GifWriter<W> {
             width,
             height,
             delay,
+            shown: Vec::new(),
             indices: Vec::new(),
+            patch: Vec::new(),
         })
     }
 
@@ -108,16 +115,62 @@ impl<W: Write> GifWriter<W> {
                 | usize::from(p.blue() >> shift);
             self.lookup[key]
         }));
+        // Only the rectangle that changed is stored, over the frame before it (disposal
+        // Keep): a scene at rest costs one pixel per frame.
+        let (left, top, width, height) = self.changed_rectangle();
+        let row = usize::from(self.width);
+        self.patch.clear();
+        for y in top..top + height {
+            let start = y * row + left;
+            self.patch
+                .extend_from_slice(&self.indices[start..start + width]);
+        }
+        core::mem::swap(&mut self.shown, &mut self.indices);
         let frame = gif::Frame {
-            width: self.width,
-            height: self.height,
+            left: left as u16,
+            top: top as u16,
+            width: width as u16,
+            height: height as u16,
             delay: self.delay,
-            buffer: Cow::Borrowed(&self.indices),
+            dispose: DisposalMethod::Keep,
+            buffer: Cow::Borrowed(&self.patch),
             ..gif::Frame::default()
         };
         self.encoder
             .write_frame(&frame)
             .map_err(|e| format!("cannot write the GIF: {e}"))
+    }
+
+    /// (left, top, width, height) of the smallest rectangle holding every pixel of
+    /// `indices` that differs from `shown`: the whole picture for the first frame, one
+    /// pixel when nothing changed.
+    fn changed_rectangle(&self) -> (usize, usize, usize, usize) {
+        let (w, h) = (usize::from(self.width), usize::from(self.height));
+        if self.shown.len() != self.indices.len() {
+            return (0, 0, w, h);
+        }
+        let (mut x0, mut y0, mut x1, mut y1) = (w, h, 0, 0);
+        for (y, (new, old)) in self
+            .indices
+            .chunks_exact(w)
+            .zip(self.shown.chunks_exact(w))
+            .enumerate()
+        {
+            if new == old {
+                continue;
+            }
+            let first = new.iter().zip(old).position(|(a, b)| a != b).unwrap_or(0);
+            let last = new.iter().zip(old).rposition(|(a, b)| a != b).unwrap_or(0);
+            x0 = x0.min(first);
+            x1 = x1.max(last + 1);
+            y0 = y0.min(y);
+            y1 = y + 1;
+        }
+        if x0 >= x1 {
+            (0, 0, 1, 1)
+        } else {
+            (x0, y0, x1 - x0, y1 - y0)
+        }
     }
 
     /// Writes the trailer and hands back the output.

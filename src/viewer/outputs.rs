@@ -1,6 +1,5 @@
 //! Writing a film to a directory: PNG frames, an animated GIF and `index.html`.
 
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 
@@ -93,33 +92,31 @@ fn draw_in_parallel(
         .map_or(1, |n| n.get())
         .clamp(1, MAX_WORKERS);
     std::thread::scope(|scope| {
-        let (sender, receiver) = mpsc::sync_channel::<(usize, Result<Drawn, String>)>(2 * workers);
-        for worker in 0..workers {
-            let sender = sender.clone();
-            scope.spawn(move || {
-                for index in (worker..count).step_by(workers) {
-                    let frame = &film.frames[index];
-                    let drawn = rasterise(frame, projection, look).and_then(|pixmap| {
-                        let png = encode_png(&pixmap)?;
-                        Ok((frame.tick, pixmap, png))
-                    });
-                    if sender.send((index, drawn)).is_err() {
-                        return;
+        // Worker w draws frames w, w + workers, …; frames are taken round-robin from the
+        // workers' short queues, so they come in order and no worker runs far ahead.
+        let receivers: Vec<mpsc::Receiver<Result<Drawn, String>>> = (0..workers)
+            .map(|worker| {
+                let (sender, receiver) = mpsc::sync_channel(2);
+                scope.spawn(move || {
+                    for frame in film.frames.iter().skip(worker).step_by(workers) {
+                        let drawn = rasterise(frame, projection, look).and_then(|pixmap| {
+                            let png = encode_png(&pixmap)?;
+                            Ok((frame.tick, pixmap, png))
+                        });
+                        if sender.send(drawn).is_err() {
+                            return;
+                        }
                     }
-                }
-            });
-        }
-        drop(sender);
-        // Frames arrive in any order; they are taken in index order.
-        let mut waiting: BTreeMap<usize, Result<Drawn, String>> = BTreeMap::new();
-        let mut next = 0;
-        for (index, drawn) in receiver {
-            waiting.insert(index, drawn);
-            while let Some(drawn) = waiting.remove(&next) {
-                let (tick, pixmap, png) = drawn?;
-                take(tick, pixmap, png)?;
-                next += 1;
-            }
+                });
+                receiver
+            })
+            .collect();
+        for index in 0..count {
+            let drawn = receivers[index % workers]
+                .recv()
+                .map_err(|_| "a drawing thread stopped".to_owned())?;
+            let (tick, pixmap, png) = drawn?;
+            take(tick, pixmap, png)?;
         }
         Ok(())
     })
