@@ -251,6 +251,23 @@ impl<R: Real> ParticleSystem<R> {
         &self.storage.attributes.alive
     }
 
+    /// The two ends of every spring, in scene order, m: (anchor or first particle, second
+    /// particle); springs to a dead particle are left out. For drawing.
+    pub fn spring_ends(&self) -> impl Iterator<Item = (Vec3<R>, Vec3<R>)> + '_ {
+        self.forces
+            .generators
+            .iter()
+            .filter_map(|generator| match generator {
+                ForceGenerator::AnchoredSpring {
+                    particle, anchor, ..
+                } => Some((*anchor, self.position(*particle)?)),
+                ForceGenerator::Spring { first, second, .. } => {
+                    Some((self.position(*first)?, self.position(*second)?))
+                }
+                _ => None,
+            })
+    }
+
     /// Number of emitters.
     pub fn emitter_count(&self) -> usize {
         self.emitters.len()

@@ -1,11 +1,25 @@
-//! Particles as dots coloured by speed.
+//! Particles as dots coloured by speed, springs as lines.
 
 use super::draw_list::{Figure, Layer, Paint, Primitive};
 use crate::math::Real;
 use crate::particles::ParticleSystem;
 
-/// Appends a dot per live particle, in slot order, painted with its speed |v| (m/s).
+/// Colour of spring lines, sRGB.
+const SPRING: [u8; 3] = [90, 96, 110];
+
+/// Appends a line per spring (scene order), then a dot per live particle (slot order)
+/// painted with its speed |v| (m/s).
 pub fn draw_particles<R: Real>(particles: &ParticleSystem<R>, out: &mut Vec<Primitive>) {
+    for (a, b) in particles.spring_ends() {
+        out.push(Primitive {
+            figure: Figure::Line {
+                a: a.to_f64(),
+                b: b.to_f64(),
+            },
+            paint: Paint::Rgb(SPRING),
+            layer: Layer::Moving,
+        });
+    }
     let live = particles
         .positions()
         .iter()
@@ -31,8 +45,8 @@ mod tests {
     use crate::scene::builtin_scene;
 
     #[test]
-    fn one_dot_per_live_particle() {
-        let scene = builtin_scene::<Fx>("fountain").expect("built-in");
+    fn one_dot_per_live_particle_and_a_line_per_spring() {
+        let scene = builtin_scene::<Fx>("showcase").expect("built-in");
         let mut world = scene.build().expect("builds");
         for tick in 0..30 {
             world.step(&crate::world::TickInput {
@@ -40,10 +54,21 @@ mod tests {
                 ..Default::default()
             });
         }
-        let particles = world.particles().expect("fountain has particles");
+        let particles = world.particles().expect("the showcase has particles");
         let mut out = Vec::new();
         draw_particles(particles, &mut out);
-        assert_eq!(out.len(), particles.live_count() as usize);
-        assert!(!out.is_empty());
+        let dots = out
+            .iter()
+            .filter(|p| matches!(p.figure, Figure::Dot { .. }));
+        assert_eq!(dots.count(), particles.live_count() as usize);
+        assert!(particles.live_count() > 0);
+        let lines = out
+            .iter()
+            .filter(|p| matches!(p.figure, Figure::Line { .. }));
+        assert_eq!(lines.count(), particles.spring_ends().count());
+        assert!(
+            particles.spring_ends().count() > 0,
+            "the showcase has springs"
+        );
     }
 }
