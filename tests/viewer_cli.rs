@@ -103,6 +103,10 @@ fn render_refuses_bad_arguments() {
         &["side", "iso, front or top"],
     );
     assert_refused(&["render", "stack", "--every", "0"], &["--every"]);
+    assert_refused(
+        &["render", "stack", "--ticks", "1000000000"],
+        &["--ticks 1000000000", "--every 1", "frames, more than 20000"],
+    );
     assert_refused(&["render", "no-such.replay"], &["no-such.replay"]);
     assert_refused(
         &["render", "no-such-scene"],

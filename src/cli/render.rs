@@ -14,6 +14,10 @@ use crate::viewer::{BodyColours, Film, GIF_NAME, PAGE_NAME, PageSettings, write_
 use crate::world::TickInput;
 use crate::world::checksum::hex;
 
+/// Most frames a render keeps: every frame's figures stay in memory until the view is
+/// fitted to all of them.
+const MAX_FRAMES: u64 = 20_000;
+
 /// What to simulate: a scene, its inputs and how many ticks by default.
 struct Source {
     scene: Scene<Fx>,
@@ -44,6 +48,14 @@ fn source(input: &str) -> Result<Source, String> {
 pub fn render(args: &RenderArgs) -> Result<Status, String> {
     let source = source(&args.input)?;
     let ticks = args.ticks.unwrap_or(source.ticks);
+    let frames = ticks / args.every + 1 + u64::from(!ticks.is_multiple_of(args.every));
+    if frames > MAX_FRAMES {
+        return Err(format!(
+            "--ticks {ticks} with --every {} gives {frames} frames, more than {MAX_FRAMES}: \
+             draw fewer ticks or a frame every more ticks",
+            args.every
+        ));
+    }
     std::fs::create_dir_all(&args.out)
         .map_err(|e| format!("{}: cannot create the directory: {e}", args.out.display()))?;
     let world = source

@@ -10,7 +10,8 @@
 //!
 //! A new subsystem (cloth, fluid, joints) adds one `draw_*` module emitting figures
 //! ([`Figure::Line`], [`Figure::Polygon`], [`Figure::Dot`] with a [`Paint`]) and one call
-//! in [`film::capture`].
+//! in [`film::capture`]. A colour scale of its own (fluid density) is one more [`Paint`]
+//! variant, scaled over the film in [`colour::Palette`] as speed is.
 //!
 //! Output is deterministic: the same replay gives the same PNG, GIF and HTML bytes (no
 //! timestamps; sorting by layer, depth and list order).
