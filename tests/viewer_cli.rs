@@ -70,21 +70,35 @@ fn render_writes_frames_a_gif_and_the_player() {
 }
 
 #[test]
-fn render_takes_a_replay() {
+fn render_replays_a_replay_to_its_recorded_checksum() {
     let out = TempPath::new("render-replay");
     let replay = concat!(env!("CARGO_MANIFEST_DIR"), "/replays/stack.replay");
+    let verified = fixstep(&["verify", replay]);
+    assert_eq!(verified.code, 0, "{verified:?}");
+    let recorded = verified
+        .stdout
+        .split_whitespace()
+        .last()
+        .expect("a checksum");
     let run = fixstep(&[
         "render",
         replay,
-        "--ticks",
-        "2",
+        "--every",
+        "1000",
         "--size",
         "64x48",
         "--out",
         out.str(),
     ]);
     assert_eq!(run.code, 0, "{run:?}");
-    assert!(out.path().join("tick-000002.png").exists());
+    assert_eq!(
+        run.stdout.lines().last(),
+        Some(format!("checksum: {recorded}").as_str())
+    );
+    assert!(
+        out.path().join("tick-000420.png").exists(),
+        "the replay's last tick"
+    );
 }
 
 #[test]
