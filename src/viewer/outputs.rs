@@ -5,6 +5,7 @@ use std::sync::mpsc;
 
 use tiny_skia::Pixmap;
 
+use super::draw_list::Frame;
 use super::film::Film;
 use super::gif::GifWriter;
 use super::html::{PageSettings, page};
@@ -98,10 +99,24 @@ fn draw_in_parallel(
             .map(|worker| {
                 let (sender, receiver) = mpsc::sync_channel(2);
                 scope.spawn(move || {
+                    // The worker's previous frame: a scene at rest draws the same figures
+                    // again, and then the same pixels and bytes are reused.
+                    let mut previous: Option<(&Frame, Pixmap, Vec<u8>)> = None;
                     for frame in film.frames.iter().skip(worker).step_by(workers) {
-                        let drawn = rasterise(frame, projection, look).and_then(|pixmap| {
-                            let png = encode_png(&pixmap)?;
-                            Ok((frame.tick, pixmap, png))
+                        let drawn = match &previous {
+                            Some((before, pixmap, png))
+                                if before.primitives == frame.primitives =>
+                            {
+                                Ok((pixmap.clone(), png.clone()))
+                            }
+                            _ => rasterise(frame, projection, look).and_then(|pixmap| {
+                                let png = encode_png(&pixmap)?;
+                                Ok((pixmap, png))
+                            }),
+                        };
+                        let drawn = drawn.map(|(pixmap, png)| {
+                            previous = Some((frame, pixmap.clone(), png.clone()));
+                            (frame.tick, pixmap, png)
                         });
                         if sender.send(drawn).is_err() {
                             return;
