@@ -133,7 +133,7 @@ function circle(x, y, r, style) {
   ctx.fill();
 }
 function segment(a, b, width, style) {
-  if (Math.hypot(a[0] - b[0], a[1] - b[1]) < 0.25) { circle(a[0], a[1], width / 2, style); return; }
+  if (Math.hypot(a[0] - b[0], a[1] - b[1]) < 0.25) { circle(a[0], a[1], Math.max(width / 2, 1), style); return; }
   ctx.beginPath();
   ctx.moveTo(a[0], a[1]);
   ctx.lineTo(b[0], b[1]);

@@ -222,11 +222,12 @@ impl Painter<'_> {
             .stroke_path(path, &paint, &stroke, Transform::identity(), None);
     }
 
-    /// A round-capped segment `width` px wide; a circle when it projects to a point.
+    /// A round-capped segment `width` px wide; a dot (at least 1 px in radius) when it
+    /// projects to a point.
     fn segment(&mut self, a: P3, b: P3, width: f64, colour: [u8; 3]) {
         let ((ax, ay), (bx, by)) = (self.point(a), self.point(b));
         if (ax - bx).hypot(ay - by) < 0.25 {
-            self.circle(ax, ay, width as f32 / 2.0, colour);
+            self.circle(ax, ay, (width as f32 / 2.0).max(1.0), colour);
             return;
         }
         let mut builder = PathBuilder::new();
@@ -323,4 +324,83 @@ pub fn encode_png(pixmap: &Pixmap) -> Result<Vec<u8>, String> {
     writer.write_image_data(&rgb).map_err(fail)?;
     writer.finish().map_err(fail)?;
     Ok(bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::viewer::colour::Palette;
+    use crate::viewer::draw_list::{Layer, Paint};
+    use crate::viewer::view::View;
+
+    fn frame(figure: Figure) -> Frame {
+        Frame {
+            tick: 0,
+            energy: 0.0,
+            checksum: 0,
+            primitives: vec![Primitive {
+                figure,
+                paint: Paint::Rgb([200, 40, 40]),
+                layer: Layer::Moving,
+            }],
+        }
+    }
+
+    /// Pixels of `frame` that are not background, drawn flat in the front view of the
+    /// box from (−1, −1, −1) to (1, 1, 1) at 40 × 40.
+    fn coverage(frame: &Frame) -> usize {
+        let bounds = Bounds {
+            min: [-1.0; 3],
+            max: [1.0; 3],
+        };
+        let look = Look {
+            palette: Palette { top_speed: 1.0 },
+            bounds,
+            flat: true,
+        };
+        let projection = Projection::fit(View::Front, &bounds, 40, 40);
+        let pixmap = rasterise(frame, &projection, &look).expect("draws");
+        pixmap
+            .pixels()
+            .iter()
+            .filter(|p| [p.red(), p.green(), p.blue()] == [200, 40, 40])
+            .count()
+    }
+
+    #[test]
+    fn a_polygon_fills_its_projected_area() {
+        // A square of half the view's side covers about a quarter of the fitted area.
+        let square = Figure::Polygon {
+            corners: vec![
+                [-0.5, -0.5, 0.0],
+                [0.5, -0.5, 0.0],
+                [0.5, 0.5, 0.0],
+                [-0.5, 0.5, 0.0],
+            ],
+        };
+        let covered = coverage(&frame(square)) as f64;
+        let full = coverage(&frame(Figure::Cuboid {
+            centre: [0.0; 3],
+            half_axes: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        })) as f64;
+        assert!((covered / full - 0.25).abs() < 0.05, "{covered} of {full}");
+    }
+
+    #[test]
+    fn a_line_and_a_capsule_seen_end_on_still_show() {
+        let along_z = |figure| coverage(&frame(figure));
+        assert!(
+            along_z(Figure::Line {
+                a: [0.0, 0.0, -1.0],
+                b: [0.0, 0.0, 1.0],
+            }) > 0
+        );
+        assert!(
+            along_z(Figure::Capsule {
+                a: [0.0, 0.0, -1.0],
+                b: [0.0, 0.0, 1.0],
+                radius: 0.2,
+            }) > 0
+        );
+    }
 }
