@@ -21,7 +21,7 @@ fn scene(name: &str) -> Scene<Fx> {
 
 fn shoot(scene: &Scene<Fx>, ticks: u64, colours: BodyColours) -> Film {
     let world = scene.build().expect("the scene builds");
-    Film::shoot(world, &scene.script, ticks, 1, colours)
+    Film::shoot(world, &scene.script, ticks, 1, colours, usize::MAX).expect("a film")
 }
 
 /// The last frame of `film` drawn in `view` at `width` × `height`.
@@ -105,7 +105,8 @@ fn the_same_replay_gives_the_same_bytes_twice() {
     };
     let render = || {
         let world = replay.scene().build().expect("builds");
-        let film = Film::shoot(world, replay.inputs(), 60, 20, BodyColours::Palette);
+        let film = Film::shoot(world, replay.inputs(), 60, 20, BodyColours::Palette, 1000)
+            .expect("4 frames of 11 figures");
         let dir = TempPath::new("viewer-render");
         std::fs::create_dir_all(dir.path()).expect("a temporary directory");
         let written = write_outputs(&film, "cradle", &settings, dir.path()).expect("writes");
@@ -123,6 +124,14 @@ fn the_same_replay_gives_the_same_bytes_twice() {
     assert_eq!(frames, 4, "ticks 0, 20, 40, 60");
     assert!(first.iter().all(|b| !b.is_empty()));
     assert!(first == second, "a second render differs");
+}
+
+#[test]
+fn a_film_stops_at_its_figure_limit() {
+    // `stack` draws 11 figures a frame: ticks 0 to 4 would need 55.
+    let world = scene("stack").build().expect("builds");
+    let error = Film::shoot(world, &[], 4, 1, BodyColours::Palette, 50).expect_err("too many");
+    assert_eq!((error.tick, error.figures, error.limit), (4, 55, 50));
 }
 
 #[test]

@@ -18,6 +18,10 @@ use crate::world::checksum::hex;
 /// fitted to all of them.
 const MAX_FRAMES: u64 = 20_000;
 
+/// Most figures (boxes, balls, dots, …) all the frames of a render may hold: about 1.2 GB
+/// of memory and a few hundred MB of `index.html`.
+const MAX_FIGURES: usize = 10_000_000;
+
 /// What to simulate: a scene, its inputs and how many ticks by default.
 struct Source {
     scene: Scene<Fx>,
@@ -74,7 +78,21 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
         BodyColours::Palette
     };
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
-    let film = Film::shoot(world, &source.inputs, ticks, args.every, colours);
+    let film = Film::shoot(
+        world,
+        &source.inputs,
+        ticks,
+        args.every,
+        colours,
+        MAX_FIGURES,
+    )
+    .map_err(|e| {
+        format!(
+            "{}: the frames up to tick {} hold {} figures, more than {}: draw fewer ticks \
+             (--ticks) or a frame every more ticks (--every)",
+            args.input, e.tick, e.figures, e.limit
+        )
+    })?;
     let (width, height) = args.size;
     let settings = PageSettings {
         width,

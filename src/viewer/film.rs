@@ -24,6 +24,17 @@ pub struct Film {
     pub tick_rate: u32,
 }
 
+/// A film stopped because its frames would hold too many figures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TooManyFigures {
+    /// The tick of the frame that went over the limit.
+    pub tick: u64,
+    /// Figures in the frames up to and including that one.
+    pub figures: usize,
+    /// The limit.
+    pub limit: usize,
+}
+
 /// The frame of the world's current tick.
 pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
     let mut primitives: Vec<Primitive> = Vec::new();
@@ -44,25 +55,41 @@ pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
 impl Film {
     /// Steps `world` `ticks` times with `inputs` (sorted by tick, as a replay's or a
     /// scene's script), capturing a frame every `every` ticks (at least 1) and after the
-    /// last tick.
+    /// last tick. Every frame is held until the film is complete, so the film stops with
+    /// an error once its frames hold more than `max_figures` figures in all.
     pub fn shoot(
         mut world: World<Fx>,
         inputs: &[TickInput<Fx>],
         ticks: u64,
         every: u64,
         colours: BodyColours,
-    ) -> Film {
+        max_figures: usize,
+    ) -> Result<Film, TooManyFigures> {
         let every = every.max(1);
         let mut feed = InputFeed::new(inputs);
-        let mut frames = vec![capture(&world, colours)];
+        let mut frames = Vec::new();
+        let mut figures = 0;
+        let mut keep = |frame: Frame| {
+            figures += frame.primitives.len();
+            if figures > max_figures {
+                return Err(TooManyFigures {
+                    tick: frame.tick,
+                    figures,
+                    limit: max_figures,
+                });
+            }
+            frames.push(frame);
+            Ok(())
+        };
+        keep(capture(&world, colours))?;
         for done in 1..=ticks {
             let tick = world.tick();
             world.step(feed.at(tick));
             if done % every == 0 || done == ticks {
-                frames.push(capture(&world, colours));
+                keep(capture(&world, colours))?;
             }
         }
-        Film::from_frames(frames, world.settings().tick_rate)
+        Ok(Film::from_frames(frames, world.settings().tick_rate))
     }
 
     /// The film of `frames`, with their shared bounds and colours.

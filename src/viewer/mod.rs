@@ -31,7 +31,7 @@ pub mod view;
 
 pub use draw_list::{Bounds, Figure, Frame, Layer, Paint, Primitive};
 pub use draw_rigid::BodyColours;
-pub use film::{Film, capture};
+pub use film::{Film, TooManyFigures, capture};
 pub use html::PageSettings;
 pub use outputs::{GIF_NAME, PAGE_NAME, Written, frame_name, write_outputs};
 pub use raster::{Look, encode_png, rasterise};
