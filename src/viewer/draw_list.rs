@@ -41,6 +41,8 @@ pub enum Layer {
     Ground,
     /// Static scenery (walls, slopes): behind what moves, so it never hides it.
     Scenery,
+    /// Particle trails: behind what moves.
+    Trail,
     /// Everything that moves.
     Moving,
 }

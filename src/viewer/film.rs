@@ -4,6 +4,7 @@ use super::colour::Palette;
 use super::draw_list::{Bounds, Frame, Primitive};
 use super::draw_particles::draw_particles;
 use super::draw_rigid::{BodyColours, draw_rigid};
+use super::draw_trails::Trails;
 use crate::math::{Fx, Real};
 use crate::replay::InputFeed;
 use crate::world::{TickInput, World};
@@ -55,7 +56,7 @@ pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
 impl Film {
     /// Steps `world` `ticks` times with `inputs` (sorted by tick, as a replay's or a
     /// scene's script), capturing a frame every `every` ticks (at least 1) and after the
-    /// last tick. Every frame is held until the film is complete, so the film stops with
+    /// last tick; particles leave trails (see [`Trails`]). Every frame is held until the film is complete, so the film stops with
     /// an error once its frames hold more than `max_figures` figures in all.
     pub fn shoot(
         mut world: World<Fx>,
@@ -81,12 +82,24 @@ impl Film {
             frames.push(frame);
             Ok(())
         };
-        keep(capture(&world, colours))?;
+        let mut trails = Trails::default();
+        let shot = |world: &World<Fx>, trails: &Trails| {
+            let mut frame = capture(world, colours);
+            trails.draw(&mut frame.primitives);
+            frame
+        };
+        if let Some(particles) = world.particles() {
+            trails.record(particles);
+        }
+        keep(shot(&world, &trails))?;
         for done in 1..=ticks {
             let tick = world.tick();
             world.step(feed.at(tick));
+            if let Some(particles) = world.particles() {
+                trails.record(particles);
+            }
             if done % every == 0 || done == ticks {
-                keep(capture(&world, colours))?;
+                keep(shot(&world, &trails))?;
             }
         }
         Ok(Film::from_frames(frames, world.settings().tick_rate))

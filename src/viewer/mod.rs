@@ -4,7 +4,7 @@
 //! draws to `f64`, and never feeds anything back into the simulation. Data flows one way:
 //!
 //! world → [`film::capture`] (one small module per subsystem: [`draw_rigid`],
-//! [`draw_particles`]) → a neutral [`draw_list`] of world-space figures → a [`view`]
+//! [`draw_particles`], and [`draw_trails`] across ticks) → a neutral [`draw_list`] of world-space figures → a [`view`]
 //! (orthographic iso, front or top, fitted to the film's bounds) → [`raster`] (tiny-skia,
 //! PNG) and [`gif`], or [`html`] (the same figures as JSON for a canvas player).
 //!
@@ -20,6 +20,7 @@ pub mod colour;
 pub mod draw_list;
 pub mod draw_particles;
 pub mod draw_rigid;
+pub mod draw_trails;
 pub mod film;
 pub mod geometry;
 pub mod gif;
