@@ -1,7 +1,6 @@
 //! Stage 3 of a rigid step: build the solver's bodies and constraints, run the
 //! [solver](super::solver), and copy the velocities and impulses back.
 
-use super::material::{mix_friction, mix_restitution};
 use super::solver::{STATIC_BODY, Softness, SolvePass, SolverBody};
 use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
@@ -38,32 +37,7 @@ impl<R: Real> RigidSystem<R> {
             });
         }
 
-        // Constraints: contacts with at least one body of finite mass that moves.
-        solver.clear_constraints();
-        for (k, contact) in self.contacts.iter().enumerate() {
-            let (a, b) = (contact.key.body_a as usize, contact.key.body_b as usize);
-            let (ia, ib) = (solver.index_of_slot[a], solver.index_of_slot[b]);
-            let sa = &solver.bodies[ia as usize];
-            let sb = &solver.bodies[ib as usize];
-            if (ia == STATIC_BODY && ib == STATIC_BODY)
-                || (sa.inv_mass == R::ZERO && sb.inv_mass == R::ZERO)
-            {
-                continue;
-            }
-            let (ma, mb) = (&bodies.material[a], &bodies.material[b]);
-            let (friction, restitution) = (
-                mix_friction(ma.friction, mb.friction),
-                mix_restitution(ma.restitution, mb.restitution),
-            );
-            solver.prepare_constraint(
-                contact,
-                k as u32,
-                (ia, bodies.position[a]),
-                (ib, bodies.position[b]),
-                friction,
-                restitution,
-            );
-        }
+        solver.prepare(&self.contacts, bodies);
 
         let settings = &self.settings;
         let substeps = settings.substeps;

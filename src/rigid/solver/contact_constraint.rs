@@ -165,11 +165,6 @@ impl<R: Real> ContactBlock<R> {
         self.len = 0;
     }
 
-    /// Whether every lane is in use.
-    pub fn is_full(&self) -> bool {
-        self.len == LANES
-    }
-
     /// Builds, in the next free lane, the constraint of `contact` between solver bodies
     /// `a` and `b` whose centres of mass are at `centre_a`, `centre_b` (m): anchors,
     /// effective masses, tangents, and the approach velocity of each point for

@@ -12,21 +12,23 @@
 //! 3. **restitution**;
 //! 4. **store impulses** into the persistent contacts for the next step.
 //!
-//! Constraints are visited in contact-key order, bodies in slot order: the same on every
-//! machine.
+//! Constraints are visited block by block in the order of [`batching`], close to
+//! contact-key order; bodies in slot order: the same on every machine.
 
+mod batching;
 mod body;
 mod contact_constraint;
 mod integrate;
 mod lanes;
+mod prepare;
 mod softness;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};
 pub(crate) use contact_constraint::{ContactBlock, SolvePass};
 pub(crate) use softness::Softness;
 
-use crate::math::{Real, Vec3};
-use crate::rigid::contact::Contact;
+use crate::math::Real;
+use batching::Batching;
 
 /// Buffers the solver reuses from step to step. They hold no state between steps, only
 /// capacity.
@@ -42,48 +44,11 @@ pub(crate) struct Solver<R: crate::math::Real> {
     /// past those keep their memory for later steps.
     blocks: Vec<ContactBlock<R>>,
     block_count: usize,
+    /// The batching of the step's constraints into blocks.
+    batching: Batching,
 }
 
 impl<R: Real> Solver<R> {
-    /// Forgets the constraints of the last step (keeping the blocks' memory).
-    pub fn clear_constraints(&mut self) {
-        self.block_count = 0;
-    }
-
-    /// Builds the constraint of `contact` (index `index` in the world's list) between solver
-    /// bodies `a` and `b`, with centres of mass `centre_a`, `centre_b` (m) and the mixed
-    /// `friction` and `restitution`, in the next free lane: that of the last block in use,
-    /// or of a fresh block when that one is full.
-    #[allow(clippy::too_many_arguments)]
-    pub fn prepare_constraint(
-        &mut self,
-        contact: &Contact<R>,
-        index: u32,
-        a: (u32, Vec3<R>),
-        b: (u32, Vec3<R>),
-        friction: R,
-        restitution: R,
-    ) {
-        let last_is_full = self.block_count == 0 || self.blocks[self.block_count - 1].is_full();
-        if last_is_full {
-            if self.block_count == self.blocks.len() {
-                self.blocks.push(ContactBlock::empty());
-            } else {
-                self.blocks[self.block_count].clear();
-            }
-            self.block_count += 1;
-        }
-        self.blocks[self.block_count - 1].prepare_lane(
-            contact,
-            index,
-            a,
-            b,
-            &self.bodies,
-            friction,
-            restitution,
-        );
-    }
-
     /// The blocks in use, in solving order.
     pub fn blocks(&self) -> &[ContactBlock<R>] {
         &self.blocks[..self.block_count]
