@@ -73,11 +73,16 @@ impl<R: Real> PointLanes<R> {
     };
 }
 
+#[cfg(target_arch = "x86_64")]
+mod avx512;
+
 /// The constraints of up to [`LANES`] contacts for a step, one per lane.
 #[derive(Clone, Debug)]
 pub(crate) struct ContactBlock<R: Real> {
     /// Lanes in use, from lane 0.
     len: usize,
+    /// Whether the lanes share no moving body, so that they may be solved side by side.
+    independent: bool,
     /// Solver indices of the two bodies.
     a: [u32; LANES],
     b: [u32; LANES],
@@ -143,6 +148,7 @@ impl<R: Real> ContactBlock<R> {
     pub fn empty() -> Self {
         Self {
             len: 0,
+            independent: false,
             a: [0; LANES],
             b: [0; LANES],
             contact: [0; LANES],
@@ -160,9 +166,11 @@ impl<R: Real> ContactBlock<R> {
         }
     }
 
-    /// Frees every lane (their old contents stay, unread).
-    pub fn clear(&mut self) {
+    /// Frees every lane (their old contents stay, unread); the lanes to come share no
+    /// moving body when `independent`.
+    pub fn clear(&mut self, independent: bool) {
         self.len = 0;
+        self.independent = independent;
     }
 
     /// Builds, in the next free lane, the constraint of `contact` between solver bodies
@@ -239,7 +247,19 @@ impl<R: Real> ContactBlock<R> {
 
     /// Applies the impulses carried from the last step, lane by lane: v_a −= P/m_a,
     /// ω_a −= I_a⁻¹(r_a × P), and the opposite on B, with P = λ_n n + λ₁ t₁ + λ₂ t₂.
+    ///
+    /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
+    /// processor has it ([`avx512`]), which gives the same bits.
     pub fn warm_start(&self, bodies: &mut [SolverBody<R>]) {
+        #[cfg(target_arch = "x86_64")]
+        if self.independent && avx512::warm_start(self, bodies) {
+            return;
+        }
+        self.warm_start_lanes(bodies);
+    }
+
+    /// [`warm_start`](Self::warm_start), one lane after another.
+    pub fn warm_start_lanes(&self, bodies: &mut [SolverBody<R>]) {
         for l in 0..self.len {
             let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
             let (normal_a, normal_b) = (self.normal_a.get(l), self.normal_b.get(l));
@@ -272,7 +292,19 @@ impl<R: Real> ContactBlock<R> {
     /// impulse is clamped to the disc |λ_t| ≤ μ λ_n (Coulomb's cone, not a box, so sliding
     /// speed does not depend on the direction). A point with no normal and no tangent
     /// impulse is skipped: its cone has radius 0, so nothing would change.
+    ///
+    /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
+    /// processor has it ([`avx512`]), which gives the same bits.
     pub fn solve(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
+        #[cfg(target_arch = "x86_64")]
+        if self.independent && avx512::solve(self, bodies, pass) {
+            return;
+        }
+        self.solve_lanes(bodies, pass);
+    }
+
+    /// [`solve`](Self::solve), one lane after another.
+    pub fn solve_lanes(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
         for l in 0..self.len {
             self.solve_lane(l, bodies, pass);
         }

@@ -40,13 +40,13 @@ impl<R: Real> Solver<R> {
         batching.finish();
 
         *block_count = 0;
-        for (_independent, batch) in batching.blocks() {
+        for (independent, batch) in batching.blocks() {
             if *block_count == blocks.len() {
                 blocks.push(ContactBlock::empty());
             }
             let block = &mut blocks[*block_count];
             *block_count += 1;
-            block.clear();
+            block.clear(independent);
             for &k in batch {
                 let contact = &contacts[k as usize];
                 let (a, b) = (contact.key.body_a as usize, contact.key.body_b as usize);
