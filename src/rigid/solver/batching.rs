@@ -117,3 +117,6 @@ impl Batching {
             .map(|(independent, contacts)| (*independent, contacts.as_slice()))
     }
 }
+
+#[cfg(test)]
+mod tests;

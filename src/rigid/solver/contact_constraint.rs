@@ -75,6 +75,8 @@ impl<R: Real> PointLanes<R> {
 
 #[cfg(target_arch = "x86_64")]
 mod avx512;
+#[cfg(test)]
+mod tests;
 
 /// The constraints of up to [`LANES`] contacts for a step, one per lane.
 #[derive(Clone, Debug)]
@@ -204,9 +206,9 @@ impl<R: Real> ContactBlock<R> {
             let in_a = ba.inv_inertia * rn_a;
             let in_b = bb.inv_inertia * rn_b;
             let k = m_sum + in_a.dot(rn_a) + in_b.dot(rn_b);
-            for j in 0..2 {
-                let rt_a = r_a.cross(tangents[j]);
-                let rt_b = r_b.cross(tangents[j]);
+            for (j, &t) in tangents.iter().enumerate() {
+                let rt_a = r_a.cross(t);
+                let rt_b = r_b.cross(t);
                 let it_a = ba.inv_inertia * rt_a;
                 let it_b = bb.inv_inertia * rt_b;
                 let kt = m_sum + it_a.dot(rt_a) + it_b.dot(rt_b);
@@ -232,10 +234,10 @@ impl<R: Real> ContactBlock<R> {
         self.b[l] = b;
         self.contact[l] = index;
         self.normal.set(l, n);
-        for j in 0..2 {
-            self.tangents[j].set(l, tangents[j]);
-            self.tangents_a[j].set(l, tangents[j] * ba.inv_mass);
-            self.tangents_b[j].set(l, tangents[j] * bb.inv_mass);
+        for (j, &t) in tangents.iter().enumerate() {
+            self.tangents[j].set(l, t);
+            self.tangents_a[j].set(l, t * ba.inv_mass);
+            self.tangents_b[j].set(l, t * bb.inv_mass);
         }
         self.normal_a.set(l, n * ba.inv_mass);
         self.normal_b.set(l, n * bb.inv_mass);

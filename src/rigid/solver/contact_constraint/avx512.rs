@@ -691,17 +691,21 @@ fn clamp_to_cone(
     limit: __m512i,
     length_squared: __m512i,
 ) -> [__m512i; 2] {
-    let mut lanes = [[Fx::ZERO; LANES]; 4];
-    store(&mut lanes[0], new[0]);
-    store(&mut lanes[1], new[1]);
-    store(&mut lanes[2], limit);
-    store(&mut lanes[3], length_squared);
-    for l in 0..LANES {
+    let [mut first, mut second, mut limits, mut lengths] = [[Fx::ZERO; LANES]; 4];
+    store(&mut first, new[0]);
+    store(&mut second, new[1]);
+    store(&mut limits, limit);
+    store(&mut lengths, length_squared);
+    let lanes = first
+        .iter_mut()
+        .zip(second.iter_mut())
+        .zip(limits.iter().zip(&lengths));
+    for (l, ((first, second), (&limit, &length_squared))) in lanes.enumerate() {
         if outside & (1 << l) != 0 {
-            let scale = lanes[2][l] * lanes[3][l].rsqrt();
-            lanes[0][l] *= scale;
-            lanes[1][l] *= scale;
+            let scale = limit * length_squared.rsqrt();
+            *first *= scale;
+            *second *= scale;
         }
     }
-    [load(&lanes[0]), load(&lanes[1])]
+    [load(&first), load(&second)]
 }
