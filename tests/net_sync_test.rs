@@ -1,0 +1,64 @@
+//! GGRS's determinism test on every built-in scene: a `SyncTestSession` rolls back
+//! `CHECK_DISTANCE` frames on every frame, re-simulates them with the same (random bot)
+//! inputs and compares the checksums of both simulations of every frame.
+#![cfg(feature = "net")]
+
+use fixstep::net::sync_test;
+use fixstep::scene::{BUILTIN_SCENES, builtin_scene};
+
+/// Frames rolled back and re-simulated on every frame.
+const CHECK_DISTANCE: usize = 7;
+
+/// Frames run per scene.
+const FRAMES: u32 = 300;
+
+/// Bot players, each with its own input stream.
+const PLAYERS: usize = 2;
+
+/// Seed of the bots.
+const BOT_SEED: u64 = 0x05ee_db07;
+
+fn sync_test_scene(name: &str) {
+    let scene = builtin_scene(name).expect("a built-in scene");
+    if let Err(message) = sync_test(&scene, FRAMES, CHECK_DISTANCE, PLAYERS, BOT_SEED) {
+        panic!("{message}");
+    }
+}
+
+macro_rules! sync_tests {
+    ($($(#[$attribute:meta])* $name:ident),* $(,)?) => {
+        $(
+            #[test]
+            $(#[$attribute])*
+            fn $name() {
+                sync_test_scene(stringify!($name));
+            }
+        )*
+
+        /// The scenes with a test above.
+        const TESTED: &[&str] = &[$(stringify!($name)),*];
+    };
+}
+
+sync_tests!(
+    showcase,
+    fountain,
+    orbits,
+    pyramid,
+    stack,
+    // 4096 colliding balls: 300 frames × 8 simulations are 2400 steps of ~13 ms in release
+    // (about a minute), several times that in the test profile. The release test run checks
+    // it; the debug run skips it to keep the whole test command within its time budget.
+    #[cfg_attr(debug_assertions, ignore = "heavy: checked by the release test run")]
+    balls,
+    falling,
+    cradle,
+    incline,
+    spinner,
+);
+
+#[test]
+fn every_builtin_scene_has_a_sync_test() {
+    let builtin: Vec<&str> = BUILTIN_SCENES.iter().map(|(name, _)| *name).collect();
+    assert_eq!(TESTED, builtin.as_slice());
+}
