@@ -112,7 +112,8 @@ struct Peer {
     confirmed: Recorder,
     /// Parts of the scene's state, in [`Part`] order.
     parts: Vec<Part>,
-    /// The inputs last used for each tick, indexed by tick.
+    /// The inputs last used for each tick, indexed by tick; emptied once the confirmed world
+    /// has used them.
     inputs_log: Vec<Vec<NetInput>>,
     /// A desync found by the lockstep reports.
     lockstep_desync: Option<DesyncReport>,
@@ -314,9 +315,10 @@ impl Peer {
     }
 
     /// Steps the confirmed world through every tick whose inputs are final: confirmed by
-    /// every peer, and already used by the game world after any rollback they caused (a
-    /// rollback happens in the `advance_frame` after the input arrives, so the ticks
-    /// confirmed before that call are final once its requests are fulfilled).
+    /// every peer, and already used by the game world after any rollback they caused.
+    /// Remote inputs arrive only while GGRS polls the socket, which `advance_frame` does
+    /// before it checks its predictions and requests the rollback; so once its requests are
+    /// fulfilled, the inputs logged for every confirmed tick are the confirmed ones.
     fn step_confirmed(&mut self) {
         let confirmed = u64::try_from(self.session.confirmed_frame()).ok();
         let final_ticks = match self.options.mode {
@@ -331,11 +333,12 @@ impl Peer {
             let tick = self.confirmed.world().tick();
             let Some(inputs) = usize::try_from(tick)
                 .ok()
-                .and_then(|t| self.inputs_log.get(t))
+                .and_then(|t| self.inputs_log.get_mut(t))
             else {
                 return;
             };
-            let input = tick_input(&self.options.scene, tick, inputs);
+            // A final tick is never re-simulated: its inputs are not needed again.
+            let input = tick_input(&self.options.scene, tick, &std::mem::take(inputs));
             self.confirmed.step(&input);
         }
     }
