@@ -255,3 +255,22 @@ fn bad_peer_arguments_are_named() {
         "{stderr}"
     );
 }
+
+#[test]
+fn a_peer_binds_loopback_only_when_every_remote_is_on_loopback() {
+    use fixstep::net::PeerSocket;
+    use std::net::{IpAddr, Ipv4Addr, SocketAddr};
+
+    let loopback: SocketAddr = "127.0.0.1:7000".parse().expect("an address");
+    let lan: SocketAddr = "192.168.1.11:7000".parse().expect("an address");
+    let local = PeerSocket::bind(0, &[loopback]).expect("bind");
+    assert_eq!(
+        local.local_addr().expect("address").ip(),
+        IpAddr::V4(Ipv4Addr::LOCALHOST)
+    );
+    let any = PeerSocket::bind(0, &[loopback, lan]).expect("bind");
+    assert_eq!(
+        any.local_addr().expect("address").ip(),
+        IpAddr::V4(Ipv4Addr::UNSPECIFIED)
+    );
+}
