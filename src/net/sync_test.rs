@@ -21,6 +21,9 @@ pub fn sync_test(
     players: usize,
     bot_seed: u64,
 ) -> Result<u64, String> {
+    if !(1..=usize::from(u8::MAX)).contains(&players) {
+        return Err(format!("{players} players: a sync test has 1 to 255"));
+    }
     let mut world = build_world(scene)?;
     let bot = Bot::new(bot_seed, &world);
     let mut session = SessionBuilder::<FixstepConfig>::new()
