@@ -274,3 +274,41 @@ fn a_peer_binds_loopback_only_when_every_remote_is_on_loopback() {
         IpAddr::V4(Ipv4Addr::UNSPECIFIED)
     );
 }
+
+#[test]
+fn a_scripted_peer_plays_its_file_and_the_replay_records_it() {
+    use fixstep::math::{Fx, Real, Vec3};
+    use fixstep::replay::Replay;
+    use fixstep::world::{Command, Handle, PlayerInput, Target};
+
+    let script =
+        std::env::temp_dir().join(format!("fixstep-net-{}-script.ron", std::process::id()));
+    fs::write(
+        &script,
+        "[(tick: 30, input: (action: ImpulseBody, target: 3, impulse: (0, 160, 0)))]",
+    )
+    .expect("write the script");
+    let inputs = script.to_str().expect("a UTF-8 path");
+    let (dir, peers) = run_pair("scripted", "--rollback", &["--inputs", inputs]);
+    assert_eq!(final_checksum(&peers[0]), final_checksum(&peers[1]));
+    let replay = Replay::read(&dir.join("peer0.replay")).expect("a replay");
+    let at_30 = replay
+        .inputs()
+        .iter()
+        .find(|input| input.tick == 30)
+        .expect("inputs at tick 30");
+    let kick = PlayerInput {
+        player: 0,
+        commands: vec![Command::ApplyImpulse {
+            target: Target::Body(Handle::new(3, 0)),
+            impulse: Vec3::new(Fx::ZERO, Fx::from_int(10), Fx::ZERO),
+            point: None,
+        }],
+    };
+    assert_eq!(at_30.players.first(), Some(&kick));
+    // Player 0 plays nothing but its script.
+    let others = replay.inputs().iter().flat_map(|input| &input.players);
+    assert_eq!(others.filter(|p| p.player == 0).count(), 1);
+    let _ = fs::remove_file(script);
+    let _ = fs::remove_dir_all(dir);
+}
