@@ -28,7 +28,7 @@ const TICKS: &str = "240";
 /// Ticks between desync checks.
 const DESYNC_EVERY: u64 = 10;
 
-/// The tick after which the nudging peer moves a body by one ulp.
+/// The nudging peer moves a body by one ulp once its world has run this many ticks.
 const NUDGE_AT: u64 = 95;
 
 /// What a peer process left behind.
@@ -39,14 +39,10 @@ struct Finished {
     stderr: String,
 }
 
-/// Two free UDP ports on 127.0.0.1 (bound, read, released).
-fn free_ports() -> [u16; 2] {
-    let a = UdpSocket::bind("127.0.0.1:0").expect("bind a free port");
-    let b = UdpSocket::bind("127.0.0.1:0").expect("bind a free port");
-    [
-        a.local_addr().expect("address").port(),
-        b.local_addr().expect("address").port(),
-    ]
+/// `N` distinct free UDP ports on 127.0.0.1 (bound together, read, released).
+fn free_ports<const N: usize>() -> [u16; N] {
+    let sockets = [(); N].map(|()| UdpSocket::bind("127.0.0.1:0").expect("bind a free port"));
+    sockets.map(|s| s.local_addr().expect("address").port())
 }
 
 /// A fresh directory for one test's files.
@@ -57,14 +53,17 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-/// Starts peer `player` of two, writing its output to files in `dir`.
-fn spawn_peer(dir: &Path, ports: [u16; 2], player: usize, mode: &str, extra: &[&str]) -> Child {
+/// Starts peer `player` of `ports.len()`, writing its output to files in `dir`.
+fn spawn_peer(dir: &Path, ports: &[u16], player: usize, mode: &str, extra: &[&str]) -> Child {
     let out = fs::File::create(dir.join(format!("peer{player}.out"))).expect("stdout file");
     let err = fs::File::create(dir.join(format!("peer{player}.err"))).expect("stderr file");
     let replay = dir.join(format!("peer{player}.replay"));
+    let remotes = (0..ports.len())
+        .filter(|&p| p != player)
+        .flat_map(|p| ["--remote".to_owned(), format!("127.0.0.1:{}", ports[p])]);
     Command::new(FIXSTEP)
         .args(["peer", "--local-port", &ports[player].to_string()])
-        .args(["--remote", &format!("127.0.0.1:{}", ports[1 - player])])
+        .args(remotes)
         .args(["--player-index", &player.to_string()])
         .args(["--scene", SCENE, "--ticks", TICKS, mode])
         .args(["--desync-every", &DESYNC_EVERY.to_string()])
@@ -81,14 +80,19 @@ fn spawn_peer(dir: &Path, ports: [u16; 2], player: usize, mode: &str, extra: &[&
 
 /// Runs two peers (peer 0 with `extra` arguments) until both exit or the deadline passes.
 fn run_pair(name: &str, mode: &str, extra: &[&str]) -> (PathBuf, [Finished; 2]) {
+    run_peers(name, mode, extra)
+}
+
+/// Runs `N` peers (peer 0 with `extra` arguments) until all exit or the deadline passes.
+fn run_peers<const N: usize>(name: &str, mode: &str, extra: &[&str]) -> (PathBuf, [Finished; N]) {
     let dir = scratch(name);
-    let ports = free_ports();
-    let mut children = [
-        spawn_peer(&dir, ports, 0, mode, extra),
-        spawn_peer(&dir, ports, 1, mode, &[]),
-    ];
+    let ports = free_ports::<N>();
+    let mut children: [Child; N] = std::array::from_fn(|player| {
+        let extra = if player == 0 { extra } else { &[] };
+        spawn_peer(&dir, &ports, player, mode, extra)
+    });
     let started = Instant::now();
-    let mut codes = [None, None];
+    let mut codes = [None; N];
     while codes.iter().any(Option::is_none) && started.elapsed() < DEADLINE {
         for (child, code) in children.iter_mut().zip(codes.iter_mut()) {
             if code.is_none()
@@ -105,7 +109,7 @@ fn run_pair(name: &str, mode: &str, extra: &[&str]) -> (PathBuf, [Finished; 2]) 
             let _ = child.wait();
         }
     }
-    let finished = [0, 1].map(|player| Finished {
+    let finished = std::array::from_fn(|player| Finished {
         code: codes[player].flatten(),
         stdout: fs::read_to_string(dir.join(format!("peer{player}.out"))).unwrap_or_default(),
         stderr: fs::read_to_string(dir.join(format!("peer{player}.err"))).unwrap_or_default(),
@@ -181,7 +185,7 @@ fn both_peers_report_the_nudge(name: &str, mode: &str) {
     for peer in &peers {
         let frame = desync_frame(peer);
         assert!(
-            frame > NUDGE_AT && frame <= NUDGE_AT + DESYNC_EVERY,
+            (NUDGE_AT..=NUDGE_AT + DESYNC_EVERY).contains(&frame),
             "desync reported at frame {frame}, not within one interval after the nudge: {peer:?}"
         );
     }
@@ -201,8 +205,9 @@ fn rollback_peers_detect_a_one_ulp_nudge() {
 /// Runs `fixstep peer ARGS` alone (its remote never answers) and returns its exit code and
 /// standard error, killing it at [`DEADLINE`].
 fn lone_peer(args: &[&str]) -> (Option<i32>, String) {
-    let port = free_ports()[0].to_string();
-    let remote = format!("127.0.0.1:{}", free_ports()[1]);
+    let [port, remote] = free_ports::<2>();
+    let port = port.to_string();
+    let remote = format!("127.0.0.1:{remote}");
     let mut child = Command::new(FIXSTEP)
         .args(["peer", "--local-port", &port, "--remote", &remote])
         .args(args)
@@ -310,5 +315,35 @@ fn a_scripted_peer_plays_its_file_and_the_replay_records_it() {
     let others = replay.inputs().iter().flat_map(|input| &input.players);
     assert_eq!(others.filter(|p| p.player == 0).count(), 1);
     let _ = fs::remove_file(script);
+    let _ = fs::remove_dir_all(dir);
+}
+
+#[test]
+fn three_rollback_peers_agree() {
+    let (dir, peers) = run_peers::<3>("three", "--rollback", &[]);
+    let checksum = final_checksum(&peers[0]);
+    for peer in &peers[1..] {
+        assert_eq!(final_checksum(peer), checksum);
+    }
+    let replays =
+        [0, 1, 2].map(|p| fs::read(dir.join(format!("peer{p}.replay"))).expect("a replay"));
+    assert!(
+        replays.iter().all(|r| *r == replays[0]),
+        "the peers recorded different replays"
+    );
+    let _ = fs::remove_dir_all(dir);
+}
+
+#[test]
+fn three_lockstep_peers_all_detect_a_nudge() {
+    let nudge = NUDGE_AT.to_string();
+    let (dir, peers) = run_peers::<3>("three-nudge", "--lockstep", &["--nudge-at", &nudge]);
+    for peer in &peers {
+        let frame = desync_frame(peer);
+        assert!(
+            (NUDGE_AT..=NUDGE_AT + DESYNC_EVERY).contains(&frame),
+            "{frame}"
+        );
+    }
     let _ = fs::remove_dir_all(dir);
 }

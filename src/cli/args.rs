@@ -167,7 +167,7 @@ pub struct PeerArgs {
     #[arg(long, value_name = "SECONDS", default_value_t = 60,
           value_parser = clap::value_parser!(u64).range(1..=86_400))]
     pub timeout: u64,
-    /// Testing desync detection: after tick TICK, move a body of this peer by one ulp.
+    /// Testing desync detection: once this peer has run TICK ticks, move a body by one ulp.
     #[arg(long, value_name = "TICK", hide = true)]
     pub nudge_at: Option<u64>,
 }

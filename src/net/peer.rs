@@ -73,7 +73,8 @@ pub struct PeerOptions {
     pub inputs: InputSource,
     /// Ticks between two desync checks (at least 1).
     pub desync_every: u32,
-    /// For testing desync detection: after this tick, move a body by one ulp.
+    /// For testing desync detection: once the game world has run this many ticks (and
+    /// again whenever a rollback re-simulates past it), move a body by one ulp.
     pub nudge_at: Option<u64>,
     /// Wall-time limit of the whole session, synchronisation included.
     pub timeout: Duration,
