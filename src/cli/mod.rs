@@ -8,11 +8,14 @@
 //! fixstep verify FILE.replay...
 //! fixstep info FILE.replay
 //! fixstep rerecord FILE.replay...
+//! fixstep peer --local-port P --remote ADDR [--remote ADDR...] [--player-index I]
+//!              [--scene S] [--ticks T] [--lockstep | --rollback] [--record OUT.replay]
+//!              [--bot SEED | --inputs FILE.ron] [--desync-every N] [--timeout SECONDS]
 //! fixstep bench accuracy [--out DIR] [--quick]
 //! fixstep bench stability [--out DIR]
 //! ```
 //!
-//! Exit status: 0 success; 1 a replay desynchronised; 2 a bad argument, an unreadable or
+//! Exit status: 0 success; 1 a replay or a peer desynchronised; 2 a bad argument, an unreadable or
 //! invalid input, or a failed write. Errors are one line on standard error starting with
 //! `error: `.
 
@@ -21,6 +24,8 @@ mod bench;
 mod info;
 mod metrics_csv;
 mod output;
+#[cfg(feature = "net")]
+mod peer;
 mod progress;
 mod rerecord;
 mod run;
@@ -34,6 +39,8 @@ use std::ffi::OsString;
 
 use clap::Parser;
 
+#[cfg(feature = "net")]
+pub use args::PeerArgs;
 pub use args::{BenchCommand, Cli, Command, RunArgs};
 pub use status::Status;
 
@@ -68,6 +75,8 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         Some(Command::Verify { files }) => verify::verify_files(&files),
         Some(Command::Info { file }) => info::info(&file),
         Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
+        #[cfg(feature = "net")]
+        Some(Command::Peer(args)) => peer::peer(&args),
         Some(Command::Bench { benchmark }) => bench::bench(&benchmark),
     };
     match result {
