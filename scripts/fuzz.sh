@@ -33,7 +33,7 @@ SEEDLESS_SCENES=' balls falling pyramid '
 
 seeds() {
   cargo build --release --quiet
-  local bin=target/release/fixstep dir f name
+  local bin=${CARGO_TARGET_DIR:-target}/release/fixstep dir f name
   for t in "${TARGETS[@]}"; do rm -rf "fuzz/seeds/$t"; mkdir -p "fuzz/seeds/$t"; done
   for f in replays/*.replay; do
     name=$(basename "$f" .replay)

@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 cargo build --release --locked
-fixstep=target/release/fixstep
+fixstep=${CARGO_TARGET_DIR:-target}/release/fixstep
 
 FIXSTEP_BLESS=1 cargo test --release --locked --test cli_scene_files -- \
   --exact builtin_scene_files_match_the_builtins

@@ -9,6 +9,8 @@ pub mod bench;
 pub mod cli;
 pub mod codec;
 pub mod math;
+#[cfg(feature = "net")]
+pub mod net;
 pub mod particles;
 pub mod replay;
 pub mod rigid;

@@ -1,5 +1,7 @@
 //! The command line, as clap sees it. This interface is a contract: scripts and tests use it.
 
+#[cfg(feature = "net")]
+use std::net::SocketAddr;
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
@@ -46,6 +48,10 @@ pub enum Command {
     /// Draw a replay or a scene: PNG frames, an animated GIF and an interactive
     /// DIR/index.html player.
     Render(RenderArgs),
+    /// Play a scene with other peers over UDP (GGRS), headless, with bot or scripted inputs:
+    /// prints `checksum: <hex>` last on success, exits 1 on a desync.
+    #[cfg(feature = "net")]
+    Peer(PeerArgs),
     /// Measure the integrators: accuracy against exact solutions, and stability limits.
     Bench {
         /// Which benchmark.
@@ -181,6 +187,64 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
         }
     };
     Ok((side(w, "width")?, side(h, "height")?))
+}
+
+/// Arguments of `fixstep peer`.
+#[cfg(feature = "net")]
+#[derive(Debug, Args)]
+pub struct PeerArgs {
+    /// Local UDP port (0: any free port).
+    #[arg(long, value_name = "P")]
+    pub local_port: u16,
+    /// A remote peer, HOST:PORT; give one per other player, in ascending player index.
+    #[arg(long = "remote", value_name = "ADDR", required = true, value_parser = parse_address)]
+    pub remotes: Vec<SocketAddr>,
+    /// This peer's player index (the remotes take the other indices, in order).
+    #[arg(long, value_name = "I", default_value_t = 0)]
+    pub player_index: usize,
+    /// A built-in scene name or a RON scene file; every peer must run the same.
+    #[arg(long, value_name = "S", default_value = "showcase")]
+    pub scene: String,
+    /// Ticks to run (default: the scene's `ticks`).
+    #[arg(long, value_name = "T")]
+    pub ticks: Option<u64>,
+    /// Lockstep: every tick waits for every peer's input (the default).
+    #[arg(long, conflicts_with = "rollback")]
+    pub lockstep: bool,
+    /// Rollback: run ahead on predicted inputs, roll back on a misprediction.
+    #[arg(long)]
+    pub rollback: bool,
+    /// Write the replay of the session (its confirmed inputs) to this file.
+    #[arg(long, value_name = "OUT.replay")]
+    pub record: Option<PathBuf>,
+    /// Seed of the deterministic bot that plays for this peer (default: the player index).
+    #[arg(long, value_name = "SEED", value_parser = parse_seed)]
+    pub bot: Option<u64>,
+    /// Play the inputs of this RON file instead of the bot: a list of
+    /// `(tick: T, input: (action: ImpulseBody, target: 3, impulse: (0, 160, 0)))`.
+    #[arg(long, value_name = "FILE.ron", conflicts_with = "bot")]
+    pub inputs: Option<PathBuf>,
+    /// Ticks between two desync checks.
+    #[arg(long, value_name = "N", default_value_t = 10,
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub desync_every: u32,
+    /// Give up after this many seconds (synchronisation included).
+    #[arg(long, value_name = "SECONDS", default_value_t = 60,
+          value_parser = clap::value_parser!(u64).range(1..=86_400))]
+    pub timeout: u64,
+    /// Testing desync detection: once this peer has run TICK ticks, move a body by one ulp.
+    #[arg(long, value_name = "TICK", hide = true)]
+    pub nudge_at: Option<u64>,
+}
+
+/// A peer address: `HOST:PORT`, resolved (the first address the name resolves to).
+#[cfg(feature = "net")]
+fn parse_address(text: &str) -> Result<SocketAddr, String> {
+    use std::net::ToSocketAddrs;
+    text.to_socket_addrs()
+        .map_err(|e| format!("`{text}` is not a HOST:PORT address: {e}"))?
+        .next()
+        .ok_or_else(|| format!("`{text}` resolves to no address"))
 }
 
 /// A seed: decimal, or hexadecimal after `0x`.

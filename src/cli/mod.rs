@@ -10,11 +10,14 @@
 //! fixstep rerecord FILE.replay...
 //! fixstep render REPLAY|SCENE [--ticks N] [--out DIR] [--every K]
 //!                            [--view iso|front|top] [--size WxH] [--flat]
+//! fixstep peer --local-port P --remote ADDR [--remote ADDR...] [--player-index I]
+//!              [--scene S] [--ticks T] [--lockstep | --rollback] [--record OUT.replay]
+//!              [--bot SEED | --inputs FILE.ron] [--desync-every N] [--timeout SECONDS]
 //! fixstep bench accuracy [--out DIR] [--quick]
 //! fixstep bench stability [--out DIR]
 //! ```
 //!
-//! Exit status: 0 success; 1 a replay desynchronised; 2 a bad argument, an unreadable or
+//! Exit status: 0 success; 1 a replay or a peer desynchronised; 2 a bad argument, an unreadable or
 //! invalid input, or a failed write. Errors are one line on standard error starting with
 //! `error: `.
 
@@ -23,6 +26,8 @@ mod bench;
 mod info;
 mod metrics_csv;
 mod output;
+#[cfg(feature = "net")]
+mod peer;
 mod progress;
 mod render;
 mod rerecord;
@@ -37,6 +42,8 @@ use std::ffi::OsString;
 
 use clap::Parser;
 
+#[cfg(feature = "net")]
+pub use args::PeerArgs;
 pub use args::{BenchCommand, Cli, Command, RenderArgs, RunArgs};
 pub use status::Status;
 
@@ -72,6 +79,8 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         Some(Command::Info { file }) => info::info(&file),
         Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
         Some(Command::Render(args)) => render::render(&args),
+        #[cfg(feature = "net")]
+        Some(Command::Peer(args)) => peer::peer(&args),
         Some(Command::Bench { benchmark }) => bench::bench(&benchmark),
     };
     match result {

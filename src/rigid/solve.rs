@@ -1,8 +1,7 @@
 //! Stage 3 of a rigid step: build the solver's bodies and constraints, run the
 //! [solver](super::solver), and copy the velocities and impulses back.
 
-use super::material::{mix_friction, mix_restitution};
-use super::solver::{STATIC_BODY, Softness, SolverBody, prepare_constraint};
+use super::solver::{STATIC_BODY, Softness, SolvePass, SolverBody};
 use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
 
@@ -38,29 +37,7 @@ impl<R: Real> RigidSystem<R> {
             });
         }
 
-        // Constraints: contacts with at least one body of finite mass that moves.
-        solver.constraints.clear();
-        for (k, contact) in self.contacts.iter().enumerate() {
-            let (a, b) = (contact.key.body_a as usize, contact.key.body_b as usize);
-            let (ia, ib) = (solver.index_of_slot[a], solver.index_of_slot[b]);
-            let sa = &solver.bodies[ia as usize];
-            let sb = &solver.bodies[ib as usize];
-            if (ia == STATIC_BODY && ib == STATIC_BODY)
-                || (sa.inv_mass == R::ZERO && sb.inv_mass == R::ZERO)
-            {
-                continue;
-            }
-            let (ma, mb) = (&bodies.material[a], &bodies.material[b]);
-            solver.constraints.push(prepare_constraint(
-                contact,
-                k as u32,
-                (ia, bodies.position[a]),
-                (ib, bodies.position[b]),
-                &solver.bodies,
-                mix_friction(ma.friction, mb.friction),
-                mix_restitution(ma.restitution, mb.restitution),
-            ));
-        }
+        solver.prepare(&self.contacts, bodies);
 
         let settings = &self.settings;
         let substeps = settings.substeps;
@@ -71,39 +48,40 @@ impl<R: Real> RigidSystem<R> {
         let cap = inv_h * R::from_ratio(1, 4);
         let hertz = settings.contact_hertz.min(cap);
         let zeta = settings.contact_damping_ratio;
-        let soft = Softness::new(hertz, zeta, h);
-        let soft_static = Softness::new((hertz * R::TWO).min(cap), zeta, h);
-        let max_push = settings.max_push_velocity;
+        let solve = SolvePass {
+            soft: Softness::new(hertz, zeta, h),
+            soft_static: Softness::new((hertz * R::TWO).min(cap), zeta, h),
+            inv_h,
+            max_push: settings.max_push_velocity,
+            use_bias: true,
+        };
+        let relax = SolvePass {
+            use_bias: false,
+            ..solve
+        };
 
         for _ in 0..substeps {
             solver.integrate_velocities(bodies, h, gravity);
-            for c in &solver.constraints {
-                c.warm_start(&mut solver.bodies);
+            let (blocks, solver_bodies) = solver.blocks_and_bodies();
+            for block in blocks.iter() {
+                block.warm_start(solver_bodies);
             }
-            for c in &mut solver.constraints {
-                let s = if c.has_rigid_partner() {
-                    &soft_static
-                } else {
-                    &soft
-                };
-                c.solve(&mut solver.bodies, s, inv_h, max_push, true);
+            for block in blocks.iter_mut() {
+                block.solve(solver_bodies, &solve);
             }
             solver.integrate_positions(bodies, h);
-            for c in &mut solver.constraints {
-                let s = if c.has_rigid_partner() {
-                    &soft_static
-                } else {
-                    &soft
-                };
-                c.solve(&mut solver.bodies, s, inv_h, max_push, false);
+            let (blocks, solver_bodies) = solver.blocks_and_bodies();
+            for block in blocks.iter_mut() {
+                block.solve(solver_bodies, &relax);
             }
         }
         let threshold = settings.restitution_threshold;
-        for c in &mut solver.constraints {
-            c.apply_restitution(&mut solver.bodies, threshold);
+        let (blocks, solver_bodies) = solver.blocks_and_bodies();
+        for block in blocks.iter_mut() {
+            block.apply_restitution(solver_bodies, threshold);
         }
-        for c in &solver.constraints {
-            c.store_impulses(&mut self.contacts[c.contact as usize]);
+        for block in solver.blocks() {
+            block.store_impulses(&mut self.contacts);
         }
         for (sb, &slot) in solver.bodies.iter().zip(&solver.slots).skip(1) {
             let i = slot as usize;

@@ -11,142 +11,112 @@
 //! and the effective mass along n is 1/k with
 //! k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × n))·(r_a × n) + (I_b⁻¹(r_b × n))·(r_b × n). The same holds
 //! along each tangent. The products r × n and I⁻¹(r × n) are computed once per step in
-//! [`prepare`], so an iteration costs a few dot products per point.
+//! [`ContactBlock::prepare_lane`], so an iteration costs a few dot products per point.
+//!
+//! Constraints are stored [`LANES`] to a [`ContactBlock`], field by field (structure of
+//! arrays); a lane is one contact. The solver visits the lanes of a block in order and the
+//! blocks in order, so the block layout is storage only: it changes no result.
 
 use super::body::SolverBody;
+use super::lanes::{LANES, Lanes, Lanes3};
 use super::softness::Softness;
 use crate::math::{Real, Vec3};
 use crate::rigid::contact::Contact;
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 
-/// What the solver keeps for one contact point during a step.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct ConstraintPoint<R: Real> {
+/// What the solver keeps for one contact point of each lane during a step.
+#[derive(Clone, Copy, Debug)]
+struct PointLanes<R: Real> {
     /// r_a × n and r_b × n, m.
-    rn_a: Vec3<R>,
-    rn_b: Vec3<R>,
+    rn_a: Lanes3<R>,
+    rn_b: Lanes3<R>,
     /// I_a⁻¹(r_a × n) and I_b⁻¹(r_b × n): the angular velocity change per unit impulse.
-    in_a: Vec3<R>,
-    in_b: Vec3<R>,
+    in_a: Lanes3<R>,
+    in_b: Lanes3<R>,
     /// r × t and I⁻¹(r × t) for the two tangents.
-    rt_a: [Vec3<R>; 2],
-    rt_b: [Vec3<R>; 2],
-    it_a: [Vec3<R>; 2],
-    it_b: [Vec3<R>; 2],
+    rt_a: [Lanes3<R>; 2],
+    rt_b: [Lanes3<R>; 2],
+    it_a: [Lanes3<R>; 2],
+    it_b: [Lanes3<R>; 2],
     /// Separation at the start of the step, m.
-    base_separation: R,
+    base_separation: Lanes<R>,
     /// 1/k along the normal and the tangents, kg.
-    normal_mass: R,
-    tangent_mass: [R; 2],
+    normal_mass: Lanes<R>,
+    tangent_mass: [Lanes<R>; 2],
     /// Accumulated impulses, N·s.
-    normal_impulse: R,
-    tangent_impulse: [R; 2],
+    normal_impulse: Lanes<R>,
+    tangent_impulse: [Lanes<R>; 2],
     /// The largest normal impulse of one iteration this step: zero means the point never
     /// pushed, so it does not bounce.
-    max_normal_impulse: R,
+    max_normal_impulse: Lanes<R>,
     /// Normal velocity before the step, m/s (negative: approaching).
-    relative_velocity: R,
+    relative_velocity: Lanes<R>,
 }
 
-/// One contact's constraint for a step.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct ContactConstraint<R: Real> {
+impl<R: Real> PointLanes<R> {
+    const ZERO: Self = Self {
+        rn_a: Lanes3::ZERO,
+        rn_b: Lanes3::ZERO,
+        in_a: Lanes3::ZERO,
+        in_b: Lanes3::ZERO,
+        rt_a: [Lanes3::ZERO; 2],
+        rt_b: [Lanes3::ZERO; 2],
+        it_a: [Lanes3::ZERO; 2],
+        it_b: [Lanes3::ZERO; 2],
+        base_separation: [R::ZERO; LANES],
+        normal_mass: [R::ZERO; LANES],
+        tangent_mass: [[R::ZERO; LANES]; 2],
+        normal_impulse: [R::ZERO; LANES],
+        tangent_impulse: [[R::ZERO; LANES]; 2],
+        max_normal_impulse: [R::ZERO; LANES],
+        relative_velocity: [R::ZERO; LANES],
+    };
+}
+
+#[cfg(target_arch = "x86_64")]
+mod avx512;
+#[cfg(test)]
+mod tests;
+
+/// The constraints of up to [`LANES`] contacts for a step, one per lane.
+#[derive(Clone, Debug)]
+pub(crate) struct ContactBlock<R: Real> {
+    /// Lanes in use, from lane 0.
+    len: usize,
+    /// Whether the lanes share no moving body, so that they may be solved side by side.
+    independent: bool,
     /// Solver indices of the two bodies.
-    pub a: u32,
-    pub b: u32,
+    a: [u32; LANES],
+    b: [u32; LANES],
     /// Index of the contact in the world's contact list.
-    pub contact: u32,
-    normal: Vec3<R>,
-    tangents: [Vec3<R>; 2],
+    contact: [u32; LANES],
+    normal: Lanes3<R>,
+    tangents: [Lanes3<R>; 2],
     /// n/m_a, n/m_b, t/m_a and t/m_b: the velocity change per unit impulse, 1/kg.
-    normal_a: Vec3<R>,
-    normal_b: Vec3<R>,
-    tangents_a: [Vec3<R>; 2],
-    tangents_b: [Vec3<R>; 2],
-    friction: R,
-    restitution: R,
+    normal_a: Lanes3<R>,
+    normal_b: Lanes3<R>,
+    tangents_a: [Lanes3<R>; 2],
+    tangents_b: [Lanes3<R>; 2],
+    friction: Lanes<R>,
+    restitution: Lanes<R>,
     /// Contacts with a static or kinematic body are twice as stiff.
-    rigid_partner: bool,
-    count: usize,
-    points: [ConstraintPoint<R>; MAX_MANIFOLD_POINTS],
+    rigid_partner: [bool; LANES],
+    /// Points in use per lane.
+    count: [u8; LANES],
+    points: [PointLanes<R>; MAX_MANIFOLD_POINTS],
 }
 
-/// Builds the constraint of `contact` between solver bodies `a` and `b` whose centres of
-/// mass are at `centre_a`, `centre_b` (m): anchors, effective masses, tangents, and the
-/// approach velocity of each point for restitution.
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn prepare<R: Real>(
-    contact: &Contact<R>,
-    index: u32,
-    (a, centre_a): (u32, Vec3<R>),
-    (b, centre_b): (u32, Vec3<R>),
-    bodies: &[SolverBody<R>],
-    friction: R,
-    restitution: R,
-) -> ContactConstraint<R> {
-    let ba = &bodies[a as usize];
-    let bb = &bodies[b as usize];
-    let n = contact.normal;
-    let t0 = n.any_orthonormal();
-    let tangents = [t0, n.cross(t0)];
-    let m_sum = ba.inv_mass + bb.inv_mass;
-    let mut points = [ConstraintPoint::default(); MAX_MANIFOLD_POINTS];
-    for (cp, p) in points.iter_mut().zip(contact.points()) {
-        let r_a = p.point - centre_a;
-        let r_b = p.point - centre_b;
-        let rn_a = r_a.cross(n);
-        let rn_b = r_b.cross(n);
-        let in_a = ba.inv_inertia * rn_a;
-        let in_b = bb.inv_inertia * rn_b;
-        let k = m_sum + in_a.dot(rn_a) + in_b.dot(rn_b);
-        let mut rt_a = [Vec3::ZERO; 2];
-        let mut rt_b = [Vec3::ZERO; 2];
-        let mut it_a = [Vec3::ZERO; 2];
-        let mut it_b = [Vec3::ZERO; 2];
-        let mut tangent_mass = [R::ZERO; 2];
-        for j in 0..2 {
-            rt_a[j] = r_a.cross(tangents[j]);
-            rt_b[j] = r_b.cross(tangents[j]);
-            it_a[j] = ba.inv_inertia * rt_a[j];
-            it_b[j] = bb.inv_inertia * rt_b[j];
-            let kt = m_sum + it_a[j].dot(rt_a[j]) + it_b[j].dot(rt_b[j]);
-            tangent_mass[j] = inverse_or_zero(kt);
-        }
-        let relative_velocity = (bb.v - ba.v).dot(n) + bb.w.dot(rn_b) - ba.w.dot(rn_a);
-        *cp = ConstraintPoint {
-            rn_a,
-            rn_b,
-            in_a,
-            in_b,
-            rt_a,
-            rt_b,
-            it_a,
-            it_b,
-            base_separation: p.separation,
-            normal_mass: inverse_or_zero(k),
-            tangent_mass,
-            normal_impulse: p.normal_impulse,
-            tangent_impulse: p.tangent_impulse,
-            max_normal_impulse: R::ZERO,
-            relative_velocity,
-        };
-    }
-    ContactConstraint {
-        a,
-        b,
-        contact: index,
-        normal: n,
-        tangents,
-        normal_a: n * ba.inv_mass,
-        normal_b: n * bb.inv_mass,
-        tangents_a: tangents.map(|t| t * ba.inv_mass),
-        tangents_b: tangents.map(|t| t * bb.inv_mass),
-        friction,
-        restitution,
-        rigid_partner: ba.inv_mass == R::ZERO || bb.inv_mass == R::ZERO,
-        count: usize::from(contact.count),
-        points,
-    }
+/// The coefficients a lane's solve uses: the step's softness for contacts between two
+/// moving bodies and for contacts with a static or kinematic body, the inverse substep
+/// (1/s), the largest push-out speed (m/s), and whether the soft bias applies (false in
+/// the relax pass).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SolvePass<R: Real> {
+    pub soft: Softness<R>,
+    pub soft_static: Softness<R>,
+    pub inv_h: R,
+    pub max_push: R,
+    pub use_bias: bool,
 }
 
 /// 1/k, or 0 when k is not positive (two bodies of infinite mass).
@@ -175,51 +145,144 @@ fn pair<R: Real>(
     }
 }
 
-impl<R: Real> ContactConstraint<R> {
-    /// Applies the impulses carried from the last step: v_a −= P/m_a, ω_a −= I_a⁻¹(r_a × P),
-    /// and the opposite on B, with P = λ_n n + λ₁ t₁ + λ₂ t₂.
-    pub fn warm_start(&self, bodies: &mut [SolverBody<R>]) {
-        let (ba, bb) = pair(bodies, self.a, self.b);
-        for cp in &self.points[..self.count] {
-            let [t0, t1] = cp.tangent_impulse;
-            if cp.normal_impulse == R::ZERO && t0 == R::ZERO && t1 == R::ZERO {
-                continue;
-            }
-            let n = cp.normal_impulse;
-            ba.v -= self.normal_a * n + self.tangents_a[0] * t0 + self.tangents_a[1] * t1;
-            ba.w -= cp.in_a * n + cp.it_a[0] * t0 + cp.it_a[1] * t1;
-            bb.v += self.normal_b * n + self.tangents_b[0] * t0 + self.tangents_b[1] * t1;
-            bb.w += cp.in_b * n + cp.it_b[0] * t0 + cp.it_b[1] * t1;
+impl<R: Real> ContactBlock<R> {
+    /// A block with no lane in use.
+    pub fn empty() -> Self {
+        Self {
+            len: 0,
+            independent: false,
+            a: [0; LANES],
+            b: [0; LANES],
+            contact: [0; LANES],
+            normal: Lanes3::ZERO,
+            tangents: [Lanes3::ZERO; 2],
+            normal_a: Lanes3::ZERO,
+            normal_b: Lanes3::ZERO,
+            tangents_a: [Lanes3::ZERO; 2],
+            tangents_b: [Lanes3::ZERO; 2],
+            friction: [R::ZERO; LANES],
+            restitution: [R::ZERO; LANES],
+            rigid_partner: [false; LANES],
+            count: [0; LANES],
+            points: [PointLanes::ZERO; MAX_MANIFOLD_POINTS],
         }
     }
 
-    /// The relative normal velocity of point `cp`, v_n (m/s).
-    #[inline(always)]
-    fn normal_velocity(
-        &self,
-        cp: &ConstraintPoint<R>,
-        ba: &SolverBody<R>,
-        bb: &SolverBody<R>,
-    ) -> R {
-        (bb.v - ba.v).dot_fused(self.normal) + bb.w.dot_fused(cp.rn_b) - ba.w.dot_fused(cp.rn_a)
+    /// Frees every lane (their old contents stay, unread); the lanes to come share no
+    /// moving body when `independent`.
+    pub fn clear(&mut self, independent: bool) {
+        self.len = 0;
+        self.independent = independent;
     }
 
-    /// Applies the normal impulse `applied` (N·s) at point `cp`.
-    #[inline(always)]
-    fn apply_normal(
-        &self,
-        cp: &ConstraintPoint<R>,
-        ba: &mut SolverBody<R>,
-        bb: &mut SolverBody<R>,
-        applied: R,
+    /// Builds, in the next free lane, the constraint of `contact` between solver bodies
+    /// `a` and `b` whose centres of mass are at `centre_a`, `centre_b` (m): anchors,
+    /// effective masses, tangents, and the approach velocity of each point for
+    /// restitution. The block must not be full.
+    #[allow(clippy::too_many_arguments)]
+    pub fn prepare_lane(
+        &mut self,
+        contact: &Contact<R>,
+        index: u32,
+        (a, centre_a): (u32, Vec3<R>),
+        (b, centre_b): (u32, Vec3<R>),
+        bodies: &[SolverBody<R>],
+        friction: R,
+        restitution: R,
     ) {
-        ba.v -= self.normal_a * applied;
-        ba.w -= cp.in_a * applied;
-        bb.v += self.normal_b * applied;
-        bb.w += cp.in_b * applied;
+        let l = self.len;
+        self.len += 1;
+        let ba = &bodies[a as usize];
+        let bb = &bodies[b as usize];
+        let n = contact.normal;
+        let t0 = n.any_orthonormal();
+        let tangents = [t0, n.cross(t0)];
+        let m_sum = ba.inv_mass + bb.inv_mass;
+        for (cp, p) in self.points.iter_mut().zip(contact.points()) {
+            let r_a = p.point - centre_a;
+            let r_b = p.point - centre_b;
+            let rn_a = r_a.cross(n);
+            let rn_b = r_b.cross(n);
+            let in_a = ba.inv_inertia * rn_a;
+            let in_b = bb.inv_inertia * rn_b;
+            let k = m_sum + in_a.dot(rn_a) + in_b.dot(rn_b);
+            for (j, &t) in tangents.iter().enumerate() {
+                let rt_a = r_a.cross(t);
+                let rt_b = r_b.cross(t);
+                let it_a = ba.inv_inertia * rt_a;
+                let it_b = bb.inv_inertia * rt_b;
+                let kt = m_sum + it_a.dot(rt_a) + it_b.dot(rt_b);
+                cp.rt_a[j].set(l, rt_a);
+                cp.rt_b[j].set(l, rt_b);
+                cp.it_a[j].set(l, it_a);
+                cp.it_b[j].set(l, it_b);
+                cp.tangent_mass[j][l] = inverse_or_zero(kt);
+                cp.tangent_impulse[j][l] = p.tangent_impulse[j];
+            }
+            let relative_velocity = (bb.v - ba.v).dot(n) + bb.w.dot(rn_b) - ba.w.dot(rn_a);
+            cp.rn_a.set(l, rn_a);
+            cp.rn_b.set(l, rn_b);
+            cp.in_a.set(l, in_a);
+            cp.in_b.set(l, in_b);
+            cp.base_separation[l] = p.separation;
+            cp.normal_mass[l] = inverse_or_zero(k);
+            cp.normal_impulse[l] = p.normal_impulse;
+            cp.max_normal_impulse[l] = R::ZERO;
+            cp.relative_velocity[l] = relative_velocity;
+        }
+        self.a[l] = a;
+        self.b[l] = b;
+        self.contact[l] = index;
+        self.normal.set(l, n);
+        for (j, &t) in tangents.iter().enumerate() {
+            self.tangents[j].set(l, t);
+            self.tangents_a[j].set(l, t * ba.inv_mass);
+            self.tangents_b[j].set(l, t * bb.inv_mass);
+        }
+        self.normal_a.set(l, n * ba.inv_mass);
+        self.normal_b.set(l, n * bb.inv_mass);
+        self.friction[l] = friction;
+        self.restitution[l] = restitution;
+        self.rigid_partner[l] = ba.inv_mass == R::ZERO || bb.inv_mass == R::ZERO;
+        self.count[l] = contact.count;
     }
 
-    /// One Gauss–Seidel pass over the points: the normal impulses, then friction.
+    /// Applies the impulses carried from the last step, lane by lane: v_a −= P/m_a,
+    /// ω_a −= I_a⁻¹(r_a × P), and the opposite on B, with P = λ_n n + λ₁ t₁ + λ₂ t₂.
+    ///
+    /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
+    /// processor has it ([`avx512`]), which gives the same bits.
+    pub fn warm_start(&self, bodies: &mut [SolverBody<R>]) {
+        #[cfg(target_arch = "x86_64")]
+        if self.independent && avx512::warm_start(self, bodies) {
+            return;
+        }
+        self.warm_start_lanes(bodies);
+    }
+
+    /// [`warm_start`](Self::warm_start), one lane after another.
+    pub fn warm_start_lanes(&self, bodies: &mut [SolverBody<R>]) {
+        for l in 0..self.len {
+            let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
+            let (normal_a, normal_b) = (self.normal_a.get(l), self.normal_b.get(l));
+            let tangents_a = [self.tangents_a[0].get(l), self.tangents_a[1].get(l)];
+            let tangents_b = [self.tangents_b[0].get(l), self.tangents_b[1].get(l)];
+            for cp in &self.points[..usize::from(self.count[l])] {
+                let [t0, t1] = [cp.tangent_impulse[0][l], cp.tangent_impulse[1][l]];
+                let n = cp.normal_impulse[l];
+                if n == R::ZERO && t0 == R::ZERO && t1 == R::ZERO {
+                    continue;
+                }
+                ba.v -= normal_a * n + tangents_a[0] * t0 + tangents_a[1] * t1;
+                ba.w -= cp.in_a.get(l) * n + cp.it_a[0].get(l) * t0 + cp.it_a[1].get(l) * t1;
+                bb.v += normal_b * n + tangents_b[0] * t0 + tangents_b[1] * t1;
+                bb.w += cp.in_b.get(l) * n + cp.it_b[0].get(l) * t0 + cp.it_b[1].get(l) * t1;
+            }
+        }
+    }
+
+    /// One Gauss–Seidel pass over the block, lane by lane: for each lane the normal
+    /// impulses of its points, then friction.
     ///
     /// Normal: with the current separation s = s₀ + (Δp_b − Δp_a)·n + Δθ_b·(r_b × n) −
     /// Δθ_a·(r_a × n), a point still apart (s > 0) only stops the approach that would close
@@ -231,108 +294,142 @@ impl<R: Real> ContactConstraint<R> {
     /// impulse is clamped to the disc |λ_t| ≤ μ λ_n (Coulomb's cone, not a box, so sliding
     /// speed does not depend on the direction). A point with no normal and no tangent
     /// impulse is skipped: its cone has radius 0, so nothing would change.
-    pub fn solve(
-        &mut self,
-        bodies: &mut [SolverBody<R>],
-        softness: &Softness<R>,
-        inv_h: R,
-        max_push: R,
-        use_bias: bool,
-    ) {
-        let (ba, bb) = pair(bodies, self.a, self.b);
-        let moved_apart = (bb.dp - ba.dp).dot_fused(self.normal);
-        for k in 0..self.count {
-            let cp = &self.points[k];
-            let s = cp.base_separation + moved_apart + bb.dtheta.dot_fused(cp.rn_b)
-                - ba.dtheta.dot_fused(cp.rn_a);
+    ///
+    /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
+    /// processor has it ([`avx512`]), which gives the same bits.
+    pub fn solve(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
+        #[cfg(target_arch = "x86_64")]
+        if self.independent && avx512::solve(self, bodies, pass) {
+            return;
+        }
+        self.solve_lanes(bodies, pass);
+    }
+
+    /// [`solve`](Self::solve), one lane after another.
+    pub fn solve_lanes(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
+        for l in 0..self.len {
+            self.solve_lane(l, bodies, pass);
+        }
+    }
+
+    /// [`solve`](Self::solve) for lane `l`.
+    fn solve_lane(&mut self, l: usize, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
+        let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
+        let softness = if self.rigid_partner[l] {
+            &pass.soft_static
+        } else {
+            &pass.soft
+        };
+        let count = usize::from(self.count[l]);
+        let normal = self.normal.get(l);
+        let (normal_a, normal_b) = (self.normal_a.get(l), self.normal_b.get(l));
+        let moved_apart = (bb.dp - ba.dp).dot_fused(normal);
+        for cp in &mut self.points[..count] {
+            let (rn_a, rn_b) = (cp.rn_a.get(l), cp.rn_b.get(l));
+            let s = cp.base_separation[l] + moved_apart + bb.dtheta.dot_fused(rn_b)
+                - ba.dtheta.dot_fused(rn_a);
             let (bias, mass_scale, impulse_scale) = if s > R::ZERO {
-                (s * inv_h, R::ONE, R::ZERO)
-            } else if use_bias {
+                (s * pass.inv_h, R::ONE, R::ZERO)
+            } else if pass.use_bias {
                 (
-                    (softness.bias_rate * s).max(-max_push),
+                    (softness.bias_rate * s).max(-pass.max_push),
                     softness.mass_scale,
                     softness.impulse_scale,
                 )
             } else {
                 (R::ZERO, R::ONE, R::ZERO)
             };
-            let vn = self.normal_velocity(cp, ba, bb);
+            let vn = (bb.v - ba.v).dot_fused(normal) + bb.w.dot_fused(rn_b) - ba.w.dot_fused(rn_a);
+            let old_impulse = cp.normal_impulse[l];
             let impulse =
-                -(cp.normal_mass * mass_scale * (vn + bias)) - impulse_scale * cp.normal_impulse;
-            let new_impulse = (cp.normal_impulse + impulse).max(R::ZERO);
-            let applied = new_impulse - cp.normal_impulse;
-            self.apply_normal(&self.points[k], ba, bb, applied);
-            let cp = &mut self.points[k];
-            cp.normal_impulse = new_impulse;
-            cp.max_normal_impulse = cp.max_normal_impulse.max(applied);
+                -(cp.normal_mass[l] * mass_scale * (vn + bias)) - impulse_scale * old_impulse;
+            let new_impulse = (old_impulse + impulse).max(R::ZERO);
+            let applied = new_impulse - old_impulse;
+            ba.v -= normal_a * applied;
+            ba.w -= cp.in_a.get(l) * applied;
+            bb.v += normal_b * applied;
+            bb.w += cp.in_b.get(l) * applied;
+            cp.normal_impulse[l] = new_impulse;
+            cp.max_normal_impulse[l] = cp.max_normal_impulse[l].max(applied);
         }
-        let friction = self.friction;
-        for cp in &mut self.points[..self.count] {
-            if cp.normal_impulse == R::ZERO && cp.tangent_impulse == [R::ZERO; 2] {
+        let friction = self.friction[l];
+        let tangents = [self.tangents[0].get(l), self.tangents[1].get(l)];
+        let tangents_a = [self.tangents_a[0].get(l), self.tangents_a[1].get(l)];
+        let tangents_b = [self.tangents_b[0].get(l), self.tangents_b[1].get(l)];
+        for cp in &mut self.points[..count] {
+            let old_impulse = [cp.tangent_impulse[0][l], cp.tangent_impulse[1][l]];
+            let normal_impulse = cp.normal_impulse[l];
+            if normal_impulse == R::ZERO && old_impulse == [R::ZERO; 2] {
                 continue;
             }
             let dv = bb.v - ba.v;
-            let mut new_impulse = cp.tangent_impulse;
+            let mut new_impulse = old_impulse;
             for (j, impulse) in new_impulse.iter_mut().enumerate() {
-                let vt = dv.dot_fused(self.tangents[j]) + bb.w.dot_fused(cp.rt_b[j])
-                    - ba.w.dot_fused(cp.rt_a[j]);
-                *impulse -= cp.tangent_mass[j] * vt;
+                let vt = dv.dot_fused(tangents[j]) + bb.w.dot_fused(cp.rt_b[j].get(l))
+                    - ba.w.dot_fused(cp.rt_a[j].get(l));
+                *impulse -= cp.tangent_mass[j][l] * vt;
             }
-            let limit = friction * cp.normal_impulse;
+            let limit = friction * normal_impulse;
             let length_squared = new_impulse[0] * new_impulse[0] + new_impulse[1] * new_impulse[1];
             if length_squared > limit * limit {
                 let scale = limit * length_squared.rsqrt();
                 new_impulse = [new_impulse[0] * scale, new_impulse[1] * scale];
             }
             let [a0, a1] = [
-                new_impulse[0] - cp.tangent_impulse[0],
-                new_impulse[1] - cp.tangent_impulse[1],
+                new_impulse[0] - old_impulse[0],
+                new_impulse[1] - old_impulse[1],
             ];
-            cp.tangent_impulse = new_impulse;
-            ba.v -= self.tangents_a[0] * a0 + self.tangents_a[1] * a1;
-            ba.w -= cp.it_a[0] * a0 + cp.it_a[1] * a1;
-            bb.v += self.tangents_b[0] * a0 + self.tangents_b[1] * a1;
-            bb.w += cp.it_b[0] * a0 + cp.it_b[1] * a1;
+            cp.tangent_impulse[0][l] = new_impulse[0];
+            cp.tangent_impulse[1][l] = new_impulse[1];
+            ba.v -= tangents_a[0] * a0 + tangents_a[1] * a1;
+            ba.w -= cp.it_a[0].get(l) * a0 + cp.it_a[1].get(l) * a1;
+            bb.v += tangents_b[0] * a0 + tangents_b[1] * a1;
+            bb.w += cp.it_b[0].get(l) * a0 + cp.it_b[1].get(l) * a1;
         }
     }
 
-    /// Restitution, after the substeps: a point that approached faster than `threshold`
-    /// (m/s) and pushed during the step gets the normal impulse that makes it separate at
-    /// e times its approach speed, λ = −m_n (v_n + e v_n,before), accumulated and kept ≥ 0.
+    /// Restitution, after the substeps, lane by lane: a point that approached faster than
+    /// `threshold` (m/s) and pushed during the step gets the normal impulse that makes it
+    /// separate at e times its approach speed, λ = −m_n (v_n + e v_n,before), accumulated
+    /// and kept ≥ 0.
     pub fn apply_restitution(&mut self, bodies: &mut [SolverBody<R>], threshold: R) {
-        if self.restitution == R::ZERO {
-            return;
-        }
-        let (ba, bb) = pair(bodies, self.a, self.b);
-        for k in 0..self.count {
-            let cp = &self.points[k];
-            if cp.relative_velocity > -threshold || cp.max_normal_impulse == R::ZERO {
+        for l in 0..self.len {
+            let restitution = self.restitution[l];
+            if restitution == R::ZERO {
                 continue;
             }
-            let vn = self.normal_velocity(cp, ba, bb);
-            let impulse = -(cp.normal_mass * (vn + self.restitution * cp.relative_velocity));
-            let new_impulse = (cp.normal_impulse + impulse).max(R::ZERO);
-            let applied = new_impulse - cp.normal_impulse;
-            self.apply_normal(cp, ba, bb, applied);
-            self.points[k].normal_impulse = new_impulse;
+            let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
+            let normal = self.normal.get(l);
+            let (normal_a, normal_b) = (self.normal_a.get(l), self.normal_b.get(l));
+            for cp in &mut self.points[..usize::from(self.count[l])] {
+                if cp.relative_velocity[l] > -threshold || cp.max_normal_impulse[l] == R::ZERO {
+                    continue;
+                }
+                let (rn_a, rn_b) = (cp.rn_a.get(l), cp.rn_b.get(l));
+                let vn =
+                    (bb.v - ba.v).dot_fused(normal) + bb.w.dot_fused(rn_b) - ba.w.dot_fused(rn_a);
+                let impulse = -(cp.normal_mass[l] * (vn + restitution * cp.relative_velocity[l]));
+                let old_impulse = cp.normal_impulse[l];
+                let new_impulse = (old_impulse + impulse).max(R::ZERO);
+                let applied = new_impulse - old_impulse;
+                ba.v -= normal_a * applied;
+                ba.w -= cp.in_a.get(l) * applied;
+                bb.v += normal_b * applied;
+                bb.w += cp.in_b.get(l) * applied;
+                cp.normal_impulse[l] = new_impulse;
+            }
         }
     }
 
-    /// Whether the pair's partner is static or kinematic (it gets the stiffer softness).
-    pub fn has_rigid_partner(&self) -> bool {
-        self.rigid_partner
-    }
-
-    /// Copies the accumulated impulses back into the persistent contact, for warm starting
-    /// the next step.
-    pub fn store_impulses(&self, contact: &mut Contact<R>) {
-        for (p, cp) in contact
-            .points_mut()
-            .iter_mut()
-            .zip(&self.points[..self.count])
-        {
-            p.normal_impulse = cp.normal_impulse;
-            p.tangent_impulse = cp.tangent_impulse;
+    /// Copies the accumulated impulses back into the persistent contacts, for warm
+    /// starting the next step.
+    pub fn store_impulses(&self, contacts: &mut [Contact<R>]) {
+        for l in 0..self.len {
+            let contact = &mut contacts[self.contact[l] as usize];
+            for (p, cp) in contact.points_mut().iter_mut().zip(&self.points) {
+                p.normal_impulse = cp.normal_impulse[l];
+                p.tangent_impulse = [cp.tangent_impulse[0][l], cp.tangent_impulse[1][l]];
+            }
         }
     }
 }

@@ -3,8 +3,8 @@
 //!
 //! [`Solver::run`] performs, for one step of length dt split into n substeps of h = dt/n:
 //!
-//! 1. **prepare**: one [`ContactConstraint`] per contact with a body to move (anchors,
-//!    effective masses, approach velocities);
+//! 1. **prepare**: one constraint per contact with a body to move (anchors, effective
+//!    masses, approach velocities), stored [`LANES`] to a [`ContactBlock`];
 //! 2. per substep: **integrate velocities** (gravity, forces, damping, gyroscopic torque),
 //!    **warm start** (apply the accumulated impulses), **solve** (with the soft bias),
 //!    **integrate positions**, **relax** (solve again without bias, removing the velocity
@@ -12,17 +12,23 @@
 //! 3. **restitution**;
 //! 4. **store impulses** into the persistent contacts for the next step.
 //!
-//! Constraints are visited in contact-key order, bodies in slot order: the same on every
-//! machine.
+//! Constraints are visited block by block in the order of [`batching`], close to
+//! contact-key order; bodies in slot order: the same on every machine.
 
+mod batching;
 mod body;
 mod contact_constraint;
 mod integrate;
+mod lanes;
+mod prepare;
 mod softness;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};
-pub(crate) use contact_constraint::{ContactConstraint, prepare as prepare_constraint};
+pub(crate) use contact_constraint::{ContactBlock, SolvePass};
 pub(crate) use softness::Softness;
+
+use crate::math::Real;
+use batching::Batching;
 
 /// Buffers the solver reuses from step to step. They hold no state between steps, only
 /// capacity.
@@ -34,5 +40,22 @@ pub(crate) struct Solver<R: crate::math::Real> {
     pub slots: Vec<u32>,
     /// The solver index of each body slot ([`STATIC_BODY`] for bodies it does not move).
     pub index_of_slot: Vec<u32>,
-    pub constraints: Vec<ContactConstraint<R>>,
+    /// The step's constraints: the first `block_count` blocks, in solving order. Blocks
+    /// past those keep their memory for later steps.
+    blocks: Vec<ContactBlock<R>>,
+    block_count: usize,
+    /// The batching of the step's constraints into blocks.
+    batching: Batching,
+}
+
+impl<R: Real> Solver<R> {
+    /// The blocks in use, in solving order.
+    pub fn blocks(&self) -> &[ContactBlock<R>] {
+        &self.blocks[..self.block_count]
+    }
+
+    /// The blocks in use, mutably, with the solver bodies.
+    pub fn blocks_and_bodies(&mut self) -> (&mut [ContactBlock<R>], &mut [SolverBody<R>]) {
+        (&mut self.blocks[..self.block_count], &mut self.bodies)
+    }
 }

@@ -1,0 +1,711 @@
+//! The solve pass of an independent block of I32F32 constraints in AVX-512: the eight lanes
+//! side by side, one `i64` lane per constraint, with the bits of
+//! [`ContactBlock::solve_lanes`].
+//!
+//! # Why side by side gives the same bits
+//!
+//! The lanes of an independent block share no moving body, so solving them one after
+//! another or together reads and writes the same values; bodies that do not move (the
+//! static body, kinematic bodies) have zero inverse mass and inertia, so every lane writes
+//! back exactly the value it read, and two lanes writing one such body write the same
+//! value.
+//!
+//! # Exactness
+//!
+//! The kernel computes every operation of [`ContactBlock::solve_lanes`], in the same
+//! order, modulo 2⁶⁴. Every value it loads (body velocities and motions, constraint
+//! coefficients, impulses) and every value that enters a product is checked to lie in
+//! [−2⁴⁶, 2⁴⁶) as raw bits (|x| ≤ 16384 in I32F32). Then:
+//!
+//! * a product a·b of checked values is at most 2⁹² before rounding, 2⁶⁰ after;
+//! * a dot product of three is at most 3·2⁹² before rounding, below 2⁶² after;
+//! * every sum and difference of the pass has at most four terms, each a checked value or
+//!   a product or dot product: below 2⁶³.
+//!
+//! So no operation leaves the `i64` range: the checked operators saturate nowhere and
+//! their results are the exact rounded values, which the kernel's exact residues equal.
+//! When a check fails in a lane in use, the kernel stops before writing anything and the
+//! block takes [`ContactBlock::solve_lanes`], which saturates and counts as usual.
+//!
+//! # Products
+//!
+//! `_mm512_mul_epi32` multiplies the signed low 32 bits of each lane into 64. With
+//! a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ (|a_h| ≤ 2¹⁴ for a checked a) and a_l ∈
+//! [−2³¹, 2³¹) the signed low half of a, and b likewise,
+//!
+//! ```text
+//! ⌊(a·b + 2³¹)/2³²⌋ = a_h·b_h·2³² + a_h·b_l + a_l·b_h + ⌊(a_l·b_l + 2³¹)/2³²⌋
+//! ```
+//!
+//! since the first three terms of a·b are multiples of 2³²; this is the checked `*` (to
+//! nearest, ties toward +∞). For the fused dot product Σ aᵢbᵢ rounded once, each a_l·b_l
+//! is split into q·2³² + r with 0 ≤ r < 2³², so that
+//! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (a_h·b_h·2³² + a_h·b_l + a_l·b_h + q) + ⌊(Σ r + 2³¹)/2³²⌋, and
+//! Σ r + 2³¹ < 2³⁴ cannot overflow.
+//!
+//! The friction clamp, which needs 1/√x, runs per lane in scalar code with the checked
+//! operators, in the few lanes where it applies.
+
+use core::any::Any;
+use core::arch::x86_64::{
+    __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
+    _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
+    _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64, _mm512_max_epi64, _mm512_mul_epi32,
+    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_srai_epi64,
+    _mm512_storeu_si512, _mm512_sub_epi64,
+};
+use core::mem::{offset_of, size_of};
+
+use super::{ContactBlock, SolvePass};
+use crate::math::{Fx, Real, Vec3};
+use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
+
+/// `SolverBody<Fx>` in `i64` words, and the word offsets of the fields the kernel reads.
+const BODY_WORDS: i64 = (size_of::<SolverBody<Fx>>() / 8) as i64;
+const V: i64 = (offset_of!(SolverBody<Fx>, v) / 8) as i64;
+const W: i64 = (offset_of!(SolverBody<Fx>, w) / 8) as i64;
+const DP: i64 = (offset_of!(SolverBody<Fx>, dp) / 8) as i64;
+const DTHETA: i64 = (offset_of!(SolverBody<Fx>, dtheta) / 8) as i64;
+
+// The layout the gathers rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row, the body
+// a whole number of words.
+const _: () = {
+    assert!(size_of::<Fx>() == 8);
+    assert!(size_of::<Vec3<Fx>>() == 24);
+    assert!(size_of::<SolverBody<Fx>>().is_multiple_of(8));
+    assert!(LANES == 8);
+};
+
+/// Solves `block` with the kernel when `R` is I32F32, the block is independent and the
+/// processor has AVX-512F; returns whether it did (if not, nothing was written).
+pub(super) fn solve<R: Real>(
+    block: &mut ContactBlock<R>,
+    bodies: &mut [SolverBody<R>],
+    pass: &SolvePass<R>,
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let (Some(block), Some(pass)) = (
+        (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>(),
+        (pass as &dyn Any).downcast_ref::<SolvePass<Fx>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
+    let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
+    // SAFETY: AVX-512F was detected on this processor just above.
+    unsafe { solve_block(block, bodies, pass) }
+}
+
+/// Warm starting of `block` with the kernel, under the same conditions as [`solve`];
+/// returns whether it ran (if not, nothing was written).
+pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverBody<R>]) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcast succeeded), so the slice's type is unchanged.
+    let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
+    // SAFETY: AVX-512F was detected on this processor just above.
+    unsafe { warm_start_block(block, bodies) }
+}
+
+/// The warm start kernel: per point, v_a −= n/m_a λ_n + t₁/m_a λ₁ + t₂/m_a λ₂, and so on
+/// for ω_a, v_b, ω_b, as in [`ContactBlock::warm_start`] (a point whose impulses are all
+/// zero adds zero, the same as skipping it). Returns false, having written nothing, when a
+/// value leaves the checked bound in a lane in use.
+///
+/// # Safety
+/// The processor must have AVX-512F.
+#[target_feature(enable = "avx512f")]
+unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> bool {
+    let Some(lanes) = BodyLanes::new(block, bodies) else {
+        return false;
+    };
+    let active = lanes.active;
+    // SAFETY: `BodyLanes::new` checked every active lane's index.
+    let (mut side_a, mut side_b) = unsafe { lanes.gather(false) };
+    let mut bad = side_a.out_of_bound() | side_b.out_of_bound();
+    let zero = _mm512_setzero_si512();
+    let normal_a = load3(&block.normal_a);
+    let normal_b = load3(&block.normal_b);
+    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
+    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
+    bad |= (out_of_bound3(normal_a)
+        | out_of_bound3(normal_b)
+        | out_of_bound3(tangents_a[0])
+        | out_of_bound3(tangents_a[1])
+        | out_of_bound3(tangents_b[0])
+        | out_of_bound3(tangents_b[1]))
+        & active;
+    // SAFETY: 64 readable bytes.
+    let counts = unsafe { _mm512_loadu_si512(block.count.map(i64::from).as_ptr().cast()) };
+    for (k, cp) in block.points.iter().enumerate() {
+        let in_use = _mm512_cmpgt_epi64_mask(counts, _mm512_set1_epi64(k as i64)) & active;
+        if in_use == 0 {
+            continue;
+        }
+        let n = select(in_use, load(&cp.normal_impulse), zero);
+        let t0 = select(in_use, load(&cp.tangent_impulse[0]), zero);
+        let t1 = select(in_use, load(&cp.tangent_impulse[1]), zero);
+        let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
+        let it_a = [load3(&cp.it_a[0]), load3(&cp.it_a[1])];
+        let it_b = [load3(&cp.it_b[0]), load3(&cp.it_b[1])];
+        bad |= (out_of_bound(n) | out_of_bound(t0) | out_of_bound(t1)) & active;
+        bad |= (out_of_bound3(in_a)
+            | out_of_bound3(in_b)
+            | out_of_bound3(it_a[0])
+            | out_of_bound3(it_a[1])
+            | out_of_bound3(it_b[0])
+            | out_of_bound3(it_b[1]))
+            & in_use;
+        let push = |normal: [__m512i; 3], tangents: [[__m512i; 3]; 2]| {
+            add3(
+                add3(mul3(normal, n), mul3(tangents[0], t0)),
+                mul3(tangents[1], t1),
+            )
+        };
+        side_a.v = sub3(side_a.v, push(normal_a, tangents_a));
+        side_a.w = sub3(side_a.w, push(in_a, it_a));
+        side_b.v = add3(side_b.v, push(normal_b, tangents_b));
+        side_b.w = add3(side_b.w, push(in_b, it_b));
+        bad |= (out_of_bound3(side_a.v)
+            | out_of_bound3(side_a.w)
+            | out_of_bound3(side_b.v)
+            | out_of_bound3(side_b.w))
+            & active;
+        if bad != 0 {
+            return false;
+        }
+    }
+    if bad != 0 {
+        return false;
+    }
+    // SAFETY: `BodyLanes::new` checked every active lane's index.
+    unsafe { lanes.scatter(&side_a, &side_b) };
+    true
+}
+
+/// The raw bits of a lane array.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn load(lanes: &Lanes<Fx>) -> __m512i {
+    // SAFETY: eight `Fx`, each one `i64`: 64 readable bytes.
+    unsafe { _mm512_loadu_si512(lanes.as_ptr().cast()) }
+}
+
+/// Writes raw bits to a lane array.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
+    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
+    unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) }
+}
+
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn load3(lanes: &Lanes3<Fx>) -> [__m512i; 3] {
+    [load(&lanes.x), load(&lanes.y), load(&lanes.z)]
+}
+
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn add(a: __m512i, b: __m512i) -> __m512i {
+    _mm512_add_epi64(a, b)
+}
+
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn sub(a: __m512i, b: __m512i) -> __m512i {
+    _mm512_sub_epi64(a, b)
+}
+
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn add3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+    [add(a[0], b[0]), add(a[1], b[1]), add(a[2], b[2])]
+}
+
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+    [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
+}
+
+/// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn high(a: __m512i) -> __m512i {
+    _mm512_srai_epi64::<32>(add(a, _mm512_set1_epi64(1 << 31)))
+}
+
+/// The checked `*` of checked values: ⌊(a·b + 2³¹)/2³²⌋.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn mul(a: __m512i, b: __m512i) -> __m512i {
+    let (ah, bh) = (high(a), high(b));
+    let hh = _mm512_slli_epi64::<32>(_mm512_mul_epi32(ah, bh));
+    let cross = add(_mm512_mul_epi32(ah, b), _mm512_mul_epi32(a, bh));
+    let low = _mm512_srai_epi64::<32>(add(_mm512_mul_epi32(a, b), _mm512_set1_epi64(1 << 31)));
+    add(add(hh, cross), low)
+}
+
+/// Each component times the same factor.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn mul3(a: [__m512i; 3], b: __m512i) -> [__m512i; 3] {
+    [mul(a[0], b), mul(a[1], b), mul(a[2], b)]
+}
+
+/// The fused dot product of checked values: the exact Σ aᵢbᵢ rounded once.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
+    let mask = _mm512_set1_epi64(0xffff_ffff);
+    let mut whole = _mm512_setzero_si512();
+    let mut remainders = _mm512_setzero_si512();
+    for i in 0..3 {
+        let (ah, bh) = (high(a[i]), high(b[i]));
+        let hh = _mm512_slli_epi64::<32>(_mm512_mul_epi32(ah, bh));
+        let cross = add(_mm512_mul_epi32(ah, b[i]), _mm512_mul_epi32(a[i], bh));
+        let ll = _mm512_mul_epi32(a[i], b[i]);
+        whole = add(whole, add(add(hh, cross), _mm512_srai_epi64::<32>(ll)));
+        remainders = add(remainders, _mm512_and_si512(ll, mask));
+    }
+    add(whole, high(remainders))
+}
+
+/// The lanes where x lies outside [−2⁴⁶, 2⁴⁶).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn out_of_bound(x: __m512i) -> __mmask8 {
+    _mm512_cmpge_epu64_mask(
+        add(x, _mm512_set1_epi64(1 << 46)),
+        _mm512_set1_epi64(1 << 47),
+    )
+}
+
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
+    out_of_bound(x[0]) | out_of_bound(x[1]) | out_of_bound(x[2])
+}
+
+/// `on` where the mask is set, `off` elsewhere.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
+    _mm512_mask_blend_epi64(mask, off, on)
+}
+
+/// The same value in every lane.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn splat(x: Fx) -> __m512i {
+    _mm512_set1_epi64(x.to_bits())
+}
+
+/// The velocities and motions of the lanes' bodies on one side.
+struct Side {
+    v: [__m512i; 3],
+    w: [__m512i; 3],
+    dp: [__m512i; 3],
+    dtheta: [__m512i; 3],
+}
+
+impl Side {
+    /// Gathers the bodies whose first words are at `words` (word index of each lane's body)
+    /// in the lanes of `active` (zero elsewhere); the motions dp and dθ only when
+    /// `with_motion` (zero otherwise).
+    ///
+    /// # Safety
+    /// Every active lane's index must be that of a body of `bodies`.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    unsafe fn gather(
+        bodies: *const i64,
+        words: __m512i,
+        active: __mmask8,
+        with_motion: bool,
+    ) -> Self {
+        let zero = _mm512_setzero_si512();
+        let field = |offset: i64| {
+            let at = |k: i64| add(words, _mm512_set1_epi64(offset + k));
+            // SAFETY: each active lane reads a word inside its body (the caller's promise).
+            unsafe {
+                [
+                    _mm512_mask_i64gather_epi64::<8>(zero, active, at(0), bodies),
+                    _mm512_mask_i64gather_epi64::<8>(zero, active, at(1), bodies),
+                    _mm512_mask_i64gather_epi64::<8>(zero, active, at(2), bodies),
+                ]
+            }
+        };
+        Self {
+            v: field(V),
+            w: field(W),
+            dp: if with_motion { field(DP) } else { [zero; 3] },
+            dtheta: if with_motion {
+                field(DTHETA)
+            } else {
+                [zero; 3]
+            },
+        }
+    }
+
+    /// Writes the velocities back.
+    ///
+    /// # Safety
+    /// As for [`Side::gather`], with `bodies` writable.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    unsafe fn scatter_velocities(&self, bodies: *mut i64, words: __m512i, active: __mmask8) {
+        for (offset, value) in [(V, self.v), (W, self.w)] {
+            for (k, component) in value.into_iter().enumerate() {
+                let at = add(words, _mm512_set1_epi64(offset + k as i64));
+                // SAFETY: each active lane writes a word inside its body.
+                unsafe { _mm512_mask_i64scatter_epi64::<8>(bodies, active, at, component) };
+            }
+        }
+    }
+
+    /// The lanes where a value lies outside the checked bound.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    fn out_of_bound(&self) -> __mmask8 {
+        out_of_bound3(self.v)
+            | out_of_bound3(self.w)
+            | out_of_bound3(self.dp)
+            | out_of_bound3(self.dtheta)
+    }
+}
+
+/// Where the bodies of a block's lanes are.
+struct BodyLanes {
+    /// The lanes in use.
+    active: __mmask8,
+    /// The first word of each lane's body A and body B.
+    words_a: __m512i,
+    words_b: __m512i,
+    /// The solver bodies, as words.
+    base: *mut i64,
+}
+
+impl BodyLanes {
+    /// The body words of `block`'s lanes in `bodies`, or `None` if an index is out of
+    /// bounds.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    fn new(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> Option<Self> {
+        let mut words_a = [0i64; LANES];
+        let mut words_b = [0i64; LANES];
+        for l in 0..block.len {
+            let (a, b) = (block.a[l] as usize, block.b[l] as usize);
+            if a >= bodies.len() || b >= bodies.len() {
+                return None;
+            }
+            words_a[l] = a as i64 * BODY_WORDS;
+            words_b[l] = b as i64 * BODY_WORDS;
+        }
+        // SAFETY: 64 readable bytes each.
+        let (words_a, words_b) = unsafe {
+            (
+                _mm512_loadu_si512(words_a.as_ptr().cast()),
+                _mm512_loadu_si512(words_b.as_ptr().cast()),
+            )
+        };
+        Some(Self {
+            active: ((1u16 << block.len) - 1) as __mmask8,
+            words_a,
+            words_b,
+            base: bodies.as_mut_ptr().cast::<i64>(),
+        })
+    }
+
+    /// The two sides' bodies, with their motions when `with_motion`.
+    ///
+    /// # Safety
+    /// The bodies must still be those `new` was given, alive and not otherwise borrowed.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    unsafe fn gather(&self, with_motion: bool) -> (Side, Side) {
+        // SAFETY: every active lane's index was checked in `new`.
+        unsafe {
+            (
+                Side::gather(self.base, self.words_a, self.active, with_motion),
+                Side::gather(self.base, self.words_b, self.active, with_motion),
+            )
+        }
+    }
+
+    /// Writes both sides' velocities back.
+    ///
+    /// # Safety
+    /// As for [`BodyLanes::gather`].
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    unsafe fn scatter(&self, a: &Side, b: &Side) {
+        // SAFETY: every active lane's index was checked in `new`.
+        unsafe {
+            a.scatter_velocities(self.base, self.words_a, self.active);
+            b.scatter_velocities(self.base, self.words_b, self.active);
+        }
+    }
+}
+
+/// The kernel. Returns false, having written nothing, when a value leaves the checked
+/// bound in a lane in use.
+///
+/// # Safety
+/// The processor must have AVX-512F.
+#[target_feature(enable = "avx512f")]
+unsafe fn solve_block(
+    block: &mut ContactBlock<Fx>,
+    bodies: &mut [SolverBody<Fx>],
+    pass: &SolvePass<Fx>,
+) -> bool {
+    let Some(lanes) = BodyLanes::new(block, bodies) else {
+        return false;
+    };
+    let active = lanes.active;
+    // SAFETY: `BodyLanes::new` checked every active lane's index.
+    let (mut side_a, mut side_b) = unsafe { lanes.gather(true) };
+    let mut bad = side_a.out_of_bound() | side_b.out_of_bound();
+
+    let zero = _mm512_setzero_si512();
+    let one = splat(Fx::ONE);
+    let rigid_partner = block
+        .rigid_partner
+        .iter()
+        .enumerate()
+        .fold(0u8, |mask, (l, &rigid)| mask | (u8::from(rigid) << l));
+    let soft = |pick: fn(&crate::rigid::solver::Softness<Fx>) -> Fx| {
+        select(
+            rigid_partner,
+            splat(pick(&pass.soft_static)),
+            splat(pick(&pass.soft)),
+        )
+    };
+    let bias_rate = soft(|s| s.bias_rate);
+    let mass_scale = soft(|s| s.mass_scale);
+    let impulse_scale = soft(|s| s.impulse_scale);
+    let inv_h = splat(pass.inv_h);
+    let lowest_bias = splat(-pass.max_push);
+    bad |= (out_of_bound(bias_rate)
+        | out_of_bound(mass_scale)
+        | out_of_bound(impulse_scale)
+        | out_of_bound(inv_h)
+        | out_of_bound(lowest_bias))
+        & active;
+
+    let normal = load3(&block.normal);
+    let normal_a = load3(&block.normal_a);
+    let normal_b = load3(&block.normal_b);
+    let tangents = [load3(&block.tangents[0]), load3(&block.tangents[1])];
+    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
+    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
+    let friction = load(&block.friction);
+    bad |= (out_of_bound3(normal)
+        | out_of_bound3(normal_a)
+        | out_of_bound3(normal_b)
+        | out_of_bound3(tangents[0])
+        | out_of_bound3(tangents[1])
+        | out_of_bound3(tangents_a[0])
+        | out_of_bound3(tangents_a[1])
+        | out_of_bound3(tangents_b[0])
+        | out_of_bound3(tangents_b[1])
+        | out_of_bound(friction))
+        & active;
+    let counts = block.count.map(i64::from);
+    // SAFETY: 64 readable bytes.
+    let counts = unsafe { _mm512_loadu_si512(counts.as_ptr().cast()) };
+    let points_in_use =
+        |k: usize| _mm512_cmpgt_epi64_mask(counts, _mm512_set1_epi64(k as i64)) & active;
+
+    // Normal impulses.
+    let moved = sub3(side_b.dp, side_a.dp);
+    bad |= out_of_bound3(moved) & active;
+    let moved_apart = dot3(moved, normal);
+    let mut normal_impulses = [zero; 4];
+    let mut max_normal_impulses = [zero; 4];
+    for (k, cp) in block.points.iter().enumerate() {
+        let in_use = points_in_use(k);
+        let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
+        let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
+        let base_separation = load(&cp.base_separation);
+        let normal_mass = load(&cp.normal_mass);
+        let old = load(&cp.normal_impulse);
+        let old_max = load(&cp.max_normal_impulse);
+        bad |= (out_of_bound3(rn_a)
+            | out_of_bound3(rn_b)
+            | out_of_bound3(in_a)
+            | out_of_bound3(in_b)
+            | out_of_bound(base_separation)
+            | out_of_bound(normal_mass)
+            | out_of_bound(old)
+            | out_of_bound(old_max))
+            & in_use;
+        let s = sub(
+            add(add(base_separation, moved_apart), dot3(side_b.dtheta, rn_b)),
+            dot3(side_a.dtheta, rn_a),
+        );
+        bad |= out_of_bound(s) & in_use;
+        let apart = _mm512_cmpgt_epi64_mask(s, zero);
+        let speculative_bias = mul(s, inv_h);
+        let (bias, scale_mass, scale_impulse) = if pass.use_bias {
+            let soft_bias = _mm512_max_epi64(mul(bias_rate, s), lowest_bias);
+            (
+                select(apart, speculative_bias, soft_bias),
+                select(apart, one, mass_scale),
+                select(apart, zero, impulse_scale),
+            )
+        } else {
+            (select(apart, speculative_bias, zero), one, zero)
+        };
+        let dv = sub3(side_b.v, side_a.v);
+        bad |= out_of_bound3(dv) & in_use;
+        let vn = sub(
+            add(dot3(dv, normal), dot3(side_b.w, rn_b)),
+            dot3(side_a.w, rn_a),
+        );
+        let biased = add(vn, bias);
+        let mass = mul(normal_mass, scale_mass);
+        bad |= (out_of_bound(biased) | out_of_bound(mass)) & in_use;
+        let impulse = sub(sub(zero, mul(mass, biased)), mul(scale_impulse, old));
+        let new = _mm512_max_epi64(add(old, impulse), zero);
+        let applied = select(in_use, sub(new, old), zero);
+        bad |= out_of_bound(applied) & in_use;
+        side_a.v = sub3(side_a.v, mul3(normal_a, applied));
+        side_a.w = sub3(side_a.w, mul3(in_a, applied));
+        side_b.v = add3(side_b.v, mul3(normal_b, applied));
+        side_b.w = add3(side_b.w, mul3(in_b, applied));
+        bad |= (out_of_bound3(side_a.v)
+            | out_of_bound3(side_a.w)
+            | out_of_bound3(side_b.v)
+            | out_of_bound3(side_b.w))
+            & active;
+        normal_impulses[k] = select(in_use, new, old);
+        max_normal_impulses[k] = select(in_use, _mm512_max_epi64(old_max, applied), old_max);
+        if bad != 0 {
+            return false;
+        }
+    }
+
+    // Friction.
+    let mut tangent_impulses = [[zero; 2]; 4];
+    for (k, cp) in block.points.iter().enumerate() {
+        let in_use = points_in_use(k);
+        let normal_impulse = normal_impulses[k];
+        let old = [load(&cp.tangent_impulse[0]), load(&cp.tangent_impulse[1])];
+        tangent_impulses[k] = old;
+        let pushing = _mm512_cmpneq_epi64_mask(normal_impulse, zero)
+            | _mm512_cmpneq_epi64_mask(old[0], zero)
+            | _mm512_cmpneq_epi64_mask(old[1], zero);
+        let in_use = in_use & pushing;
+        if in_use == 0 {
+            continue;
+        }
+        let rt_a = [load3(&cp.rt_a[0]), load3(&cp.rt_a[1])];
+        let rt_b = [load3(&cp.rt_b[0]), load3(&cp.rt_b[1])];
+        let it_a = [load3(&cp.it_a[0]), load3(&cp.it_a[1])];
+        let it_b = [load3(&cp.it_b[0]), load3(&cp.it_b[1])];
+        let tangent_mass = [load(&cp.tangent_mass[0]), load(&cp.tangent_mass[1])];
+        bad |= (out_of_bound3(rt_a[0])
+            | out_of_bound3(rt_a[1])
+            | out_of_bound3(rt_b[0])
+            | out_of_bound3(rt_b[1])
+            | out_of_bound3(it_a[0])
+            | out_of_bound3(it_a[1])
+            | out_of_bound3(it_b[0])
+            | out_of_bound3(it_b[1])
+            | out_of_bound(tangent_mass[0])
+            | out_of_bound(tangent_mass[1])
+            | out_of_bound(old[0])
+            | out_of_bound(old[1]))
+            & in_use;
+        let dv = sub3(side_b.v, side_a.v);
+        bad |= out_of_bound3(dv) & in_use;
+        let mut new = [zero; 2];
+        for j in 0..2 {
+            let vt = sub(
+                add(dot3(dv, tangents[j]), dot3(side_b.w, rt_b[j])),
+                dot3(side_a.w, rt_a[j]),
+            );
+            bad |= out_of_bound(vt) & in_use;
+            new[j] = sub(old[j], mul(tangent_mass[j], vt));
+        }
+        let limit = mul(friction, normal_impulse);
+        bad |= (out_of_bound(new[0]) | out_of_bound(new[1]) | out_of_bound(limit)) & in_use;
+        if bad != 0 {
+            return false;
+        }
+        let length_squared = add(mul(new[0], new[0]), mul(new[1], new[1]));
+        let outside = _mm512_cmpgt_epi64_mask(length_squared, mul(limit, limit)) & in_use;
+        if outside != 0 {
+            new = clamp_to_cone(outside, new, limit, length_squared);
+        }
+        let applied = [
+            select(in_use, sub(new[0], old[0]), zero),
+            select(in_use, sub(new[1], old[1]), zero),
+        ];
+        bad |= (out_of_bound(applied[0]) | out_of_bound(applied[1])) & in_use;
+        let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], applied[0]), mul3(a[1], applied[1]));
+        side_a.v = sub3(side_a.v, along(tangents_a));
+        side_a.w = sub3(side_a.w, along(it_a));
+        side_b.v = add3(side_b.v, along(tangents_b));
+        side_b.w = add3(side_b.w, along(it_b));
+        bad |= (out_of_bound3(side_a.v)
+            | out_of_bound3(side_a.w)
+            | out_of_bound3(side_b.v)
+            | out_of_bound3(side_b.w))
+            & active;
+        if bad != 0 {
+            return false;
+        }
+        tangent_impulses[k] = [
+            select(in_use, new[0], old[0]),
+            select(in_use, new[1], old[1]),
+        ];
+    }
+
+    for (k, cp) in block.points.iter_mut().enumerate() {
+        store(&mut cp.normal_impulse, normal_impulses[k]);
+        store(&mut cp.max_normal_impulse, max_normal_impulses[k]);
+        store(&mut cp.tangent_impulse[0], tangent_impulses[k][0]);
+        store(&mut cp.tangent_impulse[1], tangent_impulses[k][1]);
+    }
+    // SAFETY: `BodyLanes::new` checked every active lane's index.
+    unsafe { lanes.scatter(&side_a, &side_b) };
+    true
+}
+
+/// The tangent impulses of the `outside` lanes scaled back onto the cone's edge, λ ←
+/// λ · (limit / |λ|), with the checked operators as in the lane-by-lane solve.
+#[target_feature(enable = "avx512f")]
+fn clamp_to_cone(
+    outside: __mmask8,
+    new: [__m512i; 2],
+    limit: __m512i,
+    length_squared: __m512i,
+) -> [__m512i; 2] {
+    let [mut first, mut second, mut limits, mut lengths] = [[Fx::ZERO; LANES]; 4];
+    store(&mut first, new[0]);
+    store(&mut second, new[1]);
+    store(&mut limits, limit);
+    store(&mut lengths, length_squared);
+    let lanes = first
+        .iter_mut()
+        .zip(second.iter_mut())
+        .zip(limits.iter().zip(&lengths));
+    for (l, ((first, second), (&limit, &length_squared))) in lanes.enumerate() {
+        if outside & (1 << l) != 0 {
+            let scale = limit * length_squared.rsqrt();
+            *first *= scale;
+            *second *= scale;
+        }
+    }
+    [load(&first), load(&second)]
+}

@@ -1,0 +1,243 @@
+//! The block passes against their lane-by-lane forms: whichever path a block takes (the
+//! AVX-512 kernels where the processor has them, or the fallback when a value leaves the
+//! kernels' bound), the bits and the saturation count are those of the lanes solved one
+//! after another.
+
+use super::{ContactBlock, SolvePass};
+use crate::math::saturation::count_saturations;
+use crate::math::{Fx, Mat3, Pcg32, Real, Vec3};
+use crate::rigid::contact::{Contact, ContactKey, ContactPoint};
+use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
+use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::lanes::LANES;
+use crate::rigid::solver::softness::Softness;
+
+/// A value in [−scale, scale).
+fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+    rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
+}
+
+fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
+    Vec3::new(value(rng, scale), value(rng, scale), value(rng, scale))
+}
+
+/// `count` moving bodies after the static body, with velocities and motions up to
+/// `scale`, masses from 0.01 to 100 kg and inertias to match; every fifth one kinematic
+/// (zero inverse mass and inertia).
+fn bodies(rng: &mut Pcg32, count: usize, scale: f64) -> Vec<SolverBody<Fx>> {
+    let mut bodies = vec![SolverBody::default()];
+    for i in 0..count {
+        let kinematic = i % 5 == 4;
+        let inv_mass = if kinematic {
+            Fx::ZERO
+        } else {
+            rng.range(Fx::from_f64(0.01), Fx::from_int(100))
+        };
+        let inv_inertia = Mat3::from_symmetric(
+            Vec3::new(
+                inv_mass * Fx::from_int(3),
+                inv_mass * Fx::from_int(2),
+                inv_mass * Fx::from_int(4),
+            ),
+            inv_mass * Fx::from_f64(0.1),
+            Fx::ZERO,
+            inv_mass * Fx::from_f64(-0.2),
+        );
+        bodies.push(SolverBody {
+            v: vector(rng, scale),
+            w: vector(rng, scale),
+            dp: vector(rng, scale / 100.0),
+            dtheta: vector(rng, scale / 100.0),
+            inv_mass,
+            inv_inertia,
+        });
+    }
+    bodies
+}
+
+/// A block of `lanes` contacts with no moving body twice (independent) or with bodies
+/// drawn at random (not independent), with impulses up to `impulse`.
+fn block(
+    rng: &mut Pcg32,
+    bodies: &[SolverBody<Fx>],
+    lanes: usize,
+    independent: bool,
+    impulse: f64,
+) -> ContactBlock<Fx> {
+    let moving = bodies.len() as u32 - 1;
+    let mut order: Vec<u32> = (1..=moving).collect();
+    for i in (1..order.len()).rev() {
+        order.swap(i, rng.below(i as u32 + 1) as usize);
+    }
+    let mut block = ContactBlock::empty();
+    block.clear(independent);
+    for l in 0..lanes {
+        let (a, b) = if independent {
+            // One lane in three against the static body.
+            let a = if l % 3 == 2 { 0 } else { order[2 * l] };
+            (a, order[2 * l + 1])
+        } else {
+            (rng.below(moving) + 1, rng.below(moving) + 1)
+        };
+        let b = if a == b { 0 } else { b };
+        let count = 1 + rng.below(MAX_MANIFOLD_POINTS as u32) as usize;
+        let mut points = [ContactPoint::default(); MAX_MANIFOLD_POINTS];
+        for p in &mut points[..count] {
+            // One point in three is new: no impulse to warm start with.
+            let fresh = rng.below(3) == 0;
+            let carried = if fresh { 0.0 } else { impulse };
+            *p = ContactPoint {
+                point: vector(rng, 2.0),
+                separation: value(rng, 0.05),
+                id: 0,
+                normal_impulse: rng.range(Fx::ZERO, Fx::from_f64(carried)),
+                tangent_impulse: [value(rng, carried / 4.0), value(rng, carried / 4.0)],
+            };
+        }
+        let contact = Contact {
+            key: ContactKey {
+                body_a: a,
+                body_b: b,
+                part_a: 0,
+                part_b: 0,
+            },
+            normal: rng.unit_vector(),
+            count: count as u8,
+            points,
+        };
+        block.prepare_lane(
+            &contact,
+            l as u32,
+            (a, vector(rng, 1.0)),
+            (b, vector(rng, 1.0)),
+            bodies,
+            rng.range(Fx::ZERO, Fx::ONE),
+            rng.range(Fx::ZERO, Fx::ONE),
+        );
+    }
+    block
+}
+
+fn pass(use_bias: bool) -> SolvePass<Fx> {
+    let h = Fx::from_ratio(1, 240);
+    SolvePass {
+        soft: Softness::new(Fx::from_int(45), Fx::from_int(10), h),
+        soft_static: Softness::new(Fx::from_int(60), Fx::from_int(10), h),
+        inv_h: Fx::from_int(240),
+        max_push: Fx::from_int(3),
+        use_bias,
+    }
+}
+
+/// Bits of everything a pass writes: the bodies' velocities and the block's impulses.
+fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
+    let mut bits = Vec::new();
+    for b in bodies {
+        for v in [b.v, b.w] {
+            bits.extend([v.x, v.y, v.z].map(Fx::to_bits));
+        }
+    }
+    for p in &block.points {
+        for l in 0..LANES {
+            bits.extend(
+                [
+                    p.normal_impulse[l],
+                    p.max_normal_impulse[l],
+                    p.tangent_impulse[0][l],
+                    p.tangent_impulse[1][l],
+                ]
+                .map(Fx::to_bits),
+            );
+        }
+    }
+    bits
+}
+
+/// Runs `trials` random blocks at the given scales through both forms of both passes and
+/// returns how many blocks the kernels took.
+fn compare(seed: u64, trials: usize, scale: f64, impulse: f64) -> usize {
+    let mut rng = Pcg32::new(seed, 7);
+    let mut kernel_runs = 0;
+    for trial in 0..trials {
+        let lanes = 1 + trial % LANES;
+        let independent = trial % 7 != 6;
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scale);
+        let block = block(&mut rng, &bodies, lanes, independent, impulse);
+        for use_bias in [true, false] {
+            let pass = pass(use_bias);
+            let (mut fast_bodies, mut fast_block) = (bodies.clone(), block.clone());
+            let (mut slow_bodies, mut slow_block) = (bodies.clone(), block.clone());
+            let ((), fast_saturations) = count_saturations(|| {
+                fast_block.warm_start(&mut fast_bodies);
+                fast_block.solve(&mut fast_bodies, &pass);
+            });
+            let ((), slow_saturations) = count_saturations(|| {
+                slow_block.warm_start_lanes(&mut slow_bodies);
+                slow_block.solve_lanes(&mut slow_bodies, &pass);
+            });
+            assert_eq!(
+                state(&fast_bodies, &fast_block),
+                state(&slow_bodies, &slow_block),
+                "trial {trial}, bias {use_bias}"
+            );
+            assert_eq!(fast_saturations, slow_saturations, "trial {trial}");
+            if independent && kernel_takes(&block, &bodies, &pass) {
+                kernel_runs += 1;
+            }
+        }
+    }
+    kernel_runs
+}
+
+/// Whether the solve kernel takes `block` (a copy of it: nothing is kept).
+#[cfg(target_arch = "x86_64")]
+fn kernel_takes(block: &ContactBlock<Fx>, bodies: &[SolverBody<Fx>], pass: &SolvePass<Fx>) -> bool {
+    let (mut bodies, mut block) = (bodies.to_vec(), block.clone());
+    super::avx512::solve(&mut block, &mut bodies, pass)
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn kernel_takes(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -> bool {
+    false
+}
+
+/// Whether this processor runs the kernels.
+fn kernels_present() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return std::arch::is_x86_feature_detected!("avx512f");
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
+/// Independent blocks among `trials`, each compared with and without bias.
+const fn independent_passes(trials: usize) -> usize {
+    2 * (trials - trials / 7)
+}
+
+#[test]
+fn blocks_at_everyday_magnitudes_match_the_lanes() {
+    let runs = compare(1, 400, 5.0, 5.0);
+    if kernels_present() {
+        // Everyday values stay inside the kernel's bound: it takes every independent block.
+        assert_eq!(runs, independent_passes(400));
+    }
+}
+
+#[test]
+fn blocks_near_the_kernel_bound_match_the_lanes() {
+    // Velocities and impulses near 2¹⁴: some blocks pass the check, some do not.
+    let runs = compare(2, 400, 4_000.0, 4_000.0);
+    if kernels_present() {
+        assert!(
+            runs > 0 && runs < independent_passes(400),
+            "the kernel ran {runs} times"
+        );
+    }
+}
+
+#[test]
+fn blocks_that_saturate_match_the_lanes() {
+    // Values near the ends of the range: the kernel refuses, the lanes saturate and count.
+    let runs = compare(3, 100, 1.0e9, 1.0e9);
+    assert_eq!(runs, 0);
+}
