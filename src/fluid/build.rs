@@ -111,6 +111,7 @@ impl<R: Real> FluidSettings<R> {
             R::from_int(1000),
             "m/s",
         )?;
+        check_range("viscosity", desc.viscosity, R::ZERO, R::ONE, "")?;
         check_range("xsph", desc.xsph, R::ZERO, R::ONE, "")?;
         check_count("substeps", desc.substeps, MAX_FLUID_SUBSTEPS)?;
         check_range(
@@ -128,6 +129,7 @@ impl<R: Real> FluidSettings<R> {
             support: desc.support,
             rest_density: desc.rest_density,
             speed_of_sound: desc.speed_of_sound,
+            viscosity: desc.viscosity,
             xsph: desc.xsph,
             substeps: desc.substeps,
             max_density_error: desc.max_density_error,
@@ -294,6 +296,7 @@ impl<R: Real> FluidSystem<R> {
         desc.support = s.support;
         desc.rest_density = s.rest_density;
         desc.speed_of_sound = s.speed_of_sound;
+        desc.viscosity = s.viscosity;
         desc.xsph = s.xsph;
         desc.substeps = s.substeps;
         desc.max_density_error = s.max_density_error;

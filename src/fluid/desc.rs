@@ -104,6 +104,10 @@ pub struct FluidDesc<R: Real = Fx> {
     /// the density varies by less than 1 %. Default 20.
     #[serde(default = "default_speed_of_sound")]
     pub speed_of_sound: R,
+    /// WCSPH artificial viscosity α (0 to 1). Default 0: XSPH alone keeps the dam break
+    /// on Martin & Moyce's front (α = 0.05 already slows it by 10 %).
+    #[serde(default = "default_viscosity")]
+    pub viscosity: R,
     /// XSPH velocity smoothing ε (0 to 1), the artificial viscosity. Default 0.05.
     #[serde(default = "default_xsph")]
     pub xsph: R,
@@ -137,6 +141,9 @@ fn default_rest_density<R: Real>() -> R {
 fn default_speed_of_sound<R: Real>() -> R {
     R::from_int(20)
 }
+fn default_viscosity<R: Real>() -> R {
+    R::ZERO
+}
 fn default_xsph<R: Real>() -> R {
     R::from_ratio(5, 100)
 }
@@ -160,6 +167,7 @@ impl<R: Real> FluidDesc<R> {
             support: default_support(),
             rest_density: default_rest_density(),
             speed_of_sound: default_speed_of_sound(),
+            viscosity: default_viscosity(),
             xsph: default_xsph(),
             substeps: default_substeps(),
             max_density_error: default_max_density_error(),

@@ -11,13 +11,17 @@
 //! Per substep of length Δt, with ρ̃ = ρ/ρ₀ and V₀∇W from the [kernel](super::kernel):
 //!
 //! - factor: Dᵢ = |Σⱼ V₀∇Wᵢⱼ + Σ_b V₀∇W_ib|² + Σⱼ |V₀∇Wᵢⱼ|² (1/m²), αᵢ = 1/(Δt² Dᵢ) (s⁻²·m²),
-//!   computed as (1/Δt)/(Δt Dᵢ) so that Δt² (10⁻⁸ s²) is never formed;
+//!   computed as (1/Δt)/(Δt Dᵢ) so that Δt² (10⁻⁸ s²) is never formed. Dᵢ is taken at
+//!   least 1/16 of its value D₀ inside the fluid at rest: only a particle with few
+//!   neighbours (a splash, which is never compressed) falls below, and its factor would
+//!   leave the range;
 //! - predicted density: ρ̃*ᵢ = ρ̃ᵢ + Δt Σⱼ (vᵢ − vⱼ)·V₀∇Wᵢⱼ + Δt Σ_b vᵢ·V₀∇W_ib;
 //! - stiffness: kᵢ = max(ρ̃*ᵢ − 1, 0) αᵢ (m²/s², ρ₀κᵢ/ρᵢ in the paper's terms);
 //! - correction: vᵢ ← vᵢ − Δt (Σⱼ (kᵢ + kⱼ) V₀∇Wᵢⱼ + Σ_b kᵢ V₀∇W_ib),
 //!
 //! repeated until the mean of max(ρ̃*ᵢ − 1, 0) is at most the tolerance (or the iteration
-//! cap). The divergence-free half of DFSPH is not used: the XSPH smoothing damps the
+//! cap). The corrections amount to the pressure force of P̃ᵢ/ρ̃ᵢ² = Σ kᵢ over the
+//! iterations, so the pressure is p = ρ₀ ρ̃ᵢ² Σ kᵢ. The divergence-free half of DFSPH is not used: the XSPH smoothing damps the
 //! velocity noise it would remove. Magnitudes at spacing 5 mm, Δt = 10⁻⁴ s: Dᵢ ≈ 10⁵,
 //! αᵢ ≈ 10³, kᵢ ≈ 1, corrections ≈ 10⁻² m/s.
 
@@ -35,6 +39,9 @@ impl<R: Real> FluidSystem<R> {
         self.smooth_velocities();
         let n = self.positions.len();
         let tolerance = self.settings.max_density_error * R::from_int(n as i32);
+        let s = &mut self.scratch;
+        s.pressure.clear();
+        s.pressure.resize(n, R::ZERO);
         let mut iterations = 0;
         while iterations < self.settings.max_iterations {
             if self.predict_stiffness(dt) <= tolerance {
@@ -43,13 +50,18 @@ impl<R: Real> FluidSystem<R> {
             self.correct_velocities(dt);
             iterations += 1;
         }
-        self.scratch.last_iterations = iterations;
+        let s = &mut self.scratch;
+        for (p, &rho) in s.pressure.iter_mut().zip(&s.density) {
+            *p *= rho * rho;
+        }
+        s.last_iterations = iterations;
     }
 
-    /// αᵢ = (1/Δt) / (Δt Dᵢ) into `factor`, 0 for a particle with no neighbour, and
+    /// αᵢ = (1/Δt) / (Δt max(Dᵢ, D₀/16)) into `factor`, and
     /// Σ_b V₀∇W_ib into `wall_gradient`.
     fn compute_factors(&mut self, dt: R) {
         let inv_dt = dt.recip();
+        let floor = self.settings.kernel.lattice_gradient_norm * R::from_ratio(1, 16);
         let s = &mut self.scratch;
         s.factor.clear();
         s.wall_gradient.clear();
@@ -65,12 +77,8 @@ impl<R: Real> FluidSystem<R> {
                 wall += g;
             }
             s.wall_gradient.push(wall);
-            let d = (sum + wall).length_squared() + squares;
-            s.factor.push(if d > R::ZERO {
-                inv_dt / (dt * d)
-            } else {
-                R::ZERO
-            });
+            let d = ((sum + wall).length_squared() + squares).max(floor);
+            s.factor.push(inv_dt / (dt * d));
         }
     }
 
@@ -100,6 +108,7 @@ impl<R: Real> FluidSystem<R> {
         s.delta.clear();
         for i in 0..self.positions.len() {
             let ki = s.scalar[i];
+            s.pressure[i] += ki;
             let mut push = Vec3::ZERO;
             for e in s.fluid.range(i) {
                 let j = s.fluid.index[e] as usize;

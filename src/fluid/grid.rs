@@ -1,8 +1,11 @@
-//! A uniform grid of cells one kernel support wide, filled by counting sort.
+//! A uniform grid of cells half a kernel support wide, filled by counting sort.
 //!
 //! A point's cell along each axis is found by binary search among the cell edges, so no
 //! scalar is ever converted to an integer; points beyond the grid go to its outermost
-//! cells, which keeps every pair closer than one support in the same or adjacent cells.
+//! cells, which keeps every pair closer than one support within two cells of each other
+//! along each axis. Half-support cells make the 5 × 5 × 5 block searched around a point
+//! 15.6 H³, against 27 H³ for the 3 × 3 × 3 block of support-wide cells: 42 % fewer
+//! candidates to test.
 //! Cells are numbered x fastest, then y, then z; [`CellGrid::fill`] lists the points of
 //! each cell in ascending point index (the counting sort is stable), so the order of the
 //! entries is the total order (cell, index), the same on every machine.
@@ -26,9 +29,11 @@ pub struct CellGrid<R: Real> {
 }
 
 impl<R: Real> CellGrid<R> {
-    /// A grid of cells `size` wide whose first cell starts at `lower` and whose last
-    /// cell ends at or beyond `upper`. The caller bounds the cell count.
-    pub fn new(lower: Vec3<R>, upper: Vec3<R>, size: R) -> Self {
+    /// A grid of cells `support`/2 wide whose first cell starts at `lower` and whose last
+    /// cell ends at or beyond `upper`. The caller bounds the cell count
+    /// ([`CellGrid::cells_along`]).
+    pub fn new(lower: Vec3<R>, upper: Vec3<R>, support: R) -> Self {
+        let size = support * R::HALF;
         let axis = |lo: R, hi: R| {
             let mut edges = Vec::new();
             let mut edge = lo + size;
@@ -54,9 +59,10 @@ impl<R: Real> CellGrid<R> {
         }
     }
 
-    /// The number of cells an axis from `lower` to `upper` gets with cells `size` wide,
-    /// for bounding the grid before building it.
-    pub fn cells_along(lower: R, upper: R, size: R) -> u64 {
+    /// The number of cells an axis from `lower` to `upper` gets for a kernel support
+    /// `support`, for bounding the grid before building it.
+    pub fn cells_along(lower: R, upper: R, support: R) -> u64 {
+        let size = support * R::HALF;
         let mut count = 1;
         let mut edge = lower + size;
         while edge < upper {
@@ -116,12 +122,13 @@ impl<R: Real> CellGrid<R> {
         self.start[0] = 0;
     }
 
-    /// Calls `visit` with the points of the up to 27 cells around `c` (itself included),
-    /// cells in ascending index, points in ascending index within each cell.
+    /// Calls `visit` with the points of the up to 125 cells within two of `c` along each
+    /// axis (itself included), cells in ascending index, points in ascending index within
+    /// each cell: one slice per row of up to five cells, which are contiguous.
     #[inline]
     pub fn for_each_near(&self, c: [u32; 3], mut visit: impl FnMut(&[u32])) {
-        let lo = c.map(|v| v.saturating_sub(1));
-        let hi = [0, 1, 2].map(|a| (c[a] + 1).min(self.dims[a] - 1));
+        let lo = c.map(|v| v.saturating_sub(2));
+        let hi = [0, 1, 2].map(|a| (c[a] + 2).min(self.dims[a] - 1));
         for z in lo[2]..=hi[2] {
             for y in lo[1]..=hi[1] {
                 let row = self.cell_index([0, y, z]);

@@ -4,8 +4,8 @@
 //! raw fixed-point bits, vectors x, y, z):
 //!
 //! 1. the settings: solver code (`u8`), spacing, support, rest density, speed of sound,
-//!    XSPH ε, substeps (`u32`), density-error tolerance, iteration cap (`u32`), tank min
-//!    and max, the kernel's 1/H, c_w and c_g, and the stiffness c²/7;
+//!    viscosity α, XSPH ε, substeps (`u32`), density-error tolerance, iteration cap (`u32`), tank min
+//!    and max, the kernel's H, 1/H, c_w, c_g and D₀, and the stiffness c²/7;
 //! 2. the particle count (`u64`), then each particle by id: position, velocity;
 //! 3. the emitter count (`u64`), then each emitter in scene order: position, velocity,
 //!    speed, direction, width (`u32`), remaining (`u32`), distance travelled.
@@ -26,15 +26,18 @@ impl<R: Real> FluidSystem<R> {
         h.write_real(s.support);
         h.write_real(s.rest_density);
         h.write_real(s.speed_of_sound);
+        h.write_real(s.viscosity);
         h.write_real(s.xsph);
         h.write_u32(s.substeps);
         h.write_real(s.max_density_error);
         h.write_u32(s.max_iterations);
         h.write_vec3(s.tank.min);
         h.write_vec3(s.tank.max);
+        h.write_real(s.kernel.support);
         h.write_real(s.kernel.inv_support);
         h.write_real(s.kernel.density_scale);
         h.write_real(s.kernel.gradient_scale);
+        h.write_real(s.kernel.lattice_gradient_norm);
         h.write_real(s.stiffness);
         h.write_len(self.positions.len());
         for (x, v) in self.positions.iter().zip(&self.velocities) {

@@ -11,7 +11,8 @@ pub fn dam_break_width<R: Real>() -> R {
 /// Martin & Moyce's dam break (1952, n² = 2) in a thin 3D slab: a water column a wide and
 /// 2a high at the back wall (x = 0) of a tank 0.3 m long and 0.15 m high, `layers`
 /// particles deep (z) between two free-slip walls, `per_width` particles across a.
-/// WCSPH with c = 20 m/s, ten times the fastest front; the fluid substep is 0.2 H / c.
+/// c = 20 m/s, ten times the fastest front. The fluid substeps suit a 60 Hz tick: 16 per
+/// particle across a for WCSPH, 2 for DFSPH, within the limit 0.2 H / u.
 pub fn dam_break<R: Real>(per_width: u32, layers: u32, solver: FluidSolver) -> FluidDesc<R> {
     let a = dam_break_width::<R>();
     let dx = a * R::from_ratio(1, i64::from(per_width));
@@ -21,6 +22,11 @@ pub fn dam_break<R: Real>(per_width: u32, layers: u32, solver: FluidSolver) -> F
         max: Vec3::new(R::from_ratio(3, 10), R::from_ratio(15, 100), depth),
     };
     let mut desc = FluidDesc::new(solver, dx, tank);
+    desc.substeps = per_width
+        * match solver {
+            FluidSolver::Wcsph => 16,
+            FluidSolver::Dfsph => 2,
+        };
     desc.blocks.push(FluidBlock {
         region: FluidBox {
             min: Vec3::ZERO,
@@ -32,15 +38,19 @@ pub fn dam_break<R: Real>(per_width: u32, layers: u32, solver: FluidSolver) -> F
 }
 
 /// Water at rest: a cube 0.1 m on a side, `per_side` particles along each edge, in a
-/// tank that fits it, under WCSPH.
-pub fn tank<R: Real>(per_side: u32) -> FluidDesc<R> {
+/// tank that fits it. The fluid substeps suit a 60 Hz tick at up to 10 particles per side.
+pub fn tank<R: Real>(per_side: u32, solver: FluidSolver) -> FluidDesc<R> {
     let side = R::from_ratio(1, 10);
     let dx = side * R::from_ratio(1, i64::from(per_side));
     let tank = FluidBox {
         min: Vec3::ZERO,
         max: Vec3::new(side, R::from_ratio(15, 100), side),
     };
-    let mut desc = FluidDesc::new(FluidSolver::Wcsph, dx, tank);
+    let mut desc = FluidDesc::new(solver, dx, tank);
+    desc.substeps = match solver {
+        FluidSolver::Wcsph => 100,
+        FluidSolver::Dfsph => 10,
+    };
     desc.blocks.push(FluidBlock {
         region: FluidBox {
             min: Vec3::ZERO,
@@ -52,7 +62,8 @@ pub fn tank<R: Real>(per_side: u32) -> FluidDesc<R> {
 }
 
 /// A jet poured into an empty box under DFSPH: a 4 × 4 nozzle 1 cm apart, 0.2 m above
-/// the floor of a box 0.2 m wide, 1 m/s downwards, `count` particles in all.
+/// the floor of a box 0.2 m wide, 1 m/s downwards, `count` particles in all; 10 fluid
+/// substeps per 60 Hz tick.
 pub fn pour<R: Real>(count: u32) -> FluidDesc<R> {
     let dx = R::from_ratio(1, 100);
     let side = R::from_ratio(2, 10);
@@ -61,6 +72,7 @@ pub fn pour<R: Real>(count: u32) -> FluidDesc<R> {
         max: Vec3::new(side, R::from_ratio(3, 10), side),
     };
     let mut desc = FluidDesc::new(FluidSolver::Dfsph, dx, tank);
+    desc.substeps = 10;
     desc.emitters.push(FluidEmitter {
         position: Vec3::new(
             R::from_ratio(7, 100),

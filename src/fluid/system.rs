@@ -25,6 +25,8 @@ pub struct FluidSettings<R: Real = Fx> {
     pub rest_density: R,
     /// WCSPH speed of sound c, m/s.
     pub speed_of_sound: R,
+    /// WCSPH artificial viscosity α.
+    pub viscosity: R,
     /// XSPH smoothing ε.
     pub xsph: R,
     /// Fluid substeps per world substep.
@@ -82,7 +84,10 @@ pub(crate) struct Scratch<R: Real> {
     pub walls: NeighbourLists<R>,
     /// ρ/ρ₀ of each fluid particle.
     pub density: Vec<R>,
-    /// A per-particle scalar of the solver (WCSPH: P/(ρ₀ ρ̃²); DFSPH: the stiffness k).
+    /// Pressure over rest density P̃ = p/ρ₀ of each fluid particle in the last substep,
+    /// m²/s².
+    pub pressure: Vec<R>,
+    /// A per-particle scalar of the solver (WCSPH: P̃/ρ̃²; DFSPH: the stiffness k).
     pub scalar: Vec<R>,
     /// A per-particle scalar of the solver (DFSPH: the factor 1/(Δt² D)).
     pub factor: Vec<R>,

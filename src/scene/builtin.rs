@@ -51,7 +51,7 @@ pub const BUILTIN_SCENES: [(&str, &str); 13] = [
     ),
     (
         "tank",
-        "1000 particles of water at rest in a 10 cm cube, WCSPH: hydrostatic pressure",
+        "1000 particles of water at rest in a 10 cm cube, DFSPH: hydrostatic pressure",
     ),
     (
         "pour",
@@ -115,7 +115,7 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.ticks = 12;
         }
         "tank" => {
-            scene.fluid = Some(fluid::tank(10));
+            scene.fluid = Some(fluid::tank(10, FluidSolver::Dfsph));
             scene.ticks = 30;
         }
         "pour" => {

@@ -47,8 +47,9 @@ pub struct Scene<R: Real = Fx> {
     /// Rigid bodies and the contact solver's settings.
     #[serde(default)]
     pub rigid: Option<RigidDesc<R>>,
-    /// A fluid in a tank.
-    #[serde(default)]
+    /// A fluid in a tank. Left out of a written scene when absent, so scenes without one
+    /// read as they did before fluids.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fluid: Option<FluidDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
     #[serde(default)]
