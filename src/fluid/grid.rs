@@ -3,9 +3,9 @@
 //! A point's cell along each axis is found by binary search among the cell edges, so no
 //! scalar is ever converted to an integer; points beyond the grid go to its outermost
 //! cells, which keeps every pair closer than one support within two cells of each other
-//! along each axis. Half-support cells make the 5 × 5 × 5 block searched around a point
-//! 15.6 H³, against 27 H³ for the 3 × 3 × 3 block of support-wide cells: 42 % fewer
-//! candidates to test.
+//! along each axis. Half-support cells make the 5 × 5 × 5 block around a point 15.6 H³,
+//! against 27 H³ for the 3 × 3 × 3 block of support-wide cells, and the search skips the
+//! rows and row ends of that block that lie wholly beyond one support.
 //! Cells are numbered x fastest, then y, then z; [`CellGrid::fill`] lists the points of
 //! each cell in ascending point index (the counting sort is stable), so the order of the
 //! entries is the total order (cell, index), the same on every machine.
@@ -122,18 +122,55 @@ impl<R: Real> CellGrid<R> {
         self.start[0] = 0;
     }
 
-    /// Calls `visit` with the points of the up to 125 cells within two of `c` along each
-    /// axis (itself included), cells in ascending index, points in ascending index within
-    /// each cell: one slice per row of up to five cells, which are contiguous.
+    /// Calls `visit` with the points of every cell that may hold a point closer than one
+    /// support to `p` (`inv_support` = 1/H): of the up to 125 cells within two of p's cell
+    /// along each axis, the rows whose nearest y and z distances to p already reach H are
+    /// skipped, and each remaining row is trimmed at both ends the same way along x. Cells
+    /// come in ascending index, points in ascending index within each cell: one slice per
+    /// row, whose cells are contiguous. Distances are measured in supports (scaled before
+    /// squaring) and compared with 1 + 2⁻⁸, so rounding never skips a cell it must visit.
     #[inline]
-    pub fn for_each_near(&self, c: [u32; 3], mut visit: impl FnMut(&[u32])) {
+    pub fn for_each_within(&self, p: Vec3<R>, inv_support: R, mut visit: impl FnMut(&[u32])) {
+        let c = self.coords(p);
         let lo = c.map(|v| v.saturating_sub(2));
         let hi = [0, 1, 2].map(|a| (c[a] + 2).min(self.dims[a] - 1));
+        let reach = R::ONE + R::from_ratio(1, 256);
+        let coordinate = [p.x, p.y, p.z];
+        // The squared distance, in supports, from p to cell `cell` along `axis` (0 inside).
+        let gap2 = |axis: usize, cell: u32| {
+            let edges = &self.edges[axis];
+            let x = coordinate[axis];
+            let gap = if cell < c[axis] {
+                x - edges[cell as usize]
+            } else if cell > c[axis] {
+                edges[cell as usize - 1] - x
+            } else {
+                R::ZERO
+            };
+            let g = gap * inv_support;
+            g * g
+        };
         for z in lo[2]..=hi[2] {
+            let gz = gap2(2, z);
+            if gz > reach {
+                continue;
+            }
             for y in lo[1]..=hi[1] {
+                let gyz = gz + gap2(1, y);
+                if gyz > reach {
+                    continue;
+                }
+                let mut first_x = lo[0];
+                while first_x < c[0] && gyz + gap2(0, first_x) > reach {
+                    first_x += 1;
+                }
+                let mut last_x = hi[0];
+                while last_x > c[0] && gyz + gap2(0, last_x) > reach {
+                    last_x -= 1;
+                }
                 let row = self.cell_index([0, y, z]);
-                let first = self.start[(row + lo[0]) as usize] as usize;
-                let last = self.start[(row + hi[0]) as usize + 1] as usize;
+                let first = self.start[(row + first_x) as usize] as usize;
+                let last = self.start[(row + last_x) as usize + 1] as usize;
                 visit(&self.entries[first..last]);
             }
         }

@@ -47,7 +47,7 @@ impl<R: Real> NeighbourLists<R> {
         self.gradient.clear();
         self.start.push(0);
         for (i, &xi) in queries.iter().enumerate() {
-            grid.for_each_near(grid.coords(xi), |candidates| {
+            grid.for_each_within(xi, kernel.inv_support, |candidates| {
                 for &j in candidates {
                     if skip_self && j as usize == i {
                         continue;

@@ -38,7 +38,8 @@ pub fn dam_break<R: Real>(per_width: u32, layers: u32, solver: FluidSolver) -> F
 }
 
 /// Water at rest: a cube 0.1 m on a side, `per_side` particles along each edge, in a
-/// tank that fits it. The fluid substeps suit a 60 Hz tick at up to 10 particles per side.
+/// tank that fits it. The fluid substeps suit a 60 Hz tick: 10 per particle along an edge
+/// for WCSPH, 1 for DFSPH, within the limit 0.2 H / u.
 pub fn tank<R: Real>(per_side: u32, solver: FluidSolver) -> FluidDesc<R> {
     let side = R::from_ratio(1, 10);
     let dx = side * R::from_ratio(1, i64::from(per_side));
@@ -47,10 +48,11 @@ pub fn tank<R: Real>(per_side: u32, solver: FluidSolver) -> FluidDesc<R> {
         max: Vec3::new(side, R::from_ratio(15, 100), side),
     };
     let mut desc = FluidDesc::new(solver, dx, tank);
-    desc.substeps = match solver {
-        FluidSolver::Wcsph => 100,
-        FluidSolver::Dfsph => 10,
-    };
+    desc.substeps = per_side
+        * match solver {
+            FluidSolver::Wcsph => 10,
+            FluidSolver::Dfsph => 1,
+        };
     desc.blocks.push(FluidBlock {
         region: FluidBox {
             min: Vec3::ZERO,
@@ -61,11 +63,11 @@ pub fn tank<R: Real>(per_side: u32, solver: FluidSolver) -> FluidDesc<R> {
     desc
 }
 
-/// A jet poured into an empty box under DFSPH: a 4 × 4 nozzle 1 cm apart, 0.2 m above
-/// the floor of a box 0.2 m wide, 1 m/s downwards, `count` particles in all; 10 fluid
+/// A jet poured into an empty box under DFSPH: a 3 × 3 nozzle 2 cm apart, 0.2 m above
+/// the floor of a box 0.2 m wide, 1 m/s downwards, `count` particles in all; 5 fluid
 /// substeps per 60 Hz tick.
 pub fn pour<R: Real>(count: u32) -> FluidDesc<R> {
-    let dx = R::from_ratio(1, 100);
+    let dx = R::from_ratio(2, 100);
     let side = R::from_ratio(2, 10);
     let tank = FluidBox {
         min: Vec3::ZERO,

@@ -47,15 +47,15 @@ pub const BUILTIN_SCENES: [(&str, &str); 13] = [
     ),
     (
         "dam_break",
-        "Martin & Moyce's collapsing water column (a = 57 mm, height 2a) in a thin 3D slab, DFSPH",
+        "Martin & Moyce's collapsing water column (a = 57 mm, height 2a), 5 particles across a, in a thin 3D slab, DFSPH",
     ),
     (
         "tank",
-        "1000 particles of water at rest in a 10 cm cube, DFSPH: hydrostatic pressure",
+        "125 particles of water at rest in a 10 cm cube, DFSPH",
     ),
     (
         "pour",
-        "a jet of 1600 water particles poured into an empty box, DFSPH",
+        "a jet of 216 water particles poured into an empty box, DFSPH",
     ),
 ];
 
@@ -111,15 +111,15 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.ticks = 600;
         }
         "dam_break" => {
-            scene.fluid = Some(fluid::dam_break(8, 3, FluidSolver::Dfsph));
+            scene.fluid = Some(fluid::dam_break(5, 2, FluidSolver::Dfsph));
             scene.ticks = 12;
         }
         "tank" => {
-            scene.fluid = Some(fluid::tank(10, FluidSolver::Dfsph));
+            scene.fluid = Some(fluid::tank(5, FluidSolver::Dfsph));
             scene.ticks = 30;
         }
         "pour" => {
-            scene.fluid = Some(fluid::pour(1600));
+            scene.fluid = Some(fluid::pour(216));
             scene.ticks = 60;
         }
         _ => return None,
