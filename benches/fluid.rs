@@ -7,8 +7,10 @@
 //! - Scaling: WCSPH, whose work per particle does not depend on the size, at 8k, 64k and
 //!   256k particles, from the state after 5 steps.
 //! - The solver salva3d's quoted figure is for: DFSPH at 8k particles, from the state after
-//!   100 steps (water settling under gravity). Every case runs in I32F32 and, with the same generic
-//! code, in `f64`, measured in the same run. Throughput is reported in particle-steps.
+//!   100 steps (water settling under gravity).
+//!
+//! Every case runs in I32F32 and, with the same generic code, in `f64`, measured in the
+//! same run. Throughput is reported in particle-steps.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
