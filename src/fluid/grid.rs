@@ -82,11 +82,6 @@ impl<R: Real> CellGrid<R> {
         ]
     }
 
-    /// The cells along x, y and z.
-    pub fn dims(&self) -> [u32; 3] {
-        self.dims
-    }
-
     /// The index of the cell at `c`.
     #[inline(always)]
     pub fn cell_index(&self, c: [u32; 3]) -> u32 {

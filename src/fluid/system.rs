@@ -207,10 +207,4 @@ impl<R: Real> FluidSystem<R> {
         fluid.build(&self.positions, &self.positions, grid, kernel, true);
         walls.build(&self.positions, boundary, boundary_grid, kernel, false);
     }
-
-    /// The number of boundary particles lining the tank.
-    pub fn boundary_len(&mut self) -> usize {
-        self.prepare();
-        self.scratch.boundary.len()
-    }
 }
