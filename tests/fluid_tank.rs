@@ -1,6 +1,6 @@
-//! Water at rest in a tank (the `tank` scene's fluid under DFSPH): it comes to rest with
-//! its density error within DFSPH's bound, and the particle count, the walls and the
-//! range hold. The pressure is printed against ρgh but not checked: the 3 % is not
+//! Water at rest in a tank (the `tank` scene's fluid, under DFSPH and WCSPH): it comes to
+//! rest with its density error within the solver's bound, and the particle count, the
+//! walls and the range hold. The pressure is printed against ρgh but not checked: the 3 % is not
 //! reached yet (see the fluid section of the README).
 
 use fixstep::fluid::{FluidSolver, FluidSystem, presets};
@@ -9,10 +9,10 @@ use fixstep::math::{Fx, Real, Vec3};
 
 const G: f64 = 9.81;
 
-/// The `tank` fluid, 10 particles along each edge of the 10 cm cube, after `ticks` ticks of
-/// 1/60 s.
-fn settle(ticks: i64) -> FluidSystem<Fx> {
-    let desc = presets::tank::<Fx>(10, FluidSolver::Dfsph);
+/// The `tank` fluid, `per_side` particles along each edge of the 10 cm cube, after `ticks`
+/// ticks of 1/60 s.
+fn settle(per_side: u32, solver: FluidSolver, ticks: i64) -> FluidSystem<Fx> {
+    let desc = presets::tank::<Fx>(per_side, solver);
     let dt = Fx::from_ratio(1, 60);
     let mut fluid = FluidSystem::from_desc(&desc, dt).expect("tank builds");
     let gravity = Vec3::new(Fx::ZERO, Fx::from_f64(-G), Fx::ZERO);
@@ -24,7 +24,7 @@ fn settle(ticks: i64) -> FluidSystem<Fx> {
 
 #[test]
 fn tank_comes_to_rest_with_hydrostatic_pressure() {
-    let (fluid, saturations) = count_saturations(|| settle(90));
+    let (fluid, saturations) = count_saturations(|| settle(10, FluidSolver::Dfsph, 90));
     assert_eq!(saturations, 0);
     assert_eq!(fluid.len(), 1000);
     let gravity = Vec3::new(Fx::ZERO, Fx::from_f64(-G), Fx::ZERO);
@@ -70,4 +70,19 @@ fn tank_comes_to_rest_with_hydrostatic_pressure() {
             d / n as f64
         );
     }
+}
+
+/// WCSPH (c = 20 m/s, 216 particles) also comes to rest, its mean compression within 1 %.
+#[test]
+fn wcsph_tank_comes_to_rest() {
+    let (fluid, saturations) = count_saturations(|| settle(6, FluidSolver::Wcsph, 90));
+    assert_eq!(saturations, 0);
+    assert_eq!(fluid.len(), 216);
+    let m = fluid.metrics(Vec3::new(Fx::ZERO, Fx::from_f64(-G), Fx::ZERO));
+    assert!(m.max_speed < 0.02, "max speed {} m/s", m.max_speed);
+    assert!(
+        m.density_error_avg <= 0.01,
+        "mean density error {}",
+        m.density_error_avg
+    );
 }

@@ -5,7 +5,8 @@
 //! top. A boundary particle has the volume of a fluid particle, so a fluid particle next
 //! to a wall sees the same kernel sum as one inside the fluid, and its density is right
 //! (Akinci et al. 2012 with uniform sampling, where ψ = ρ₀V₀). In the pressure force a
-//! boundary particle mirrors the pressure of the fluid particle it pushes.
+//! boundary particle pushes with the fluid particle's own P/ρ² once (Akinci's one-sided
+//! term; see [`wcsph`](super::wcsph) and [`dfsph`](super::dfsph)).
 //!
 //! As a last guard the walls are also a hard limit: after advection a particle closer than
 //! a quarter spacing to the floor or a wall is put back at that distance, its velocity
