@@ -1,7 +1,6 @@
 //! Water at rest in a tank (the `tank` scene's fluid, under DFSPH and WCSPH): it comes to
-//! rest with its density error within the solver's bound, and the particle count, the
-//! walls and the range hold. The pressure is printed against ρgh but not checked: the 3 % is not
-//! reached yet (see the fluid section of the README).
+//! rest with its density error within the solver's bound, the particle count, the walls
+//! and the range hold, and under WCSPH the pressure grows with depth as ρ₀g.
 
 use fixstep::fluid::{FluidSolver, FluidSystem, presets};
 use fixstep::math::saturation::count_saturations;
@@ -23,7 +22,7 @@ fn settle(per_side: u32, solver: FluidSolver, ticks: i64) -> FluidSystem<Fx> {
 }
 
 #[test]
-fn tank_comes_to_rest_with_hydrostatic_pressure() {
+fn dfsph_tank_comes_to_rest() {
     let (fluid, saturations) = count_saturations(|| settle(10, FluidSolver::Dfsph, 90));
     assert_eq!(saturations, 0);
     assert_eq!(fluid.len(), 1000);
@@ -41,43 +40,19 @@ fn tank_comes_to_rest_with_hydrostatic_pressure() {
         "mean density error {}",
         m.density_error_avg
     );
-    // Pressure against depth below the surface, averaged over the particles of each band
-    // one spacing high, away from the surface (where the kernel is truncated) and from the
-    // floor (where the boundary layer is): p = ρ₀ g d.
-    let rho0 = fluid.settings().rest_density.to_f64();
-    let dx = fluid.settings().spacing.to_f64();
-    let surface = fluid
-        .positions()
-        .iter()
-        .map(|p| p.y.to_f64())
-        .fold(0.0, f64::max)
-        + 0.5 * dx;
-    let pressures = fluid.pressures();
-    for band in 2..8 {
-        let (lo, hi) = (band as f64 * dx, (band + 1) as f64 * dx);
-        let (mut p, mut d, mut n) = (0.0, 0.0, 0);
-        for (x, pressure) in fluid.positions().iter().zip(&pressures) {
-            let y = x.y.to_f64();
-            if y >= lo && y < hi {
-                p += pressure.to_f64();
-                d += surface - y;
-                n += 1;
-            }
-        }
-        let ratio = p / (rho0 * G * d);
-        eprintln!(
-            "band {band}: {n} particles, depth {:.4} m, p / ρgh = {ratio:.4}",
-            d / n as f64
-        );
-    }
 }
 
-/// WCSPH (c = 20 m/s, 216 particles) also comes to rest, its mean compression within 1 %.
+/// WCSPH (c = 20 m/s, 8³ particles): the water comes to rest, its mean compression within
+/// 1 %, and in the central column (more than one support H from the side walls, the floor
+/// and the surface) the pressure grows with depth as ρ₀g within 3 %: the least-squares slope
+/// of p against depth over the particles there. The level where that line reaches p = 0
+/// lies a fraction of a spacing below the top particles, which the kernel, cut off by the
+/// free surface, sees as less dense; it is printed, not checked.
 #[test]
-fn wcsph_tank_comes_to_rest() {
-    let (fluid, saturations) = count_saturations(|| settle(6, FluidSolver::Wcsph, 90));
+fn wcsph_tank_rests_with_hydrostatic_pressure() {
+    let (fluid, saturations) = count_saturations(|| settle(8, FluidSolver::Wcsph, 90));
     assert_eq!(saturations, 0);
-    assert_eq!(fluid.len(), 216);
+    assert_eq!(fluid.len(), 512);
     let m = fluid.metrics(Vec3::new(Fx::ZERO, Fx::from_f64(-G), Fx::ZERO));
     assert!(m.max_speed < 0.02, "max speed {} m/s", m.max_speed);
     assert!(
@@ -85,4 +60,37 @@ fn wcsph_tank_comes_to_rest() {
         "mean density error {}",
         m.density_error_avg
     );
+    let s = fluid.settings();
+    let (rho0, dx) = (s.rest_density.to_f64(), s.spacing.to_f64());
+    let h = s.kernel.support.to_f64();
+    let side = s.tank.max.x.to_f64();
+    let surface = fluid
+        .positions()
+        .iter()
+        .map(|p| p.y.to_f64())
+        .fold(0.0, f64::max)
+        + 0.5 * dx;
+    let (mut n, mut sd, mut sp, mut sdd, mut sdp) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (x, p) in fluid.positions().iter().zip(fluid.pressures()) {
+        let [px, py, pz] = x.to_f64();
+        let central = px > h && px < side - h && pz > h && pz < side - h;
+        if !central || py < h || py > surface - h {
+            continue;
+        }
+        let (d, p) = (surface - py, p.to_f64());
+        n += 1.0;
+        sd += d;
+        sp += p;
+        sdd += d * d;
+        sdp += d * p;
+    }
+    assert!(n >= 32.0, "{n} particles in the central column");
+    let slope = (n * sdp - sd * sp) / (n * sdd - sd * sd);
+    let intercept = (sp - slope * sd) / n;
+    let ratio = slope / (rho0 * G);
+    eprintln!(
+        "{n} central particles: dp/dd = {ratio:.4} ρ₀g, p = 0 at {:.2} mm below the top",
+        -intercept / slope * 1000.0
+    );
+    assert!((ratio - 1.0).abs() <= 0.03, "dp/dd = {ratio} ρ₀g");
 }
