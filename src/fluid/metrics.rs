@@ -33,39 +33,41 @@ impl<R: Real> FluidSystem<R> {
     /// positions, on a copy: the state is not touched.
     pub fn metrics(&self, gravity: Vec3<R>) -> FluidMetrics {
         let s = &self.settings;
-        let dx = s.spacing.to_f64();
-        let mass = s.rest_density.to_f64() * dx * dx * dx;
-        let g = gravity.to_f64();
-        let floor = s.tank.min.y.to_f64();
-        let back = s.tank.min.x.to_f64();
+        let dx = s.spacing.to_f64(); // ok-det: reporting
+        let mass = s.rest_density.to_f64() * dx * dx * dx; // ok-det: reporting
+        let g = gravity.to_f64(); // ok-det: reporting
+        let floor = s.tank.min.y.to_f64(); // ok-det: reporting
+        let back = s.tank.min.x.to_f64(); // ok-det: reporting
         let mut m = FluidMetrics {
             particles: self.positions.len() as u64,
             ..FluidMetrics::default()
         };
         for (x, v) in self.positions.iter().zip(&self.velocities) {
-            let [px, py, pz] = x.to_f64();
-            let [vx, vy, vz] = v.to_f64();
+            let [px, py, pz] = x.to_f64(); // ok-det: reporting
+            let [vx, vy, vz] = v.to_f64(); // ok-det: reporting
             let speed2 = vx * vx + vy * vy + vz * vz;
-            m.kinetic_energy += 0.5 * mass * speed2;
+            m.kinetic_energy += 0.5 * mass * speed2; // ok-det: reporting
             m.potential_energy -= mass * (g[0] * px + g[1] * py + g[2] * pz);
             m.momentum[0] += mass * vx;
             m.momentum[1] += mass * vy;
             m.momentum[2] += mass * vz;
             m.max_speed = m.max_speed.max(speed2.sqrt());
             if py - floor <= dx {
-                m.front_x = m.front_x.max(px - back + 0.5 * dx);
+                m.front_x = m.front_x.max(px - back + 0.5 * dx); // ok-det: reporting
             }
         }
         if !self.positions.is_empty() {
             let errors = self.density_errors();
-            m.density_error_max = errors.iter().copied().fold(0.0, f64::max);
-            m.density_error_avg = errors.iter().sum::<f64>() / errors.len() as f64;
+            let count = errors.len() as f64; // ok-det: reporting
+            m.density_error_max = errors.iter().copied().fold(0.0, f64::max); // ok-det: reporting
+            m.density_error_avg = errors.iter().sum::<f64>() / count; // ok-det: reporting
         }
         m
     }
 
     /// max(ρᵢ/ρ₀ − 1, 0) of each particle at the current positions.
     pub fn density_errors(&self) -> Vec<f64> {
+        // ok-det: reporting
         let mut copy = self.clone();
         copy.prepare();
         copy.find_neighbours();
@@ -73,7 +75,7 @@ impl<R: Real> FluidSystem<R> {
         copy.scratch
             .density
             .iter()
-            .map(|rho| (rho.to_f64() - 1.0).max(0.0))
+            .map(|rho| (rho.to_f64() - 1.0).max(0.0)) // ok-det: reporting
             .collect()
     }
 }
