@@ -8,6 +8,7 @@
 pub mod bench;
 pub mod cli;
 pub mod codec;
+pub mod fluid;
 pub mod math;
 #[cfg(feature = "net")]
 pub mod net;

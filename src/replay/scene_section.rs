@@ -6,12 +6,13 @@
 //! only when the scene has one, by its *additions*: a `u64` count and that many
 //! [`Addition`]s, each a `u32` variant index and the subsystem's description, in variant
 //! order with no repeats. A scene with no additions ends after `script`. Adding a variant
-//! later (joints, soft bodies, fluids) changes nothing for existing files, and each scene
+//! later (joints, soft bodies) changes nothing for existing files, and each scene
 //! has exactly one encoding: readers reject an empty or unordered list of additions.
 
 use serde::{Deserialize, Serialize};
 
 use crate::codec::{self, CodecError};
+use crate::fluid::FluidDesc;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
 use crate::rigid::RigidDesc;
@@ -54,12 +55,14 @@ struct Base<R: Real> {
 #[serde(bound = "")]
 enum Addition<R: Real> {
     Rigid(RigidDesc<R>),
+    Fluid(FluidDesc<R>),
 }
 
 impl<R: Real> Addition<R> {
     fn index(&self) -> u32 {
         match self {
             Self::Rigid(_) => 0,
+            Self::Fluid(_) => 1,
         }
     }
 }
@@ -80,6 +83,9 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     let mut additions = Vec::new();
     if let Some(rigid) = &scene.rigid {
         additions.push(Addition::Rigid(rigid.clone()));
+    }
+    if let Some(fluid) = &scene.fluid {
+        additions.push(Addition::Fluid(fluid.clone()));
     }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
@@ -102,6 +108,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         ticks: base.ticks,
         particles: base.particles,
         rigid: None,
+        fluid: None,
         script: base.script,
     };
     if used == bytes.len() {
@@ -131,6 +138,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
     for addition in additions {
         match addition {
             Addition::Rigid(rigid) => scene.rigid = Some(rigid),
+            Addition::Fluid(fluid) => scene.fluid = Some(fluid),
         }
     }
     Ok(scene)

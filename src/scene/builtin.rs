@@ -1,12 +1,13 @@
 //! Built-in scenes, addressable by name.
 
 use super::description::Scene;
+use crate::fluid::{FluidSolver, presets as fluid};
 use crate::math::Real;
 use crate::particles::presets;
 use crate::rigid::presets as rigid;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 10] = [
+pub const BUILTIN_SCENES: [(&str, &str); 13] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, and rigid bodies stacking, bouncing and tumbling",
@@ -43,6 +44,18 @@ pub const BUILTIN_SCENES: [(&str, &str); 10] = [
     (
         "spinner",
         "a box spun about its intermediate axis flips over and over (Dzhanibekov effect)",
+    ),
+    (
+        "dam_break",
+        "Martin & Moyce's collapsing water column (a = 57 mm, height 2a), 5 particles across a, in a thin 3D slab, DFSPH",
+    ),
+    (
+        "tank",
+        "125 particles of water at rest in a 10 cm cube, DFSPH",
+    ),
+    (
+        "pour",
+        "a jet of 216 water particles poured into an empty box, DFSPH",
     ),
 ];
 
@@ -96,6 +109,18 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.gravity = crate::math::Vec3::ZERO;
             scene.rigid = Some(rigid::spinner());
             scene.ticks = 600;
+        }
+        "dam_break" => {
+            scene.fluid = Some(fluid::dam_break(5, 2, FluidSolver::Dfsph));
+            scene.ticks = 12;
+        }
+        "tank" => {
+            scene.fluid = Some(fluid::tank(5, FluidSolver::Dfsph));
+            scene.ticks = 30;
+        }
+        "pour" => {
+            scene.fluid = Some(fluid::pour(216));
+            scene.ticks = 60;
         }
         _ => return None,
     }

@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::error::SceneError;
+use crate::fluid::{FluidDesc, FluidSystem};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{ParticleSystem, ParticlesDesc};
 use crate::rigid::{RigidDesc, RigidSystem};
@@ -46,6 +47,10 @@ pub struct Scene<R: Real = Fx> {
     /// Rigid bodies and the contact solver's settings.
     #[serde(default)]
     pub rigid: Option<RigidDesc<R>>,
+    /// A fluid in a tank. Left out of a written scene when absent, so scenes without one
+    /// read as they did before fluids.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fluid: Option<FluidDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
     #[serde(default)]
     pub script: Vec<TickInput<R>>,
@@ -80,6 +85,7 @@ impl<R: Real> Scene<R> {
             ticks: default_ticks(),
             particles: None,
             rigid: None,
+            fluid: None,
             script: Vec::new(),
         }
     }
@@ -111,6 +117,10 @@ impl<R: Real> Scene<R> {
         }
         if let Some(desc) = &self.rigid {
             world.set_rigid(RigidSystem::from_desc(desc).map_err(|e| e.within("rigid"))?);
+        }
+        if let Some(desc) = &self.fluid {
+            let dt = R::from_ratio(1, i64::from(self.tick_rate) * i64::from(self.substeps));
+            world.set_fluid(FluidSystem::from_desc(desc, dt).map_err(|e| e.within("fluid"))?);
         }
         Ok(world)
     }

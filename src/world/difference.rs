@@ -29,7 +29,8 @@ impl fmt::Display for Difference {
 /// The first difference between two states, or `None` when they are identical.
 ///
 /// Parts are compared in [`Part`] order: core (tick, settings, RNG, payload digest), then
-/// particles (first by slot, then the shared state).
+/// particles (first by slot, then the shared state), then the fluid (first by particle id,
+/// then the shared state).
 pub fn first_difference<R: Real>(a: &WorldState<R>, b: &WorldState<R>) -> Option<Difference> {
     let core_equal = a.tick == b.tick
         && a.settings == b.settings
@@ -41,7 +42,7 @@ pub fn first_difference<R: Real>(a: &WorldState<R>, b: &WorldState<R>) -> Option
             id: None,
         });
     }
-    match (&a.particles, &b.particles) {
+    let particles = match (&a.particles, &b.particles) {
         (Some(pa), Some(pb)) => match pa.first_difference(pb) {
             Some(id) => Some(Difference {
                 part: Part::Particles,
@@ -58,5 +59,27 @@ pub fn first_difference<R: Real>(a: &WorldState<R>, b: &WorldState<R>) -> Option
             part: Part::Particles,
             id: None,
         }),
+    };
+    particles.or_else(|| fluid_difference(a, b))
+}
+
+/// The first fluid particle (by id) whose position or velocity differs, or the fluid as a
+/// whole when its shared state or presence differs.
+fn fluid_difference<R: Real>(a: &WorldState<R>, b: &WorldState<R>) -> Option<Difference> {
+    if a.fluid == b.fluid {
+        return None;
     }
+    let id = match (&a.fluid, &b.fluid) {
+        (Some(fa), Some(fb)) => fa
+            .slot_digests()
+            .iter()
+            .zip(fb.slot_digests())
+            .find(|(x, y)| **x != *y)
+            .map(|(x, _)| x.0),
+        _ => None,
+    };
+    Some(Difference {
+        part: Part::Fluid,
+        id,
+    })
 }

@@ -17,7 +17,7 @@ pub struct Metrics {
     pub max_speed: f64, // ok-det: reporting
     /// Fixed-point saturations since the world was built.
     pub saturations: u64,
-    /// Live particles.
+    /// Live particles, fluid particles included.
     pub particles: u64,
     /// The deepest overlap among the rigid contacts, m.
     pub max_penetration: f64, // ok-det: reporting
@@ -25,6 +25,13 @@ pub struct Metrics {
     pub awake_bodies: u64,
     /// Dynamic rigid bodies asleep.
     pub sleeping_bodies: u64,
+    /// Mean fluid compression max(ρ/ρ₀ − 1, 0) over the fluid particles.
+    pub density_error_avg: f64, // ok-det: reporting
+    /// The largest fluid compression.
+    pub density_error_max: f64, // ok-det: reporting
+    /// The furthest x of a fluid particle touching the floor layer, from the tank's back
+    /// wall, m.
+    pub front_x: f64, // ok-det: reporting
     /// Whether the divergence check has seen the energy blow up (see
     /// [`divergence`](super::divergence)); false when the check is off.
     pub diverged: bool,
@@ -32,12 +39,12 @@ pub struct Metrics {
 
 impl Metrics {
     /// The CSV header: the fixed columns, then one column per subsystem figure.
-    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies";
+    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies,density_error_avg,density_error_max,front_x";
 
     /// The row as CSV, in [`Metrics::CSV_HEADER`] order.
     pub fn csv_row(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             self.tick,
             self.time,
             self.kinetic_energy,
@@ -51,7 +58,10 @@ impl Metrics {
             u8::from(self.diverged),
             self.max_penetration,
             self.awake_bodies,
-            self.sleeping_bodies
+            self.sleeping_bodies,
+            self.density_error_avg,
+            self.density_error_max,
+            self.front_x
         )
     }
 

@@ -8,6 +8,7 @@ use super::handle::Handle;
 use super::input::{Command, PlayerInput, Target, TickInput};
 use super::metrics::Metrics;
 use super::stage::{Stage, StageTimings};
+use crate::fluid::FluidSystem;
 use crate::math::rng::Pcg32;
 use crate::math::saturation::count_saturations;
 use crate::math::state_hash::StateHasher;
@@ -56,6 +57,8 @@ pub struct WorldState<R: Real = Fx> {
     pub particles: Option<ParticleSystem<R>>,
     /// Rigid bodies, when the scene has any.
     pub rigid: Option<RigidSystem<R>>,
+    /// The fluid, when the scene has one.
+    pub fluid: Option<FluidSystem<R>>,
 }
 
 impl<R: Real> WorldState<R> {
@@ -69,6 +72,9 @@ impl<R: Real> WorldState<R> {
         }
         if let Some(rigid) = &self.rigid {
             rigid.validate().map_err(|e| e.within("rigid"))?;
+        }
+        if let Some(fluid) = &self.fluid {
+            fluid.validate().map_err(|e| e.within("fluid"))?;
         }
         Ok(())
     }
@@ -93,7 +99,9 @@ pub struct TickReport {
 ///    commands in order.
 /// 2. [`Stage::Particles`]: per substep, emit, age, accumulate forces and integrate.
 /// 3. [`Stage::Rigid`]: per substep, the rigid-body step (collide, wake, solve, sleep).
-/// 4. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
+/// 4. [`Stage::Fluid`]: per substep, the fluid step (emit, neighbours, density, solve,
+///    advect).
+/// 5. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
 ///
 /// A stage whose subsystem is absent from the scene is skipped without a loop or an
 /// allocation.
@@ -117,6 +125,7 @@ impl<R: Real> World<R> {
             payload_digest: 0,
             particles: None,
             rigid: None,
+            fluid: None,
         })
     }
 
@@ -140,6 +149,16 @@ impl<R: Real> World<R> {
     /// Adds rigid bodies (replacing any previous ones).
     pub fn set_rigid(&mut self, rigid: RigidSystem<R>) {
         self.state.rigid = Some(rigid);
+    }
+
+    /// Adds a fluid (replacing any previous one).
+    pub fn set_fluid(&mut self, fluid: FluidSystem<R>) {
+        self.state.fluid = Some(fluid);
+    }
+
+    /// The fluid, if the scene has one.
+    pub fn fluid(&self) -> Option<&FluidSystem<R>> {
+        self.state.fluid.as_ref()
     }
 
     /// The rigid bodies, if the scene has any.
@@ -221,6 +240,9 @@ impl<R: Real> World<R> {
             }
             if self.state.rigid.is_some() {
                 self.run_stage(&mut timings, Stage::Rigid, Self::step_rigid);
+            }
+            if self.state.fluid.is_some() {
+                self.run_stage(&mut timings, Stage::Fluid, Self::step_fluid);
             }
             self.run_stage(&mut timings, Stage::EndTick, Self::end_tick);
             self.timings = timings;
@@ -355,7 +377,19 @@ impl<R: Real> World<R> {
         }
     }
 
-    /// Stage 4: clears per-tick accumulators and advances the tick counter.
+    /// Stage 4: the fluid, once per substep.
+    fn step_fluid(&mut self) {
+        let WorldState {
+            settings, fluid, ..
+        } = &mut self.state;
+        if let Some(fluid) = fluid {
+            for _ in 0..settings.substeps {
+                fluid.step(self.substep_dt, settings.gravity);
+            }
+        }
+    }
+
+    /// Stage 5: clears per-tick accumulators and advances the tick counter.
     fn end_tick(&mut self) {
         if let Some(particles) = &mut self.state.particles {
             particles.end_tick();
@@ -368,7 +402,7 @@ impl<R: Real> World<R> {
 
     /// The checksum of the current state (see [`super::checksum`] for what is hashed).
     pub fn checksum(&self) -> Checksum {
-        let mut parts = Vec::with_capacity(2);
+        let mut parts = Vec::with_capacity(4);
         parts.push((Part::Core, self.core_checksum()));
         if let Some(particles) = &self.state.particles {
             let mut h = StateHasher::new();
@@ -379,6 +413,11 @@ impl<R: Real> World<R> {
             let mut h = StateHasher::new();
             rigid.hash_state(&mut h);
             parts.push((Part::Rigid, h.finish()));
+        }
+        if let Some(fluid) = &self.state.fluid {
+            let mut h = StateHasher::new();
+            fluid.hash_state(&mut h);
+            parts.push((Part::Fluid, h.finish()));
         }
         let mut h = StateHasher::new();
         h.write_u32(STATE_VERSION);
@@ -404,6 +443,9 @@ impl<R: Real> World<R> {
         }
         if let Some(rigid) = &self.state.rigid {
             digests.push((Part::Rigid, rigid.slot_digests()));
+        }
+        if let Some(fluid) = &self.state.fluid {
+            digests.push((Part::Fluid, fluid.slot_digests()));
         }
         digests
     }
@@ -451,6 +493,19 @@ impl<R: Real> World<R> {
             m.awake_bodies = rm.awake_bodies;
             m.sleeping_bodies = rm.sleeping_bodies;
         }
+        if let Some(f) = &self.state.fluid {
+            let fm = f.metrics(self.state.settings.gravity);
+            m.kinetic_energy += fm.kinetic_energy;
+            m.potential_energy += fm.potential_energy;
+            for (total, part) in m.momentum.iter_mut().zip(fm.momentum) {
+                *total += part;
+            }
+            m.max_speed = m.max_speed.max(fm.max_speed);
+            m.particles += fm.particles;
+            m.density_error_avg = fm.density_error_avg;
+            m.density_error_max = fm.density_error_max;
+            m.front_x = fm.front_x;
+        }
         m
     }
 
@@ -470,6 +525,13 @@ impl<R: Real> World<R> {
             (_, restored) => restored,
         };
         state.rigid = match (self.state.rigid.take(), state.rigid.take()) {
+            (Some(mut current), Some(restored)) => {
+                current.restore_from(restored);
+                Some(current)
+            }
+            (_, restored) => restored,
+        };
+        state.fluid = match (self.state.fluid.take(), state.fluid.take()) {
             (Some(mut current), Some(restored)) => {
                 current.restore_from(restored);
                 Some(current)

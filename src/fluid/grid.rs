@@ -1,0 +1,173 @@
+//! A uniform grid of cells half a kernel support wide, filled by counting sort.
+//!
+//! A point's cell along each axis is found by binary search among the cell edges, so no
+//! scalar is ever converted to an integer; points beyond the grid go to its outermost
+//! cells, which keeps every pair closer than one support within two cells of each other
+//! along each axis. Half-support cells make the 5 × 5 × 5 block around a point 15.6 H³,
+//! against 27 H³ for the 3 × 3 × 3 block of support-wide cells, and the search skips the
+//! rows and row ends of that block that lie wholly beyond one support.
+//! Cells are numbered x fastest, then y, then z; [`CellGrid::fill`] lists the points of
+//! each cell in ascending point index (the counting sort is stable), so the order of the
+//! entries is the total order (cell, index), the same on every machine.
+
+use crate::math::{Real, Vec3};
+
+/// Cell edges and the points of each cell.
+#[derive(Clone, Debug, Default)]
+pub struct CellGrid<R: Real> {
+    /// The inner cell edges along x, y and z, ascending: cell c spans
+    /// `[edges[c − 1], edges[c])`.
+    edges: [Vec<R>; 3],
+    /// Cells along x, y and z.
+    dims: [u32; 3],
+    /// `entries[start[c]..start[c + 1]]` are the points of cell c.
+    start: Vec<u32>,
+    /// Point indices, by cell then index.
+    entries: Vec<u32>,
+    /// The cell of each point.
+    cell_of: Vec<u32>,
+}
+
+impl<R: Real> CellGrid<R> {
+    /// A grid of cells `support`/2 wide whose first cell starts at `lower` and whose last
+    /// cell ends at or beyond `upper`. The caller bounds the cell count
+    /// ([`CellGrid::cells_along`]).
+    pub fn new(lower: Vec3<R>, upper: Vec3<R>, support: R) -> Self {
+        let size = support * R::HALF;
+        let axis = |lo: R, hi: R| {
+            let mut edges = Vec::new();
+            let mut edge = lo + size;
+            while edge < hi {
+                edges.push(edge);
+                edge += size;
+            }
+            edges
+        };
+        let edges = [
+            axis(lower.x, upper.x),
+            axis(lower.y, upper.y),
+            axis(lower.z, upper.z),
+        ];
+        let dims = edges.each_ref().map(|e| e.len() as u32 + 1);
+        let cells = dims.iter().map(|&d| d as usize).product::<usize>();
+        Self {
+            edges,
+            dims,
+            start: vec![0; cells + 1],
+            entries: Vec::new(),
+            cell_of: Vec::new(),
+        }
+    }
+
+    /// The number of cells an axis from `lower` to `upper` gets for a kernel support
+    /// `support`, for bounding the grid before building it.
+    pub fn cells_along(lower: R, upper: R, support: R) -> u64 {
+        let size = support * R::HALF;
+        let mut count = 1;
+        let mut edge = lower + size;
+        while edge < upper {
+            count += 1;
+            edge += size;
+        }
+        count
+    }
+
+    /// The cell coordinates of `p`, clamped to the grid.
+    #[inline]
+    pub fn coords(&self, p: Vec3<R>) -> [u32; 3] {
+        [
+            self.edges[0].partition_point(|&e| e <= p.x) as u32,
+            self.edges[1].partition_point(|&e| e <= p.y) as u32,
+            self.edges[2].partition_point(|&e| e <= p.z) as u32,
+        ]
+    }
+
+    /// The index of the cell at `c`.
+    #[inline(always)]
+    pub fn cell_index(&self, c: [u32; 3]) -> u32 {
+        c[0] + self.dims[0] * (c[1] + self.dims[1] * c[2])
+    }
+
+    /// Sorts `points` into their cells by counting sort: O(points + cells), no comparison.
+    pub fn fill(&mut self, points: &[Vec3<R>]) {
+        self.cell_of.clear();
+        for &p in points {
+            let c = self.coords(p);
+            self.cell_of.push(self.cell_index(c));
+        }
+        self.start.fill(0);
+        for &cell in &self.cell_of {
+            self.start[cell as usize + 1] += 1;
+        }
+        for c in 1..self.start.len() {
+            self.start[c] += self.start[c - 1];
+        }
+        self.entries.clear();
+        self.entries.resize(points.len(), 0);
+        // Each cell's next free entry, in the first `start.len() − 1` slots of a cursor run
+        // over `start` itself: place, then restore the starts by shifting back.
+        for (index, &cell) in self.cell_of.iter().enumerate() {
+            let at = &mut self.start[cell as usize];
+            self.entries[*at as usize] = index as u32;
+            *at += 1;
+        }
+        for c in (1..self.start.len()).rev() {
+            self.start[c] = self.start[c - 1];
+        }
+        self.start[0] = 0;
+    }
+
+    /// Calls `visit` with the points of every cell that may hold a point closer than one
+    /// support to `p` (`inv_support` = 1/H): of the up to 125 cells within two of p's cell
+    /// along each axis, the rows whose nearest y and z distances to p already reach H are
+    /// skipped, and each remaining row is trimmed at both ends the same way along x. Cells
+    /// come in ascending index, points in ascending index within each cell: one slice per
+    /// row, whose cells are contiguous. Distances are measured in supports (scaled before
+    /// squaring) and compared with 1 + 2⁻⁸, so rounding never skips a cell it must visit.
+    #[inline]
+    pub fn for_each_within(&self, p: Vec3<R>, inv_support: R, mut visit: impl FnMut(&[u32])) {
+        let c = self.coords(p);
+        let lo = c.map(|v| v.saturating_sub(2));
+        let hi = [0, 1, 2].map(|a| (c[a] + 2).min(self.dims[a] - 1));
+        let reach = R::ONE + R::from_ratio(1, 256);
+        let coordinate = [p.x, p.y, p.z];
+        // The squared distance, in supports, from p to cell `cell` along `axis` (0 inside).
+        let gap2 = |axis: usize, cell: u32| {
+            let edges = &self.edges[axis];
+            let x = coordinate[axis];
+            let gap = if cell < c[axis] {
+                x - edges[cell as usize]
+            } else if cell > c[axis] {
+                edges[cell as usize - 1] - x
+            } else {
+                R::ZERO
+            };
+            let g = gap * inv_support;
+            g * g
+        };
+        for z in lo[2]..=hi[2] {
+            let gz = gap2(2, z);
+            if gz > reach {
+                continue;
+            }
+            for y in lo[1]..=hi[1] {
+                let gyz = gz + gap2(1, y);
+                if gyz > reach {
+                    continue;
+                }
+                let mut first_x = lo[0];
+                while first_x < c[0] && gyz + gap2(0, first_x) > reach {
+                    first_x += 1;
+                }
+                let mut last_x = hi[0];
+                while last_x > c[0] && gyz + gap2(0, last_x) > reach {
+                    last_x -= 1;
+                }
+                let row = self.cell_index([0, y, z]);
+                let first = self.start[(row + first_x) as usize] as usize;
+                let last = self.start[(row + last_x) as usize + 1] as usize;
+                visit(&self.entries[first..last]);
+            }
+        }
+    }
+}

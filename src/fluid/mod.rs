@@ -1,0 +1,50 @@
+//! Fluids: smoothed particle hydrodynamics with a deterministic neighbour search, a weakly
+//! compressible solver and a constant-density solver, in a tank lined with boundary
+//! particles.
+//!
+//! Data flows one way: a scene's [`FluidDesc`] compiles into a [`FluidSystem`] (particle
+//! positions and velocities by id, emitters); each step runs the stages listed on
+//! [`FluidSystem`]; the state is hashed for checksums ([`hashing`]) and reported as
+//! [`FluidMetrics`].
+//!
+//! # Files
+//!
+//! Description and storage: [`desc`] scene types · [`build`] checks and compilation ·
+//! [`system`] the system and its step · [`hashing`] canonical state · [`metrics`]
+//! reporting · [`presets`] the built-in scenes' fluids.
+//!
+//! Neighbours: [`kernel`] the Wendland C2 kernel in normalised form · [`grid`] counting
+//! sort into cells · [`neighbours`] neighbour lists with kernel values.
+//!
+//! Dynamics: [`emitter`] nozzles · [`density`] kernel sums · [`wcsph`] Tait pressure ·
+//! [`dfsph`] the constant-density solver · [`xsph`] velocity smoothing · [`boundary`] the
+//! tank's boundary particles and walls.
+//!
+//! # Determinism
+//!
+//! Particles are stored by id (creation order) and never removed. The grid lists each
+//! cell's particles by id, neighbour lists follow (cell, id), every sum runs in that
+//! order, and every solver pass is Jacobi (reads the previous pass only), so results do
+//! not depend on anything but the state.
+
+mod boundary;
+mod build;
+mod density;
+pub mod desc;
+mod dfsph;
+mod emitter;
+pub mod grid;
+mod hashing;
+pub mod kernel;
+mod metrics;
+pub mod neighbours;
+pub mod presets;
+mod system;
+mod wcsph;
+mod xsph;
+
+pub use desc::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
+pub use emitter::EmitterState;
+pub use kernel::Kernel;
+pub use metrics::FluidMetrics;
+pub use system::{FluidSettings, FluidSystem};

@@ -1,0 +1,65 @@
+//! Neighbour lists with their kernel values, built once per substep and read by every
+//! pass and solver iteration of that substep.
+//!
+//! The lists are compressed rows: the neighbours of fluid particle i are entries
+//! `start[i]..start[i + 1]`, in the grid's order (cell, then index), which is the same on
+//! every machine. Each entry keeps the neighbour's index, V₀W and V₀∇ᵢW (see
+//! [`kernel`](super::kernel)), so the square root of a pair is taken once per substep.
+
+use super::grid::CellGrid;
+use super::kernel::Kernel;
+use crate::math::{Real, Vec3};
+
+/// Neighbours of each fluid particle among one set of points (fluid or boundary).
+#[derive(Clone, Debug, Default)]
+pub struct NeighbourLists<R: Real> {
+    /// Row starts, one per fluid particle plus one.
+    pub start: Vec<u32>,
+    /// Neighbour indices into the searched set.
+    pub index: Vec<u32>,
+    /// V₀W of each pair (dimensionless).
+    pub value: Vec<R>,
+    /// V₀∇ᵢW of each pair, 1/m.
+    pub gradient: Vec<Vec3<R>>,
+}
+
+impl<R: Real> NeighbourLists<R> {
+    /// The entries of particle `i`: `start[i]..start[i + 1]`.
+    #[inline(always)]
+    pub fn range(&self, i: usize) -> core::ops::Range<usize> {
+        self.start[i] as usize..self.start[i + 1] as usize
+    }
+
+    /// Finds, for each of `queries`, every point of `points` (sorted into `grid`) closer
+    /// than the kernel support, except the query itself when `skip_self` (the queries are
+    /// the points).
+    pub fn build(
+        &mut self,
+        queries: &[Vec3<R>],
+        points: &[Vec3<R>],
+        grid: &CellGrid<R>,
+        kernel: &Kernel<R>,
+        skip_self: bool,
+    ) {
+        self.start.clear();
+        self.index.clear();
+        self.value.clear();
+        self.gradient.clear();
+        self.start.push(0);
+        for (i, &xi) in queries.iter().enumerate() {
+            grid.for_each_within(xi, kernel.inv_support, |candidates| {
+                for &j in candidates {
+                    if skip_self && j as usize == i {
+                        continue;
+                    }
+                    if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
+                        self.index.push(j);
+                        self.value.push(value);
+                        self.gradient.push(gradient);
+                    }
+                }
+            });
+            self.start.push(self.index.len() as u32);
+        }
+    }
+}

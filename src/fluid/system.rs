@@ -1,0 +1,210 @@
+//! `FluidSystem`: the fluid particles of a world, and one step of their motion.
+
+use serde::{Deserialize, Serialize};
+
+use super::boundary::sample_walls;
+use super::desc::{FluidBox, FluidSolver};
+use super::emitter::EmitterState;
+use super::grid::CellGrid;
+use super::kernel::{Kernel, lattice_reach};
+use super::neighbours::NeighbourLists;
+use crate::math::{Fx, Real, Vec3};
+
+/// The compiled settings of a fluid: the description's values and the constants derived
+/// from them once.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct FluidSettings<R: Real = Fx> {
+    /// The pressure solver.
+    pub solver: FluidSolver,
+    /// Particle spacing at rest, m.
+    pub spacing: R,
+    /// Kernel support in spacings.
+    pub support: R,
+    /// Rest density ρ₀, kg/m³ (used only to report pressures; the solvers work in ρ/ρ₀).
+    pub rest_density: R,
+    /// WCSPH speed of sound c, m/s.
+    pub speed_of_sound: R,
+    /// WCSPH artificial viscosity α.
+    pub viscosity: R,
+    /// XSPH smoothing ε.
+    pub xsph: R,
+    /// Fluid substeps per world substep.
+    pub substeps: u32,
+    /// DFSPH tolerance on the mean predicted compression.
+    pub max_density_error: R,
+    /// DFSPH iteration cap.
+    pub max_iterations: u32,
+    /// The tank.
+    pub tank: FluidBox<R>,
+    /// The kernel constants.
+    pub kernel: Kernel<R>,
+    /// Tait stiffness over rest density, B/ρ₀ = c²/7, m²/s².
+    pub stiffness: R,
+}
+
+/// The fluid of a world: particle positions and velocities, in creation order (a
+/// particle's index is its id; particles are never removed), and the emitters.
+///
+/// A step ([`FluidSystem::step`]) runs, per fluid substep:
+/// 1. **emit** ([`emitter`](super::emitter)): nozzles add their due layers;
+/// 2. **neighbours** ([`grid`](super::grid), [`neighbours`](super::neighbours)): counting
+///    sort into cells, then the neighbour lists with kernel values, fluid and boundary;
+/// 3. **density** ([`density`](super::density)): ρ/ρ₀ by kernel sums;
+/// 4. **solve**: [`wcsph`](super::wcsph) (Tait pressure, explicit) or
+///    [`dfsph`](super::dfsph) (iterated velocity corrections to the rest density), with
+///    gravity and [`xsph`](super::xsph) smoothing;
+/// 5. **advect** ([`boundary`](super::boundary)): x ← x + Δt v, then the tank walls.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub struct FluidSystem<R: Real = Fx> {
+    pub(crate) settings: FluidSettings<R>,
+    pub(crate) positions: Vec<Vec3<R>>,
+    pub(crate) velocities: Vec<Vec3<R>>,
+    pub(crate) emitters: Vec<EmitterState<R>>,
+    #[serde(skip)]
+    pub(crate) scratch: Scratch<R>,
+}
+
+/// Per-step working memory and the boundary derived from the settings: never part of the
+/// state, rebuilt when missing, equal to any other scratch. A clone starts empty.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch<R: Real> {
+    /// Whether the boundary particles and grids below match the settings.
+    pub ready: bool,
+    /// Boundary particles lining the tank, fixed.
+    pub boundary: Vec<Vec3<R>>,
+    /// The boundary particles sorted into cells, once.
+    pub boundary_grid: CellGrid<R>,
+    /// The fluid particles sorted into cells, each substep.
+    pub grid: CellGrid<R>,
+    /// Fluid neighbours of each fluid particle.
+    pub fluid: NeighbourLists<R>,
+    /// Boundary neighbours of each fluid particle.
+    pub walls: NeighbourLists<R>,
+    /// ρ/ρ₀ of each fluid particle.
+    pub density: Vec<R>,
+    /// Pressure over rest density P̃ = p/ρ₀ of each fluid particle in the last substep,
+    /// m²/s².
+    pub pressure: Vec<R>,
+    /// A per-particle scalar of the solver (WCSPH: P̃/ρ̃²; DFSPH: the stiffness k).
+    pub scalar: Vec<R>,
+    /// A per-particle scalar of the solver (DFSPH: the factor 1/(Δt² D)).
+    pub factor: Vec<R>,
+    /// ρ₀/ρ of each fluid particle.
+    pub inv_density: Vec<R>,
+    /// Σ_b V₀∇W_ib of each fluid particle, 1/m (DFSPH).
+    pub wall_gradient: Vec<Vec3<R>>,
+    /// A per-particle velocity change, m/s.
+    pub delta: Vec<Vec3<R>>,
+    /// Solver iterations of the last substep (DFSPH), for reports.
+    pub last_iterations: u32,
+}
+
+impl<R: Real> Clone for Scratch<R> {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl<R: Real> PartialEq for Scratch<R> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl<R: Real> FluidSystem<R> {
+    /// The settings.
+    pub fn settings(&self) -> &FluidSettings<R> {
+        &self.settings
+    }
+
+    /// Fluid particle positions, by id, m.
+    pub fn positions(&self) -> &[Vec3<R>] {
+        &self.positions
+    }
+
+    /// Fluid particle velocities, by id, m/s.
+    pub fn velocities(&self) -> &[Vec3<R>] {
+        &self.velocities
+    }
+
+    /// The number of fluid particles.
+    pub fn len(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Whether there is no fluid particle (yet).
+    pub fn is_empty(&self) -> bool {
+        self.positions.is_empty()
+    }
+
+    /// Pressure solver iterations in the last substep (0 for WCSPH).
+    pub fn last_iterations(&self) -> u32 {
+        self.scratch.last_iterations
+    }
+
+    /// Puts the state of `restored` in place, keeping this system's scratch memory.
+    pub fn restore_from(&mut self, restored: Self) {
+        let same_settings = restored.settings == self.settings;
+        self.settings = restored.settings;
+        self.positions = restored.positions;
+        self.velocities = restored.velocities;
+        self.emitters = restored.emitters;
+        self.scratch.ready &= same_settings;
+    }
+
+    /// Advances the fluid by `dt` seconds under `gravity` (m/s²), in
+    /// [`FluidSettings::substeps`] equal substeps.
+    pub fn step(&mut self, dt: R, gravity: Vec3<R>) {
+        self.prepare();
+        let h = dt * R::from_ratio(1, i64::from(self.settings.substeps));
+        for _ in 0..self.settings.substeps {
+            self.emit(h);
+            if self.positions.is_empty() {
+                continue;
+            }
+            self.find_neighbours();
+            self.compute_density();
+            match self.settings.solver {
+                FluidSolver::Wcsph => self.wcsph_velocities(h, gravity),
+                FluidSolver::Dfsph => self.dfsph_velocities(h, gravity),
+            }
+            self.advect(h);
+        }
+    }
+
+    /// Builds the boundary particles and grids when the scratch does not have them.
+    pub(crate) fn prepare(&mut self) {
+        if self.scratch.ready {
+            return;
+        }
+        let s = &self.settings;
+        let support = s.spacing * s.support;
+        let margin = s.spacing * R::from_int(lattice_reach(s.support) + 1);
+        let lower = s.tank.min - Vec3::splat(margin);
+        let upper = s.tank.max + Vec3::splat(margin);
+        self.scratch.boundary = sample_walls(s);
+        self.scratch.boundary_grid = CellGrid::new(lower, upper, support);
+        self.scratch.boundary_grid.fill(&self.scratch.boundary);
+        self.scratch.grid = CellGrid::new(lower, upper, support);
+        self.scratch.ready = true;
+    }
+
+    /// Stage 2: sorts the fluid into cells and lists every particle's fluid and boundary
+    /// neighbours with their kernel values.
+    pub(crate) fn find_neighbours(&mut self) {
+        let Scratch {
+            boundary,
+            boundary_grid,
+            grid,
+            fluid,
+            walls,
+            ..
+        } = &mut self.scratch;
+        let kernel = &self.settings.kernel;
+        grid.fill(&self.positions);
+        fluid.build(&self.positions, &self.positions, grid, kernel, true);
+        walls.build(&self.positions, boundary, boundary_grid, kernel, false);
+    }
+}
