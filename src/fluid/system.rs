@@ -129,6 +129,12 @@ impl<R: Real> FluidSystem<R> {
         &self.velocities
     }
 
+    /// ρ/ρ₀ of each fluid particle at the last substep, by id (empty before the first
+    /// step; shorter than [`positions`](Self::positions) for particles emitted since).
+    pub fn densities(&self) -> &[R] {
+        &self.scratch.density
+    }
+
     /// The number of fluid particles.
     pub fn len(&self) -> usize {
         self.positions.len()

@@ -1,5 +1,5 @@
-//! Colours: the body palette, the one-colour-per-body palette of `--flat`, and the speed
-//! scale of particles.
+//! Colours: the body palette, the one-colour-per-body palette of `--flat`, the speed
+//! scale of particles and the density scale of fluids.
 
 use super::draw_list::{Frame, Paint};
 
@@ -85,9 +85,27 @@ impl Palette {
                 };
                 ramp(t)
             }
+            Paint::Density(ratio) => water(ratio),
         }
     }
 }
+
+/// Water at density ratio ρ/ρ₀: pale blue at 1 − [`DENSITY_SPAN`] or below (stretched,
+/// near the surface), deep blue at 1 + [`DENSITY_SPAN`] or above (compressed). A fixed
+/// scale, so that the same colour means the same compression in every film.
+fn water(ratio: f64) -> [u8; 3] {
+    const PALE: [f64; 3] = [150.0, 205.0, 240.0];
+    const DEEP: [f64; 3] = [10.0, 60.0, 160.0];
+    let t = if ratio.is_finite() {
+        ((ratio - 1.0) / (2.0 * DENSITY_SPAN) + 0.5).clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    core::array::from_fn(|k| (PALE[k] + (DEEP[k] - PALE[k]) * t).round() as u8)
+}
+
+/// Half the density range the water scale spans: ±2 % around ρ₀.
+const DENSITY_SPAN: f64 = 0.02;
 
 /// The colour at `t` ∈ [0, 1] along [`SPEED_RAMP`], linearly between stops.
 fn ramp(t: f64) -> [u8; 3] {

@@ -31,6 +31,8 @@ pub enum Paint {
     Rgb([u8; 3]),
     /// A colour on the speed scale of the whole film, from the speed in m/s.
     Speed(f64),
+    /// A colour on the fixed density scale of water, from ρ/ρ₀.
+    Density(f64),
 }
 
 /// Drawing order: a lower layer is painted first, whatever its depth. Within a layer,
@@ -144,13 +146,15 @@ impl Bounds {
         })
     }
 
-    /// The box grown by `fraction` of its largest side on every side (at least 0.5 m), so
-    /// that a flat scene still has some depth and the ground shows around the bodies.
+    /// The box grown by `fraction` of its largest side on every side, and by at least a
+    /// quarter of that side up to 0.5 m, so that a flat scene still has some depth and the
+    /// ground shows around the bodies, without shrinking a small scene (a tank of water a
+    /// few centimetres across) to a speck.
     pub fn padded(&self, fraction: f64) -> Bounds {
         let largest = (0..3)
             .map(|k| self.max[k] - self.min[k])
             .fold(0.0, f64::max);
-        let pad = (largest * fraction).max(0.5);
+        let pad = (largest * fraction).max(0.5_f64.min(largest / 4.0));
         Bounds {
             min: self.min.map(|c| c - pad),
             max: self.max.map(|c| c + pad),

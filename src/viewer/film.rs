@@ -2,6 +2,7 @@
 
 use super::colour::Palette;
 use super::draw_list::{Bounds, Frame, Primitive};
+use super::draw_fluid::draw_fluid;
 use super::draw_particles::draw_particles;
 use super::draw_rigid::{BodyColours, draw_rigid};
 use super::draw_trails::Trails;
@@ -44,6 +45,9 @@ pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
     }
     if let Some(particles) = world.particles() {
         draw_particles(particles, &mut primitives);
+    }
+    if let Some(fluid) = world.fluid() {
+        draw_fluid(fluid, &mut primitives);
     }
     Frame {
         tick: world.tick(),

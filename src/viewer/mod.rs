@@ -8,15 +8,16 @@
 //! (orthographic iso, front or top, fitted to the film's bounds) → [`raster`] (tiny-skia,
 //! PNG) and [`gif`], or [`html`] (the same figures as JSON for a canvas player).
 //!
-//! A new subsystem (cloth, fluid, joints) adds one `draw_*` module emitting figures
-//! ([`Figure::Line`], [`Figure::Polygon`], [`Figure::Dot`] with a [`Paint`]) and one call
-//! in [`film::capture`]. A colour scale of its own (fluid density) is one more [`Paint`]
-//! variant, scaled over the film in [`colour::Palette`] as speed is.
+//! Each subsystem has one `draw_*` module emitting figures ([`Figure::Line`],
+//! [`Figure::Polygon`], [`Figure::Dot`] with a [`Paint`]) and one call in
+//! [`film::capture`]: rigid bodies, particles (speed scale, over the film), fluids
+//! ([`draw_fluid`]: a fixed density scale).
 //!
 //! Output is deterministic: the same replay gives the same PNG, GIF and HTML bytes (no
 //! timestamps; sorting by layer, depth and list order).
 
 pub mod colour;
+pub mod draw_fluid;
 pub mod draw_list;
 pub mod draw_particles;
 pub mod draw_rigid;
