@@ -13,6 +13,7 @@ pub mod particles;
 pub mod replay;
 pub mod rigid;
 pub mod scene;
+pub mod soft;
 pub mod world;
 
 /// The README's Rust examples, compiled and run as doctests so the README stays true.

@@ -16,6 +16,7 @@ use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
 use crate::rigid::RigidDesc;
 use crate::scene::Scene;
+use crate::soft::SoftDesc;
 use crate::world::TickInput;
 
 /// The scene fields format 1 wrote, borrowed for writing.
@@ -54,12 +55,14 @@ struct Base<R: Real> {
 #[serde(bound = "")]
 enum Addition<R: Real> {
     Rigid(RigidDesc<R>),
+    Soft(SoftDesc<R>),
 }
 
 impl<R: Real> Addition<R> {
     fn index(&self) -> u32 {
         match self {
             Self::Rigid(_) => 0,
+            Self::Soft(_) => 1,
         }
     }
 }
@@ -80,6 +83,9 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     let mut additions = Vec::new();
     if let Some(rigid) = &scene.rigid {
         additions.push(Addition::Rigid(rigid.clone()));
+    }
+    if let Some(soft) = &scene.soft {
+        additions.push(Addition::Soft(soft.clone()));
     }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
@@ -102,6 +108,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         ticks: base.ticks,
         particles: base.particles,
         rigid: None,
+        soft: None,
         script: base.script,
     };
     if used == bytes.len() {
@@ -131,6 +138,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
     for addition in additions {
         match addition {
             Addition::Rigid(rigid) => scene.rigid = Some(rigid),
+            Addition::Soft(soft) => scene.soft = Some(soft),
         }
     }
     Ok(scene)

@@ -7,6 +7,7 @@ use super::error::SceneError;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{ParticleSystem, ParticlesDesc};
 use crate::rigid::{RigidDesc, RigidSystem};
+use crate::soft::{SoftDesc, SoftSystem};
 use crate::world::{Settings, TickInput, World};
 
 /// Highest tick rate a scene may ask for, Hz.
@@ -46,6 +47,9 @@ pub struct Scene<R: Real = Fx> {
     /// Rigid bodies and the contact solver's settings.
     #[serde(default)]
     pub rigid: Option<RigidDesc<R>>,
+    /// Soft bodies (cloth, rope, jelly), their colliders and the XPBD settings.
+    #[serde(default)]
+    pub soft: Option<SoftDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
     #[serde(default)]
     pub script: Vec<TickInput<R>>,
@@ -80,6 +84,7 @@ impl<R: Real> Scene<R> {
             ticks: default_ticks(),
             particles: None,
             rigid: None,
+            soft: None,
             script: Vec::new(),
         }
     }
@@ -111,6 +116,10 @@ impl<R: Real> Scene<R> {
         }
         if let Some(desc) = &self.rigid {
             world.set_rigid(RigidSystem::from_desc(desc).map_err(|e| e.within("rigid"))?);
+        }
+        if let Some(desc) = &self.soft {
+            let dt = R::from_ratio(1, i64::from(self.tick_rate) * i64::from(self.substeps));
+            world.set_soft(SoftSystem::from_desc(desc, dt).map_err(|e| e.within("soft"))?);
         }
         Ok(world)
     }

@@ -22,6 +22,8 @@ pub enum Part {
     Particles,
     /// The rigid bodies and their contacts.
     Rigid,
+    /// The soft bodies.
+    Soft,
 }
 
 impl Part {
@@ -31,6 +33,7 @@ impl Part {
             Part::Core => 0,
             Part::Particles => 1,
             Part::Rigid => 2,
+            Part::Soft => 3,
         }
     }
 
@@ -40,6 +43,7 @@ impl Part {
             Part::Core => "core",
             Part::Particles => "particles",
             Part::Rigid => "rigid",
+            Part::Soft => "soft",
         }
     }
 }

@@ -6,7 +6,7 @@
 //! | offset | size | content |
 //! |---|---|---|
 //! | 0 | 8 | magic: the ASCII bytes `FXSTEPSN` |
-//! | 8 | 4 | format version, `u32` = 2 ([`SNAPSHOT_FORMAT_VERSION`]) |
+//! | 8 | 4 | format version, `u32` = 3 ([`SNAPSHOT_FORMAT_VERSION`]) |
 //! | 12 | 4 | state version, `u32` ([`STATE_VERSION`] when written) |
 //! | 16 | 8 + n | scalar format name: `u64` length n, then its ASCII bytes (`"I32F32"`) |
 //! | 24 + n | S | the state: codec-encoded [`WorldState`] |
@@ -27,9 +27,39 @@ use crate::math::state_hash::StateHasher;
 /// The first eight bytes of every snapshot.
 pub const SNAPSHOT_MAGIC: [u8; 8] = *b"FXSTEPSN";
 
-/// The layout version this build reads and writes. Version 2 added the rigid bodies to
-/// [`WorldState`]; version 1 files are refused with a message naming both versions.
-pub const SNAPSHOT_FORMAT_VERSION: u32 = 2;
+/// The layout version this build writes. Version 2 added the rigid bodies to
+/// [`WorldState`], version 3 the soft bodies. Version 2 files still read (as a state
+/// without soft bodies); version 1 files are refused with a message naming the versions.
+pub const SNAPSHOT_FORMAT_VERSION: u32 = 3;
+
+/// The oldest layout version this build reads.
+const OLDEST_READABLE_VERSION: u32 = 2;
+
+/// The [`WorldState`] of layout version 2: every field but the soft bodies.
+#[derive(serde::Deserialize)]
+#[serde(bound = "")]
+struct WorldStateV2<R: Real> {
+    tick: u64,
+    settings: super::pipeline::Settings<R>,
+    rng: crate::math::Pcg32,
+    payload_digest: u64,
+    particles: Option<crate::particles::ParticleSystem<R>>,
+    rigid: Option<crate::rigid::RigidSystem<R>>,
+}
+
+impl<R: Real> From<WorldStateV2<R>> for WorldState<R> {
+    fn from(v2: WorldStateV2<R>) -> Self {
+        Self {
+            tick: v2.tick,
+            settings: v2.settings,
+            rng: v2.rng,
+            payload_digest: v2.payload_digest,
+            particles: v2.particles,
+            rigid: v2.rigid,
+            soft: None,
+        }
+    }
+}
 
 /// Magic, format version and state version.
 const FIXED_PREFIX: usize = 16;
@@ -106,12 +136,12 @@ pub fn decode_snapshot<R: Real>(bytes: &[u8]) -> Result<WorldState<R>, SnapshotE
         ));
     }
     let format_version = read_u32(bytes, 8);
-    if format_version != SNAPSHOT_FORMAT_VERSION {
+    if !(OLDEST_READABLE_VERSION..=SNAPSHOT_FORMAT_VERSION).contains(&format_version) {
         return Err(SnapshotError::at(
             8,
             format!(
-                "snapshot format version {format_version}; this build reads version \
-                 {SNAPSHOT_FORMAT_VERSION}"
+                "snapshot format version {format_version}; this build reads versions \
+                 {OLDEST_READABLE_VERSION} to {SNAPSHOT_FORMAT_VERSION}"
             ),
         ));
     }
@@ -143,8 +173,12 @@ pub fn decode_snapshot<R: Real>(bytes: &[u8]) -> Result<WorldState<R>, SnapshotE
         ));
     }
     let state_at = FIXED_PREFIX + used;
-    let state: WorldState<R> = codec::decode_exact(&body[used..])
-        .map_err(|e| SnapshotError::at(state_at, format!("state: {e}")))?;
+    let state: WorldState<R> = if format_version == 2 {
+        codec::decode_exact::<WorldStateV2<R>>(&body[used..]).map(WorldState::from)
+    } else {
+        codec::decode_exact(&body[used..])
+    }
+    .map_err(|e| SnapshotError::at(state_at, format!("state: {e}")))?;
     state
         .validate()
         .map_err(|e| SnapshotError::at(state_at, format!("state: {e}")))?;

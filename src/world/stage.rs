@@ -14,16 +14,19 @@ pub enum Stage {
     Particles,
     /// Rigid bodies: collide, wake, solve, sleep (once per substep).
     Rigid,
+    /// Soft bodies: XPBD substeps and spring-mass integration (once per substep).
+    Soft,
     /// Advance the tick counter and clear per-tick accumulators.
     EndTick,
 }
 
 impl Stage {
     /// Every stage, in execution order.
-    pub const ALL: [Stage; 4] = [
+    pub const ALL: [Stage; 5] = [
         Stage::ApplyInputs,
         Stage::Particles,
         Stage::Rigid,
+        Stage::Soft,
         Stage::EndTick,
     ];
 
@@ -33,6 +36,7 @@ impl Stage {
             Stage::ApplyInputs => "apply_inputs",
             Stage::Particles => "particles",
             Stage::Rigid => "rigid",
+            Stage::Soft => "soft",
             Stage::EndTick => "end_tick",
         }
     }
