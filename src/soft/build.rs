@@ -289,22 +289,22 @@ impl<R: Real> SoftSystem<R> {
     /// attachment rows are the last ones added.
     fn add_tethers(&mut self, first: u32, pinned: &[bool]) {
         let x = &self.vertices.position;
-        let mut pins: Vec<(u32, Vec3<R>, u32)> = Vec::new();
+        let mut pins: Vec<(u32, Vec3<R>)> = Vec::new();
         for (i, &p) in pinned.iter().enumerate() {
             if p {
                 let v = first + i as u32;
-                pins.push((v, x[v as usize], super::constraints::STATIC_ANCHOR));
+                pins.push((v, x[v as usize]));
             }
         }
-        let mut attached: Vec<(u32, Vec3<R>, u32)> = Vec::new();
+        let mut attached: Vec<(u32, Vec3<R>)> = Vec::new();
         let at = &self.attachments;
         for r in 0..at.vertex.len() {
             if at.vertex[r] >= first {
-                attached.push((at.vertex[r], at.rest[r], at.target[r]));
+                attached.push((at.vertex[r], at.rest[r]));
             }
         }
         let every_pin = pins.len() <= MAX_TETHERED_PINS;
-        let nearest_pool: Vec<(u32, Vec3<R>, u32)> = if every_pin {
+        let nearest_pool: Vec<(u32, Vec3<R>)> = if every_pin {
             attached.clone()
         } else {
             pins.iter().chain(&attached).copied().collect()
@@ -315,9 +315,9 @@ impl<R: Real> SoftSystem<R> {
                 continue;
             }
             let p = x[v as usize];
-            let mut chosen: Vec<(Vec3<R>, u32)> = Vec::new();
+            let mut chosen: Vec<(u32, Vec3<R>)> = Vec::new();
             if every_pin {
-                chosen.extend(pins.iter().map(|a| (a.1, a.2)));
+                chosen.extend(pins.iter().copied());
             }
             let mut best: Option<(R, usize)> = None;
             for (k, anchor) in nearest_pool.iter().enumerate() {
@@ -327,14 +327,13 @@ impl<R: Real> SoftSystem<R> {
                 }
             }
             if let Some((_, k)) = best {
-                chosen.push((nearest_pool[k].1, nearest_pool[k].2));
+                chosen.push(nearest_pool[k]);
             }
-            for (anchor, target) in chosen {
+            for (anchor, at) in chosen {
                 let t = &mut self.tethers;
                 t.vertex.push(v);
                 t.anchor.push(anchor);
-                t.target.push(target);
-                t.rest.push(anchor.distance(p));
+                t.rest.push(at.distance(p));
             }
         }
     }
@@ -399,7 +398,7 @@ impl<R: Real> SoftSystem<R> {
             d.b.len(),
             d.rest.len(),
             d.inv_rest_squared.len(),
-            d.half_inv_rest.len(),
+            d.inv_rest.len(),
             d.compliance.len(),
             d.lambda.len(),
         ]
@@ -455,18 +454,14 @@ impl<R: Real> SoftSystem<R> {
             ));
         }
         let tt = &self.tethers;
-        if [tt.anchor.len(), tt.target.len(), tt.rest.len()]
+        if [tt.anchor.len(), tt.rest.len()]
             .iter()
             .any(|&len| len != tt.vertex.len())
-            || !tt.vertex.iter().all(|&i| in_range(i))
-            || !tt
-                .target
-                .iter()
-                .all(|&g| g == super::constraints::STATIC_ANCHOR || (g as usize) < targets)
+            || !tt.vertex.iter().chain(&tt.anchor).all(|&i| in_range(i))
         {
             return Err(SceneError::new(
                 "tethers",
-                "rows of different lengths or naming missing vertices or targets",
+                "rows of different lengths or naming missing vertices",
             ));
         }
         let s = &self.springs;

@@ -44,8 +44,8 @@ pub fn body<R: Real>(shape: SoftShape<R>, model: SoftModel<R>, mass: R) -> SoftB
     }
 }
 
-/// An inextensible XPBD cloth (stretch compliance 0) with a light bending stiffness
-/// (compliance 1 /(N·m)).
+/// An inextensible XPBD cloth (stretch compliance 0, tethered to its pinned and attached
+/// vertices) with a bending compliance of 1 /(N·m).
 fn cloth_model<R: Real>() -> SoftModel<R> {
     SoftModel::Xpbd {
         stretch_compliance: R::ZERO,
@@ -150,7 +150,7 @@ pub fn rope<R: Real>(links: u32) -> SoftDesc<R> {
             stretch_compliance: R::ZERO,
             bend_compliance: None,
             volume_compliance: None,
-            tethers: true,
+            tethers: false,
         },
         R::ONE,
     );

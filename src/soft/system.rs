@@ -207,6 +207,23 @@ impl<R: Real> SoftSystem<R> {
         &self.vertices.position
     }
 
+    /// Moves vertex `i` to `position` (m) at rest, as if teleported (for example to start
+    /// from a crumpled shape); false when there is no such vertex. Pinned vertices move too
+    /// and stay pinned at their new place.
+    pub fn set_position(&mut self, i: usize, position: Vec3<R>) -> bool {
+        match (
+            self.vertices.position.get_mut(i),
+            self.vertices.velocity.get_mut(i),
+        ) {
+            (Some(x), Some(v)) => {
+                *x = position;
+                *v = Vec3::ZERO;
+                true
+            }
+            _ => false,
+        }
+    }
+
     /// Number of XPBD distance constraints.
     pub fn distance_count(&self) -> usize {
         self.distances.a.len()

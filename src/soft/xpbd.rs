@@ -2,7 +2,8 @@
 //! 2019), for every XPBD body at once.
 //!
 //! Each substep of length h = Δt/substeps:
-//! 1. predict: v ← (v + h (g + w·drag·(wind − v))) / (1 + h c), x_prev ← x, x ← x + h v
+//! 1. predict: v ← v / (1 + h c) + h (g + w·drag·(wind − v)), x_prev ← x, x ← x + h v
+//!    (damping the carried velocity only, so that a body at rest feels all of g)
 //!    (pinned vertices, w = 0, stay);
 //! 2. λ ← 0 for every constraint;
 //! 3. `iterations` Gauss–Seidel passes, each over tethers, distances, bending, volumes,
@@ -63,7 +64,7 @@ impl<R: Real> SoftSystem<R> {
         let w = &self.vertices.inv_mass;
         let s = &self.scratch;
         for _ in 0..self.settings.iterations {
-            self.tethers.solve(x, &s.displacement);
+            self.tethers.solve(x);
             self.distances.solve(x, &s.distance);
             self.hinges.solve(x, &s.hinge_share, &s.hinge_relax);
             self.tetrahedra.solve(x, w, s.inv_h2);
@@ -118,10 +119,11 @@ impl<R: Real> SoftSystem<R> {
                 if windy {
                     acceleration = acceleration.add_scaled(body.wind - v[i], w[i] * body.drag);
                 }
-                let mut velocity = v[i].add_scaled(acceleration, h);
+                let mut velocity = v[i];
                 if body.damping != R::ZERO {
                     velocity *= retain;
                 }
+                velocity = velocity.add_scaled(acceleration, h);
                 v[i] = velocity;
                 x[i] = x[i].add_scaled(velocity, h);
             }

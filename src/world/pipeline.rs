@@ -157,6 +157,11 @@ impl<R: Real> World<R> {
         self.state.soft.as_ref()
     }
 
+    /// The soft bodies, mutable (for placing vertices before a run).
+    pub fn soft_mut(&mut self) -> Option<&mut SoftSystem<R>> {
+        self.state.soft.as_mut()
+    }
+
     /// Warnings found when the subsystems were built (soft-body networks past their
     /// stability bound), for the driver to report.
     pub fn warnings(&self) -> Vec<String> {

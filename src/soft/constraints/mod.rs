@@ -19,5 +19,5 @@ mod volume;
 pub(crate) use attachment::Attachments;
 pub(crate) use bending::Hinges;
 pub(crate) use distance::{DistanceFactors, Distances};
-pub(crate) use tether::{STATIC_ANCHOR, Tethers};
+pub(crate) use tether::Tethers;
 pub(crate) use volume::Tetrahedra;
