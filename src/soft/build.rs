@@ -397,8 +397,7 @@ impl<R: Real> SoftSystem<R> {
         if [
             d.b.len(),
             d.rest.len(),
-            d.inv_rest_squared.len(),
-            d.inv_rest.len(),
+            d.inv_length.len(),
             d.compliance.len(),
             d.lambda.len(),
         ]

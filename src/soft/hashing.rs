@@ -6,8 +6,9 @@
 //! 1. the solver settings: substeps, iterations (`u32`);
 //! 2. the vertex count (`u64`), then each vertex in index order: position, velocity,
 //!    inverse mass;
-//! 3. the multipliers λ of the last substep: the distance rows' count (`u64`) and λs, the
-//!    hinges' (vectors), the tetrahedra's, the attachment rows';
+//! 3. the multipliers μ = α̃λ of the last substep: the distance rows' count (`u64`), then
+//!    each row's μ and its kept inverse length 1/|d|; the hinges' count and μs (vectors),
+//!    the tetrahedra's, the attachment rows';
 //! 4. the attachment target count (`u64`), then each target's start and goal displacement.
 //!
 //! Topology, rest lengths, compliances, masses, springs and colliders do not change during
@@ -29,8 +30,9 @@ impl<R: Real> SoftSystem<R> {
             self.hash_vertex(i, h);
         }
         h.write_len(self.distances.lambda.len());
-        for &l in &self.distances.lambda {
+        for (&l, &y) in self.distances.lambda.iter().zip(&self.distances.inv_length) {
             h.write_real(l);
+            h.write_real(y);
         }
         h.write_len(self.hinges.lambda.len());
         for &l in &self.hinges.lambda {

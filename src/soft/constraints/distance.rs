@@ -7,12 +7,15 @@
 //! shares sₐ = wₐ/D, s_b = w_b/D and the relaxation ρ = α̃/D; then with r = −C − μ,
 //! xₐ += sₐ r n̂, x_b −= s_b r n̂, μ += ρ r: exactly the XPBD update, no division.
 //!
-//! 1/|d| comes without a square root near the rest length, from the Taylor series of
-//! (1 + δ)^{−½} with δ = q − 1, q = |d|²/ℓ₀²: y = (1/ℓ₀)(1 − δ/2 + 3δ²/8), whose relative
-//! error is about (5/16)|δ|³: 2.5·10⁻⁶ at 1% strain (δ ≈ 0.02), so a compliant row's
-//! stretch under load is off by 0.03% of itself, and nothing at rest. Rows with q outside
-//! [3/4, 5/4] (more than about 12% strain: a crumpled start, a violent impact) take the
-//! exact 1/√.
+//! 1/|d| comes without a square root from the row's previous value y₀ (1/ℓ₀ at the start),
+//! by the Taylor series of (1 + δ)^{−½} with δ = q − 1, q = |d|² y₀²:
+//! y = y₀ (1 − δ/2 + 3δ²/8), whose relative error is about (5/16)|δ|³ plus that of y₀,
+//! shrunk to its square times 3/2 by every solve. Since an edge changes length little
+//! between substeps, δ is tiny and y is exact to the format's resolution after a few
+//! solves; a compliant row's stretch under load is then exact. Rows with q outside
+//! [3/4, 5/4] (the length changed by more than about 12% since the last solve: a crumpled
+//! start, a violent impact) take the exact 1/√. y is state: it is kept per row, hashed and
+//! snapshotted.
 
 use serde::{Deserialize, Serialize};
 
@@ -26,10 +29,8 @@ pub(crate) struct Distances<R: Real> {
     pub b: Vec<u32>,
     /// ℓ₀, m.
     pub rest: Vec<R>,
-    /// 1/ℓ₀², 1/m².
-    pub inv_rest_squared: Vec<R>,
-    /// 1/ℓ₀, 1/m.
-    pub inv_rest: Vec<R>,
+    /// 1/|d| at the row's last solve (1/ℓ₀ before the first), 1/m.
+    pub inv_length: Vec<R>,
     /// α, m/N.
     pub compliance: Vec<R>,
     /// μ = α̃λ, m.
@@ -51,12 +52,10 @@ impl<R: Real> Distances<R> {
     /// Adds a row between vertices `a` and `b` at rest length `rest` (> 0, m) with
     /// compliance `compliance` (m/N).
     pub fn push(&mut self, a: u32, b: u32, rest: R, compliance: R) {
-        let inv_rest = rest.recip();
         self.a.push(a);
         self.b.push(b);
         self.rest.push(rest);
-        self.inv_rest_squared.push(inv_rest * inv_rest);
-        self.inv_rest.push(inv_rest);
+        self.inv_length.push(rest.recip());
         self.compliance.push(compliance);
         self.lambda.push(R::ZERO);
     }
@@ -89,16 +88,18 @@ impl<R: Real> Distances<R> {
             let (a, b) = (self.a[c] as usize, self.b[c] as usize);
             let d = positions[a] - positions[b];
             let length_squared = d.dot_fused(d);
-            let q = length_squared * self.inv_rest_squared[c];
+            let previous = self.inv_length[c];
+            let q = length_squared * previous * previous;
             let inv_length = if q >= fast_low && q <= fast_high {
                 let delta = q - R::ONE;
                 let series = R::ONE - delta * R::HALF + delta * delta * three_eighths;
-                self.inv_rest[c] * series
+                previous * series
             } else if length_squared > R::ZERO {
                 length_squared.rsqrt()
             } else {
                 continue;
             };
+            self.inv_length[c] = inv_length;
             let length = length_squared * inv_length;
             let residual = self.rest[c] - length - self.lambda[c];
             self.lambda[c] += f.relax[c] * residual;
