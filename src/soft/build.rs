@@ -54,7 +54,32 @@ impl<R: Real> SoftSystem<R> {
                 system.warnings.push(format!("soft.{field}: {warning}"));
             }
         }
+        system.colour_rows();
         Ok(system)
+    }
+
+    /// Puts the distance and bending rows in colour order (see [`colour_order`]).
+    fn colour_rows(&mut self) {
+        let d = &mut self.distances;
+        let ends: Vec<[u32; 2]> = d.a.iter().zip(&d.b).map(|(&a, &b)| [a, b]).collect();
+        let order = colour_order(&ends, self.vertices.len());
+        for rows in [&mut d.a, &mut d.b] {
+            permute(rows, &order);
+        }
+        for rows in [
+            &mut d.rest,
+            &mut d.inv_length,
+            &mut d.compliance,
+            &mut d.lambda,
+        ] {
+            permute(rows, &order);
+        }
+        let h = &mut self.hinges;
+        let order = colour_order(&h.vertices, self.vertices.len());
+        permute(&mut h.vertices, &order);
+        permute(&mut h.coefficients, &order);
+        permute(&mut h.compliance, &order);
+        permute(&mut h.lambda, &order);
     }
 
     /// Checks and adds one body.
@@ -507,6 +532,35 @@ impl<R: Real> SoftSystem<R> {
         }
         Ok(())
     }
+}
+
+/// The most colours [`colour_order`] tells apart; rows past them share the last colour.
+const MAX_COLOURS: u32 = 64;
+
+/// A Gauss–Seidel order in which consecutive rows rarely share a vertex, so that the
+/// processor can overlap one row's arithmetic with the next one's: rows are coloured
+/// greedily in their build order (each takes the lowest colour none of its vertices has yet,
+/// up to [`MAX_COLOURS`]), then listed colour by colour, in build order within a colour.
+/// The order depends only on the rows, so it is the same on every machine.
+fn colour_order<const K: usize>(rows: &[[u32; K]], vertices: usize) -> Vec<usize> {
+    let mut used = vec![0u64; vertices];
+    let mut colours = Vec::with_capacity(rows.len());
+    for row in rows {
+        let taken = row.iter().fold(0u64, |mask, &v| mask | used[v as usize]);
+        let colour = taken.trailing_ones().min(MAX_COLOURS - 1);
+        for &v in row {
+            used[v as usize] |= 1 << colour;
+        }
+        colours.push(colour);
+    }
+    let mut order: Vec<usize> = (0..rows.len()).collect();
+    order.sort_by_key(|&r| (colours[r], r));
+    order
+}
+
+/// `rows` rearranged so that entry k is the old entry `order[k]`.
+fn permute<T: Clone>(rows: &mut Vec<T>, order: &[usize]) {
+    *rows = order.iter().map(|&k| rows[k].clone()).collect();
 }
 
 fn check_settings(s: &XpbdSettings) -> Result<(), SceneError> {

@@ -8,7 +8,8 @@
 //! 2. λ ← 0 for every constraint;
 //! 3. `iterations` Gauss–Seidel passes, each over tethers, distances, bending, volumes,
 //!    attachments and collisions, in that order and in row order within each kind (the
-//!    tethers first, so that the edges have the last word);
+//!    tethers first, so that the edges have the last word; distance and bending rows are
+//!    in colour order, fixed at build);
 //! 4. v ← (x − x_prev)/h.
 //!
 //! The factors of the rows with constant denominators are computed when h first appears
