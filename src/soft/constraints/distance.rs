@@ -16,10 +16,15 @@
 //! [3/4, 5/4] (the length changed by more than about 12% since the last solve: a crumpled
 //! start, a violent impact) take the exact 1/√. y is state: it is kept per row, hashed and
 //! snapshotted.
+//!
+//! Each row is written once, in an [`Arithmetic`], and runs guarded first: see
+//! [`arithmetic`](super::arithmetic). Its products and sums are rounded one by one (no fused
+//! dot product), the form the guarded operators reproduce.
 
 use serde::{Deserialize, Serialize};
 
-use crate::math::{Real, Vec3};
+use super::arithmetic::{Arithmetic, Checked, Guarded};
+use crate::math::{Guard, Real, Vec3};
 
 /// Distance constraint rows.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -79,33 +84,97 @@ impl<R: Real> Distances<R> {
         f
     }
 
-    /// One Gauss–Seidel pass over every row, in order, moving `positions` (m).
+    /// One Gauss–Seidel pass over every row, in order, moving `positions` (m). Each row
+    /// is computed with guarded arithmetic and, if its guard trips, again with the checked
+    /// operators (see [`arithmetic`](super::arithmetic)).
     pub fn solve(&mut self, positions: &mut [Vec3<R>], f: &DistanceFactors<R>) {
-        let fast_low = R::from_ratio(3, 4);
-        let fast_high = R::from_ratio(5, 4);
-        let three_eighths = R::from_ratio(3, 8);
         for c in 0..self.a.len() {
             let (a, b) = (self.a[c] as usize, self.b[c] as usize);
-            let d = positions[a] - positions[b];
-            let length_squared = d.dot_fused(d);
-            let previous = self.inv_length[c];
-            let q = length_squared * previous * previous;
-            let inv_length = if q >= fast_low && q <= fast_high {
-                let delta = q - R::ONE;
-                let series = R::ONE - delta * R::HALF + delta * delta * three_eighths;
-                previous * series
-            } else if length_squared > R::ZERO {
-                length_squared.rsqrt()
-            } else {
-                continue;
+            let input = RowInput {
+                xa: positions[a],
+                xb: positions[b],
+                rest: self.rest[c],
+                previous: self.inv_length[c],
+                mu: self.lambda[c],
+                share_a: f.share_a[c],
+                share_b: f.share_b[c],
+                relax: f.relax[c],
             };
-            self.inv_length[c] = inv_length;
-            let length = length_squared * inv_length;
-            let residual = self.rest[c] - length - self.lambda[c];
-            self.lambda[c] += f.relax[c] * residual;
-            let direction = d * inv_length;
-            positions[a] = positions[a].add_scaled(direction, f.share_a[c] * residual);
-            positions[b] = positions[b].add_scaled(direction, -(f.share_b[c] * residual));
+            let mut guarded = Guarded(Guard::new());
+            let mut output = row(&mut guarded, &input);
+            if !guarded.0.is_clear() {
+                output = row(&mut Checked, &input);
+            }
+            if let Some(out) = output {
+                positions[a] = out.xa;
+                positions[b] = out.xb;
+                self.lambda[c] = out.mu;
+                self.inv_length[c] = out.inv_length;
+            }
         }
     }
+}
+
+/// What one row reads.
+struct RowInput<R: Real> {
+    xa: Vec3<R>,
+    xb: Vec3<R>,
+    rest: R,
+    previous: R,
+    mu: R,
+    share_a: R,
+    share_b: R,
+    relax: R,
+}
+
+/// What one row writes.
+struct RowOutput<R: Real> {
+    xa: Vec3<R>,
+    xb: Vec3<R>,
+    mu: R,
+    inv_length: R,
+}
+
+/// One row's update (see the [module](self)) in the arithmetic `o`; `None` when the ends
+/// coincide (no axis).
+#[inline(always)]
+fn row<R: Real, A: Arithmetic<R>>(o: &mut A, i: &RowInput<R>) -> Option<RowOutput<R>> {
+    let d = o.sub3(i.xa, i.xb);
+    let length_squared = o.length_squared3(d);
+    let scaled = o.mul(length_squared, i.previous);
+    let q = o.mul(scaled, i.previous);
+    let inv_length = if q >= R::from_ratio(3, 4) && q <= R::from_ratio(5, 4) {
+        let delta = o.sub(q, R::ONE);
+        let half = o.mul(delta, R::HALF);
+        let square = o.mul(delta, delta);
+        let quadratic = o.mul(square, R::from_ratio(3, 8));
+        let linear = o.sub(R::ONE, half);
+        let series = o.add(linear, quadratic);
+        o.mul(i.previous, series)
+    } else if length_squared > R::ZERO {
+        length_squared.rsqrt()
+    } else {
+        return None;
+    };
+    let length = o.mul(length_squared, inv_length);
+    let shortfall = o.sub(i.rest, length);
+    let residual = o.sub(shortfall, i.mu);
+    let relaxed = o.mul(i.relax, residual);
+    let mu = o.add(i.mu, relaxed);
+    let direction = Vec3::new(
+        o.mul(d.x, inv_length),
+        o.mul(d.y, inv_length),
+        o.mul(d.z, inv_length),
+    );
+    let step_a = o.mul(i.share_a, residual);
+    let step_b = o.mul(i.share_b, residual);
+    let xa = o.add_scaled3(i.xa, direction, step_a);
+    let minus_b = o.sub(R::ZERO, step_b);
+    let xb = o.add_scaled3(i.xb, direction, minus_b);
+    Some(RowOutput {
+        xa,
+        xb,
+        mu,
+        inv_length,
+    })
 }

@@ -10,6 +10,7 @@
 //! vertices and short substeps). Where D is constant (distance, bending, attachment), the
 //! factors are computed once per substep length, so the inner loops do not divide.
 
+mod arithmetic;
 mod attachment;
 mod bending;
 mod distance;
