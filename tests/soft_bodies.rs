@@ -325,3 +325,129 @@ fn rigid_rope_stays_inextensible() {
         assert!(world.metrics().max_stretch < 0.01);
     }
 }
+
+/// A short free rope (two vertices 1 cm apart along `along`, a unit vector, 10 g) let go at
+/// `start` above `collider`, after `seconds`: its vertices' positions.
+fn drop_on(
+    collider: fixstep::soft::ColliderDesc<Fx>,
+    start: Vec3<Fx>,
+    along: Vec3<Fx>,
+    seconds: u64,
+) -> Vec<Vec3<Fx>> {
+    let body = fixstep::soft::presets::body(
+        SoftShape::Rope {
+            start,
+            end: start + along * Fx::from_ratio(1, 100),
+            links: 1,
+        },
+        SoftModel::Xpbd {
+            stretch_compliance: Fx::ZERO,
+            bend_compliance: None,
+            volume_compliance: None,
+            tethers: false,
+        },
+        Fx::from_ratio(1, 100),
+    );
+    let soft = SoftDesc {
+        bodies: vec![body],
+        colliders: vec![collider],
+        solver: XpbdSettings::default(),
+    };
+    let mut world = scene_with(soft, 60).build().unwrap();
+    run(&mut world, 60 * seconds);
+    assert_eq!(world.saturations_total(), 0);
+    world.soft().unwrap().positions().to_vec()
+}
+
+fn collider(
+    shape: fixstep::rigid::Shape<Fx>,
+    position: Vec3<Fx>,
+    friction: Fx,
+) -> fixstep::soft::ColliderDesc<Fx> {
+    fixstep::soft::ColliderDesc {
+        shape,
+        position,
+        orientation: fixstep::math::Quat::IDENTITY,
+        friction,
+    }
+}
+
+/// Vertices dropped on a plane, a sphere, a box and a capsule come to rest on top of them,
+/// one vertex radius (1 cm) above the surface, to within 1 mm.
+#[test]
+fn vertices_rest_on_every_collider_shape() {
+    use fixstep::rigid::Shape;
+    let half = Fx::HALF;
+    let above = |y: f64| Vec3::new(Fx::ZERO, Fx::from_f64(y), Fx::ZERO);
+    let cases: [(Shape<Fx>, f64); 4] = [
+        (
+            Shape::Plane {
+                normal: Vec3::Y,
+                offset: Fx::ZERO,
+            },
+            0.0,
+        ),
+        (Shape::Sphere { radius: half }, 0.5),
+        (
+            Shape::Box {
+                half_extents: Vec3::splat(half),
+            },
+            0.5,
+        ),
+        (
+            Shape::Capsule {
+                radius: half,
+                half_height: half,
+            },
+            1.0,
+        ),
+    ];
+    for (shape, top) in cases {
+        let name = format!("{shape:?}");
+        let positions = drop_on(
+            collider(shape, Vec3::ZERO, Fx::ONE),
+            above(top + 0.3),
+            Vec3::X,
+            3,
+        );
+        for p in positions {
+            let height = p.y.to_f64() - top;
+            assert!(
+                (height - 0.01).abs() < 1e-3,
+                "{name}: vertex at height {height:.5} m above the top (expected 0.01)"
+            );
+        }
+    }
+}
+
+/// On a 30° slope (tan 30° = 0.577), a pair of vertices let go on the surface stays put
+/// with μ = 1 and slides with μ = 0.1 as far as Coulomb friction says.
+#[test]
+fn friction_holds_or_lets_slide_on_a_slope() {
+    use fixstep::rigid::Shape;
+    let angle: f64 = 30f64.to_radians();
+    let normal = Vec3::from_f64(-angle.sin(), angle.cos(), 0.0);
+    let plane = |mu: Fx| {
+        collider(
+            Shape::Plane {
+                normal,
+                offset: Fx::ZERO,
+            },
+            Vec3::ZERO,
+            mu,
+        )
+    };
+    let down_slope = Vec3::from_f64(-angle.cos(), -angle.sin(), 0.0);
+    let start = normal * Fx::from_ratio(1, 100);
+    let held = drop_on(plane(Fx::ONE), start, down_slope, 2);
+    let slid = drop_on(plane(Fx::from_ratio(1, 10)), start, down_slope, 2);
+    let travel = |p: &[Vec3<Fx>]| (p[0] - start).length().to_f64();
+    assert!(travel(&held) < 0.01, "μ = 1 moved {:.4} m", travel(&held));
+    // Sliding from rest at a = g (sin 30° − 0.1 cos 30°) = 4.06 m/s² for 2 s: 8.1 m.
+    let expected = 0.5 * 9.81 * (angle.sin() - 0.1 * angle.cos()) * 4.0;
+    assert!(
+        (travel(&slid) - expected).abs() < 0.05 * expected,
+        "μ = 0.1 slid {:.3} m, Coulomb friction gives {expected:.3} m",
+        travel(&slid)
+    );
+}
