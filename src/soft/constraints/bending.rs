@@ -14,7 +14,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::math::{Real, Vec3};
+use super::arithmetic::{Arithmetic, Checked, Guarded};
+use crate::math::{Guard, Real, Vec3};
 
 /// Bending rows.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -87,21 +88,54 @@ impl<R: Real> Hinges<R> {
     }
 
     /// One Gauss–Seidel pass: with μ = α̃λ and r = −C − μ, xₖ += (wₖcₖ/D) r and
-    /// μ += (α̃/D) r.
+    /// μ += (α̃/D) r. Each row is computed with guarded arithmetic and, if its guard trips,
+    /// again with the checked operators (see [`arithmetic`](super::arithmetic)).
     pub fn solve(&mut self, positions: &mut [Vec3<R>], shares: &[[R; 4]], relax: &[R]) {
         for h in 0..self.vertices.len() {
-            let v = self.vertices[h];
-            let c = self.coefficients[h];
-            let mut value = Vec3::ZERO;
-            for k in 0..4 {
-                value = value.add_scaled(positions[v[k] as usize], c[k]);
+            let v = self.vertices[h].map(|i| i as usize);
+            let input = HingeInput {
+                x: v.map(|i| positions[i]),
+                c: self.coefficients[h],
+                mu: self.lambda[h],
+                shares: shares[h],
+                relax: relax[h],
+            };
+            let mut guarded = Guarded(Guard::new());
+            let mut output = hinge(&mut guarded, &input);
+            if !guarded.0.is_clear() {
+                output = hinge(&mut Checked, &input);
             }
-            let residual = -value - self.lambda[h];
-            self.lambda[h] = self.lambda[h].add_scaled(residual, relax[h]);
+            let (x, mu) = output;
             for k in 0..4 {
-                let i = v[k] as usize;
-                positions[i] = positions[i].add_scaled(residual, shares[h][k]);
+                positions[v[k]] = x[k];
             }
+            self.lambda[h] = mu;
         }
     }
+}
+
+/// What one hinge reads.
+struct HingeInput<R: Real> {
+    x: [Vec3<R>; 4],
+    c: [R; 4],
+    mu: Vec3<R>,
+    shares: [R; 4],
+    relax: R,
+}
+
+/// One hinge's update in the arithmetic `o`: the new corner positions and μ.
+#[inline(always)]
+fn hinge<R: Real, A: Arithmetic<R>>(o: &mut A, i: &HingeInput<R>) -> ([Vec3<R>; 4], Vec3<R>) {
+    let mut value = Vec3::ZERO;
+    for (&corner, &c) in i.x.iter().zip(&i.c) {
+        value = o.add_scaled3(value, corner, c);
+    }
+    let negative = o.sub3(Vec3::ZERO, value);
+    let residual = o.sub3(negative, i.mu);
+    let mu = o.add_scaled3(i.mu, residual, i.relax);
+    let mut x = i.x;
+    for (corner, &share) in x.iter_mut().zip(&i.shares) {
+        *corner = o.add_scaled3(*corner, residual, share);
+    }
+    (x, mu)
 }
