@@ -16,6 +16,7 @@ pub mod particles;
 pub mod replay;
 pub mod rigid;
 pub mod scene;
+pub mod soft;
 pub mod viewer;
 pub mod world;
 

@@ -146,6 +146,9 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
         )),
     };
     runner.enable_reports();
+    for warning in runner.world().warnings() {
+        eprint_line(&format!("warning: {warning}"));
+    }
     if let Some(metrics) = &mut metrics {
         metrics.tick(runner.world())?;
     }
@@ -196,7 +199,7 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     }
     if let Some(d) = divergence {
         eprint_line(&format!(
-            "warning: the simulation diverged at tick {}: the energy per particle grew from \
+            "warning: the simulation diverged at tick {}: the energy per point grew from \
              {:.3e} J to {:.3e} J; the step is too long for the stiffest force, or the \
              integrator is unstable (try more substeps)",
             d.tick, d.reference, d.energy_scale

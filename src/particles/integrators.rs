@@ -243,7 +243,7 @@ fn semi_implicit_euler<R: Real>(l: &StepLengths<R>, c: StepContext<'_, '_, R>) {
 
 /// For every movable particle: v ← v + h_kick·a, then x ← x + h_drift·v (the new v), with
 /// a (m/s²) from `accelerations` and the steps in s. All slices cover the same slots.
-pub(super) fn kick_then_drift<R: Real>(
+pub(crate) fn kick_then_drift<R: Real>(
     accelerations: &[Vec3<R>],
     inv_masses: &[R],
     velocities: &mut [Vec3<R>],

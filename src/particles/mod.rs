@@ -42,7 +42,7 @@ mod commands;
 mod damping;
 pub mod desc;
 pub mod emitter;
-mod forces;
+pub(crate) mod forces;
 mod fused_euler;
 pub mod hashing;
 pub mod integrators;

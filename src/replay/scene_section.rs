@@ -17,6 +17,7 @@ use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
 use crate::rigid::RigidDesc;
 use crate::scene::Scene;
+use crate::soft::SoftDesc;
 use crate::world::TickInput;
 
 /// The scene fields format 1 wrote, borrowed for writing.
@@ -56,6 +57,7 @@ struct Base<R: Real> {
 enum Addition<R: Real> {
     Rigid(RigidDesc<R>),
     Fluid(FluidDesc<R>),
+    Soft(SoftDesc<R>),
 }
 
 impl<R: Real> Addition<R> {
@@ -63,6 +65,7 @@ impl<R: Real> Addition<R> {
         match self {
             Self::Rigid(_) => 0,
             Self::Fluid(_) => 1,
+            Self::Soft(_) => 2,
         }
     }
 }
@@ -87,6 +90,9 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     if let Some(fluid) = &scene.fluid {
         additions.push(Addition::Fluid(fluid.clone()));
     }
+    if let Some(soft) = &scene.soft {
+        additions.push(Addition::Soft(soft.clone()));
+    }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
     }
@@ -109,6 +115,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         particles: base.particles,
         rigid: None,
         fluid: None,
+        soft: None,
         script: base.script,
     };
     if used == bytes.len() {
@@ -139,6 +146,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         match addition {
             Addition::Rigid(rigid) => scene.rigid = Some(rigid),
             Addition::Fluid(fluid) => scene.fluid = Some(fluid),
+            Addition::Soft(soft) => scene.soft = Some(soft),
         }
     }
     Ok(scene)

@@ -5,9 +5,10 @@ use crate::fluid::{FluidSolver, presets as fluid};
 use crate::math::Real;
 use crate::particles::presets;
 use crate::rigid::presets as rigid;
+use crate::soft::presets as soft;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 13] = [
+pub const BUILTIN_SCENES: [(&str, &str); 17] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, and rigid bodies stacking, bouncing and tumbling",
@@ -56,6 +57,19 @@ pub const BUILTIN_SCENES: [(&str, &str); 13] = [
     (
         "pour",
         "a jet of 216 water particles poured into an empty box, DFSPH",
+    ),
+    (
+        "cloth",
+        "a 32x32 inextensible XPBD cloth pinned at two corners, falling and swinging",
+    ),
+    (
+        "curtain",
+        "a 32x32 cloth blown by wind, its top edge slid to and fro on a rail by inputs",
+    ),
+    ("rope", "a 20-link XPBD rope pendulum released horizontal"),
+    (
+        "jelly",
+        "a 6x6x6 spring-mass cube dropped on the ground, wobbling",
     ),
 ];
 
@@ -121,6 +135,24 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
         "pour" => {
             scene.fluid = Some(fluid::pour(216));
             scene.ticks = 60;
+        }
+        "cloth" => {
+            scene.soft = Some(soft::cloth(32));
+            scene.ticks = 600;
+        }
+        "curtain" => {
+            scene.soft = Some(soft::curtain());
+            scene.script = soft::curtain_script();
+            scene.ticks = 600;
+        }
+        "rope" => {
+            scene.soft = Some(soft::rope(20));
+            scene.ticks = 600;
+        }
+        "jelly" => {
+            scene.soft = Some(soft::jelly());
+            scene.substeps = 10;
+            scene.ticks = 300;
         }
         _ => return None,
     }

@@ -8,6 +8,7 @@ use crate::fluid::{FluidDesc, FluidSystem};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{ParticleSystem, ParticlesDesc};
 use crate::rigid::{RigidDesc, RigidSystem};
+use crate::soft::{SoftDesc, SoftSystem};
 use crate::world::{Settings, TickInput, World};
 
 /// Highest tick rate a scene may ask for, Hz.
@@ -51,6 +52,10 @@ pub struct Scene<R: Real = Fx> {
     /// read as they did before fluids.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fluid: Option<FluidDesc<R>>,
+    /// Soft bodies (cloth, rope, jelly), their colliders and the XPBD settings. Left out of
+    /// a written scene when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub soft: Option<SoftDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
     #[serde(default)]
     pub script: Vec<TickInput<R>>,
@@ -86,6 +91,7 @@ impl<R: Real> Scene<R> {
             particles: None,
             rigid: None,
             fluid: None,
+            soft: None,
             script: Vec::new(),
         }
     }
@@ -121,6 +127,10 @@ impl<R: Real> Scene<R> {
         if let Some(desc) = &self.fluid {
             let dt = R::from_ratio(1, i64::from(self.tick_rate) * i64::from(self.substeps));
             world.set_fluid(FluidSystem::from_desc(desc, dt).map_err(|e| e.within("fluid"))?);
+        }
+        if let Some(desc) = &self.soft {
+            let dt = R::from_ratio(1, i64::from(self.tick_rate) * i64::from(self.substeps));
+            world.set_soft(SoftSystem::from_desc(desc, dt).map_err(|e| e.within("soft"))?);
         }
         Ok(world)
     }

@@ -9,7 +9,7 @@ use crate::math::Real;
 
 /// Sections a future build may simulate; a file that uses one gets a clear refusal rather
 /// than a generic "unknown field".
-const UNSUPPORTED_SECTIONS: [(&str, &str); 2] = [("joints", "joints"), ("soft", "soft bodies")];
+const UNSUPPORTED_SECTIONS: [(&str, &str); 1] = [("joints", "joints")];
 
 /// Parses a scene from RON text. `origin` names the file in error messages.
 ///

@@ -22,6 +22,8 @@ pub enum Part {
     Particles,
     /// The rigid bodies and their contacts.
     Rigid,
+    /// The soft bodies.
+    Soft,
     /// The fluid particles and emitters.
     Fluid,
 }
@@ -33,6 +35,7 @@ impl Part {
             Part::Core => 0,
             Part::Particles => 1,
             Part::Rigid => 2,
+            Part::Soft => 3,
             Part::Fluid => 4,
         }
     }
@@ -43,6 +46,7 @@ impl Part {
             Part::Core => "core",
             Part::Particles => "particles",
             Part::Rigid => "rigid",
+            Part::Soft => "soft",
             Part::Fluid => "fluid",
         }
     }

@@ -2,7 +2,7 @@
 //! stability limit, a spring too stiff for the step) before its values hit the numeric range.
 //!
 //! The monitor samples the world's [`Metrics`] when it is switched on and then every few
-//! ticks, and compares the mechanical energy scale per live particle, ε = (KE + |PE|) / n
+//! ticks, and compares the mechanical energy scale per simulated point (live particles and soft-body vertices), ε = (KE + |PE|) / n
 //! (J), with the scale at its first sample, ε₀ (never taken below [`ENERGY_FLOOR`], so that
 //! a world starting at rest has a scale). A stable simulation keeps ε within a small factor of ε₀ (energy is conserved or
 //! dissipated; forces the inputs apply add energy, but at game rates not 10⁴-fold). An
@@ -74,7 +74,7 @@ impl DivergenceMonitor {
     pub fn sample(&mut self, metrics: &Metrics) {
         let saturated = metrics.saturations > self.saturations;
         self.saturations = metrics.saturations;
-        if self.detected.is_some() || metrics.particles == 0 {
+        if self.detected.is_some() || points(metrics) == 0 {
             return;
         }
         let scale = energy_scale(metrics);
@@ -94,9 +94,14 @@ impl DivergenceMonitor {
     }
 }
 
-/// ε = (KE + |PE|) / n, J per particle.
+/// n: live particles plus soft-body vertices.
+fn points(metrics: &Metrics) -> u64 {
+    metrics.particles + metrics.soft_vertices
+}
+
+/// ε = (KE + |PE|) / n, J per point.
 fn energy_scale(metrics: &Metrics) -> f64 {
     // ok-det: reporting
-    let particles = metrics.particles as f64; // ok-det: reporting
-    (metrics.kinetic_energy + metrics.potential_energy.abs()) / particles
+    let points = points(metrics) as f64; // ok-det: reporting
+    (metrics.kinetic_energy + metrics.potential_energy.abs()) / points
 }

@@ -21,6 +21,9 @@ pub enum Target {
     ParticleGroup(u16),
     /// One rigid body.
     Body(Handle),
+    /// A kinematic attachment target of the soft bodies, numbered over the scene's
+    /// attachments body after body (only [`Command::MoveKinematic`] acts on it).
+    SoftAttachment(u32),
 }
 
 /// One command from one player.

@@ -35,16 +35,23 @@ pub struct Metrics {
     /// Whether the divergence check has seen the energy blow up (see
     /// [`divergence`](super::divergence)); false when the check is off.
     pub diverged: bool,
+    /// The largest edge stretch max(0, ℓ/ℓ₀ − 1) of the soft bodies.
+    pub max_stretch: f64, // ok-det: reporting
+    /// The mean edge stretch of the soft bodies.
+    pub mean_stretch: f64, // ok-det: reporting
+    /// Soft-body vertices (not a CSV column; the divergence check counts them with the
+    /// particles).
+    pub soft_vertices: u64,
 }
 
 impl Metrics {
     /// The CSV header: the fixed columns, then one column per subsystem figure.
-    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies,density_error_avg,density_error_max,front_x";
+    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies,max_stretch,mean_stretch,density_error_avg,density_error_max,front_x";
 
     /// The row as CSV, in [`Metrics::CSV_HEADER`] order.
     pub fn csv_row(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             self.tick,
             self.time,
             self.kinetic_energy,
@@ -59,6 +66,8 @@ impl Metrics {
             self.max_penetration,
             self.awake_bodies,
             self.sleeping_bodies,
+            self.max_stretch,
+            self.mean_stretch,
             self.density_error_avg,
             self.density_error_max,
             self.front_x

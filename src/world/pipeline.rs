@@ -17,6 +17,7 @@ use crate::particles::ParticleSystem;
 use crate::rigid::RigidSystem;
 use crate::scene::SceneError;
 use crate::scene::check_rates;
+use crate::soft::SoftSystem;
 
 /// The version of the simulated state. It names the physics as much as the layout: bump it
 /// whenever a change alters any committed checksum, then re-record `replays/`.
@@ -57,6 +58,8 @@ pub struct WorldState<R: Real = Fx> {
     pub particles: Option<ParticleSystem<R>>,
     /// Rigid bodies, when the scene has any.
     pub rigid: Option<RigidSystem<R>>,
+    /// Soft bodies, when the scene has any.
+    pub soft: Option<SoftSystem<R>>,
     /// The fluid, when the scene has one.
     pub fluid: Option<FluidSystem<R>>,
 }
@@ -72,6 +75,9 @@ impl<R: Real> WorldState<R> {
         }
         if let Some(rigid) = &self.rigid {
             rigid.validate().map_err(|e| e.within("rigid"))?;
+        }
+        if let Some(soft) = &self.soft {
+            soft.validate().map_err(|e| e.within("soft"))?;
         }
         if let Some(fluid) = &self.fluid {
             fluid.validate().map_err(|e| e.within("fluid"))?;
@@ -99,9 +105,10 @@ pub struct TickReport {
 ///    commands in order.
 /// 2. [`Stage::Particles`]: per substep, emit, age, accumulate forces and integrate.
 /// 3. [`Stage::Rigid`]: per substep, the rigid-body step (collide, wake, solve, sleep).
-/// 4. [`Stage::Fluid`]: per substep, the fluid step (emit, neighbours, density, solve,
+/// 4. [`Stage::Soft`]: per substep, the XPBD substeps and the spring-mass integration.
+/// 5. [`Stage::Fluid`]: per substep, the fluid step (emit, neighbours, density, solve,
 ///    advect).
-/// 5. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
+/// 6. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
 ///
 /// A stage whose subsystem is absent from the scene is skipped without a loop or an
 /// allocation.
@@ -125,6 +132,7 @@ impl<R: Real> World<R> {
             payload_digest: 0,
             particles: None,
             rigid: None,
+            soft: None,
             fluid: None,
         })
     }
@@ -149,6 +157,30 @@ impl<R: Real> World<R> {
     /// Adds rigid bodies (replacing any previous ones).
     pub fn set_rigid(&mut self, rigid: RigidSystem<R>) {
         self.state.rigid = Some(rigid);
+    }
+
+    /// Adds soft bodies (replacing any previous ones).
+    pub fn set_soft(&mut self, soft: SoftSystem<R>) {
+        self.state.soft = Some(soft);
+    }
+
+    /// The soft bodies, if the scene has any.
+    pub fn soft(&self) -> Option<&SoftSystem<R>> {
+        self.state.soft.as_ref()
+    }
+
+    /// The soft bodies, mutable (for placing vertices before a run).
+    pub fn soft_mut(&mut self) -> Option<&mut SoftSystem<R>> {
+        self.state.soft.as_mut()
+    }
+
+    /// Warnings found when the subsystems were built (soft-body networks past their
+    /// stability bound), for the driver to report.
+    pub fn warnings(&self) -> Vec<String> {
+        self.state
+            .soft
+            .as_ref()
+            .map_or_else(Vec::new, |s| s.warnings().to_vec())
     }
 
     /// Adds a fluid (replacing any previous one).
@@ -240,6 +272,9 @@ impl<R: Real> World<R> {
             }
             if self.state.rigid.is_some() {
                 self.run_stage(&mut timings, Stage::Rigid, Self::step_rigid);
+            }
+            if self.state.soft.is_some() {
+                self.run_stage(&mut timings, Stage::Soft, Self::step_soft);
             }
             if self.state.fluid.is_some() {
                 self.run_stage(&mut timings, Stage::Fluid, Self::step_fluid);
@@ -342,6 +377,29 @@ impl<R: Real> World<R> {
                 .rigid
                 .as_mut()
                 .is_some_and(|r| r.apply_command(command)),
+            Command::MoveKinematic {
+                target: Target::SoftAttachment(_),
+                ..
+            } => self
+                .state
+                .soft
+                .as_mut()
+                .is_some_and(|s| s.apply_command(command)),
+            Command::ApplyForce {
+                target: Target::SoftAttachment(_),
+                ..
+            }
+            | Command::ApplyImpulse {
+                target: Target::SoftAttachment(_),
+                ..
+            }
+            | Command::SetVelocity {
+                target: Target::SoftAttachment(_),
+                ..
+            }
+            | Command::Remove {
+                target: Target::SoftAttachment(_),
+            } => false,
             _ => self
                 .state
                 .particles
@@ -377,7 +435,17 @@ impl<R: Real> World<R> {
         }
     }
 
-    /// Stage 4: the fluid, once per substep.
+    /// Stage 4: the soft bodies, once per substep.
+    fn step_soft(&mut self) {
+        let WorldState { settings, soft, .. } = &mut self.state;
+        if let Some(soft) = soft {
+            for s in 0..settings.substeps {
+                soft.step(self.substep_dt, settings.gravity, s, settings.substeps);
+            }
+        }
+    }
+
+    /// Stage 5: the fluid, once per substep.
     fn step_fluid(&mut self) {
         let WorldState {
             settings, fluid, ..
@@ -389,8 +457,11 @@ impl<R: Real> World<R> {
         }
     }
 
-    /// Stage 5: clears per-tick accumulators and advances the tick counter.
+    /// Stage 6: clears per-tick accumulators and advances the tick counter.
     fn end_tick(&mut self) {
+        if let Some(soft) = &mut self.state.soft {
+            soft.end_tick();
+        }
         if let Some(particles) = &mut self.state.particles {
             particles.end_tick();
         }
@@ -413,6 +484,11 @@ impl<R: Real> World<R> {
             let mut h = StateHasher::new();
             rigid.hash_state(&mut h);
             parts.push((Part::Rigid, h.finish()));
+        }
+        if let Some(soft) = &self.state.soft {
+            let mut h = StateHasher::new();
+            soft.hash_state(&mut h);
+            parts.push((Part::Soft, h.finish()));
         }
         if let Some(fluid) = &self.state.fluid {
             let mut h = StateHasher::new();
@@ -443,6 +519,9 @@ impl<R: Real> World<R> {
         }
         if let Some(rigid) = &self.state.rigid {
             digests.push((Part::Rigid, rigid.slot_digests()));
+        }
+        if let Some(soft) = &self.state.soft {
+            digests.push((Part::Soft, soft.slot_digests()));
         }
         if let Some(fluid) = &self.state.fluid {
             digests.push((Part::Fluid, fluid.slot_digests()));
@@ -493,6 +572,18 @@ impl<R: Real> World<R> {
             m.awake_bodies = rm.awake_bodies;
             m.sleeping_bodies = rm.sleeping_bodies;
         }
+        if let Some(s) = &self.state.soft {
+            let sm = s.metrics(self.state.settings.gravity);
+            m.kinetic_energy += sm.kinetic_energy;
+            m.potential_energy += sm.potential_energy;
+            for (total, part) in m.momentum.iter_mut().zip(sm.momentum) {
+                *total += part;
+            }
+            m.max_speed = m.max_speed.max(sm.max_speed);
+            m.max_stretch = sm.max_stretch;
+            m.mean_stretch = sm.mean_stretch;
+            m.soft_vertices = sm.vertices;
+        }
         if let Some(f) = &self.state.fluid {
             let fm = f.metrics(self.state.settings.gravity);
             m.kinetic_energy += fm.kinetic_energy;
@@ -525,6 +616,13 @@ impl<R: Real> World<R> {
             (_, restored) => restored,
         };
         state.rigid = match (self.state.rigid.take(), state.rigid.take()) {
+            (Some(mut current), Some(restored)) => {
+                current.restore_from(restored);
+                Some(current)
+            }
+            (_, restored) => restored,
+        };
+        state.soft = match (self.state.soft.take(), state.soft.take()) {
             (Some(mut current), Some(restored)) => {
                 current.restore_from(restored);
                 Some(current)

@@ -28,8 +28,8 @@ use crate::math::state_hash::StateHasher;
 pub const SNAPSHOT_MAGIC: [u8; 8] = *b"FXSTEPSN";
 
 /// The layout version this build reads and writes. Version 2 added the rigid bodies to
-/// [`WorldState`], version 3 the fluid; older files are refused with a message naming both
-/// versions.
+/// [`WorldState`], version 3 the fluid and the soft bodies; older files are refused with a
+/// message naming both versions (they come from builds of an older state version anyway).
 pub const SNAPSHOT_FORMAT_VERSION: u32 = 3;
 
 /// Magic, format version and state version.

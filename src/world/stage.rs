@@ -14,6 +14,8 @@ pub enum Stage {
     Particles,
     /// Rigid bodies: collide, wake, solve, sleep (once per substep).
     Rigid,
+    /// Soft bodies: XPBD substeps and spring-mass integration (once per substep).
+    Soft,
     /// Fluid: emit, neighbours, density, pressure solve, advect (once per substep).
     Fluid,
     /// Advance the tick counter and clear per-tick accumulators.
@@ -22,10 +24,11 @@ pub enum Stage {
 
 impl Stage {
     /// Every stage, in execution order.
-    pub const ALL: [Stage; 5] = [
+    pub const ALL: [Stage; 6] = [
         Stage::ApplyInputs,
         Stage::Particles,
         Stage::Rigid,
+        Stage::Soft,
         Stage::Fluid,
         Stage::EndTick,
     ];
@@ -36,6 +39,7 @@ impl Stage {
             Stage::ApplyInputs => "apply_inputs",
             Stage::Particles => "particles",
             Stage::Rigid => "rigid",
+            Stage::Soft => "soft",
             Stage::Fluid => "fluid",
             Stage::EndTick => "end_tick",
         }

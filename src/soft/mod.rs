@@ -1,0 +1,42 @@
+//! Soft bodies: XPBD cloth, rope and jelly, and spring-mass networks.
+//!
+//! Data flows one way: a scene's [`SoftDesc`] compiles into a [`SoftSystem`] (vertices
+//! and constraint rows, structure-of-arrays); each step advances the XPBD bodies together
+//! ([`xpbd`]) and each spring-mass body with its particle integrator ([`spring_mass`]);
+//! the state is hashed for checksums ([`hashing`]) and reported as [`SoftMetrics`].
+//!
+//! Both kinds of body live in one system and one stage ([`Stage::Soft`]), after the rigid
+//! bodies: they share the vertex store, the static colliders and the metrics. A
+//! spring-mass network is not built on the particle system; it reuses its integration
+//! schemes and damped-spring force on the soft vertices.
+//!
+//! # Files
+//!
+//! [`desc`] scene types · `topology` the cloth, rope and lattice builders · `build` checks
+//! and compilation · `system` storage and the step · `constraints` the XPBD rows
+//! (distance, bending, volume, attachment) · [`xpbd`] the substep loop ·
+//! [`spring_mass`] Hooke springs and the stability bound · `collide` static colliders
+//! with friction · `commands` inputs · [`hashing`] canonical state · `metrics` reporting ·
+//! [`presets`] built-in scenes.
+//!
+//! [`Stage::Soft`]: crate::world::Stage::Soft
+
+mod build;
+mod collide;
+mod commands;
+mod constraints;
+pub mod desc;
+pub mod hashing;
+mod metrics;
+pub mod presets;
+pub mod spring_mass;
+mod system;
+mod topology;
+pub mod xpbd;
+
+pub use desc::{
+    AttachmentDesc, ColliderDesc, MAX_SOLVER_STEPS, MAX_VERTICES, SoftBodyDesc, SoftDesc,
+    SoftModel, SoftShape, XpbdSettings,
+};
+pub use metrics::SoftMetrics;
+pub use system::SoftSystem;
