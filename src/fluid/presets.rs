@@ -87,3 +87,19 @@ pub fn pour<R: Real>(count: u32) -> FluidDesc<R> {
     });
     desc
 }
+
+/// The showcase's water: the dam break of [`dam_break`] (5 particles across a, 2 deep,
+/// DFSPH), its tank moved to x = 3.5 m, z = 1 m, beside the rigid bodies.
+pub fn showcase<R: Real>() -> FluidDesc<R> {
+    let mut desc = dam_break(5, 2, FluidSolver::Dfsph);
+    let offset = Vec3::new(R::from_ratio(7, 2), R::ZERO, R::ONE);
+    let moved = |b: FluidBox<R>| FluidBox {
+        min: b.min + offset,
+        max: b.max + offset,
+    };
+    desc.tank = moved(desc.tank);
+    for block in &mut desc.blocks {
+        block.region = moved(block.region);
+    }
+    desc
+}

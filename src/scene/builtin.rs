@@ -11,7 +11,7 @@ use crate::soft::presets as soft;
 pub const BUILTIN_SCENES: [(&str, &str); 17] = [
     (
         "showcase",
-        "everything fixstep simulates so far: emitters, springs, damping, and rigid bodies stacking, bouncing and tumbling",
+        "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a cloth swinging and a water column collapsing",
     ),
     (
         "fountain",
@@ -83,6 +83,8 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
         "showcase" => {
             scene.particles = Some(presets::showcase_particles());
             scene.rigid = Some(rigid::showcase());
+            scene.soft = Some(soft::showcase());
+            scene.fluid = Some(fluid::showcase());
             scene.ticks = 600;
         }
         "fountain" => {

@@ -191,3 +191,28 @@ pub fn jelly<R: Real>() -> SoftDesc<R> {
         solver: XpbdSettings::default(),
     }
 }
+
+/// The showcase's cloth: 12 × 12 vertices, 1 m a side, 0.1 kg, pinned at two corners at
+/// x = −4.5 and −3.5 m, 3 m up, falling and swinging beside the rigid bodies, damped like
+/// [`cloth`].
+pub fn showcase<R: Real>() -> SoftDesc<R> {
+    let n = 12;
+    let mut sheet = body(
+        SoftShape::Cloth {
+            origin: Vec3::new(-ratio::<R>(9, 2), R::from_int(3), R::ZERO),
+            u: Vec3::X,
+            v: Vec3::Z,
+            columns: n,
+            rows: n,
+        },
+        cloth_model(),
+        ratio(1, 10),
+    );
+    sheet.pins = vec![0, n - 1];
+    sheet.damping = R::HALF;
+    SoftDesc {
+        bodies: vec![sheet],
+        colliders: vec![ground()],
+        solver: XpbdSettings::default(),
+    }
+}

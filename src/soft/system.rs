@@ -224,6 +224,14 @@ impl<R: Real> SoftSystem<R> {
         }
     }
 
+    /// The vertex pairs of every XPBD distance row, then of every spring, in row order:
+    /// the edges of the bodies' meshes.
+    pub fn edges(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
+        let rows = self.distances.a.iter().zip(&self.distances.b);
+        let springs = self.springs.a.iter().zip(&self.springs.b);
+        rows.chain(springs).map(|(&a, &b)| (a, b))
+    }
+
     /// Number of XPBD distance constraints.
     pub fn distance_count(&self) -> usize {
         self.distances.a.len()

@@ -1,10 +1,11 @@
 //! A film: the frames of a run, every K ticks, with what they share (bounds and colours).
 
 use super::colour::Palette;
-use super::draw_list::{Bounds, Frame, Primitive};
 use super::draw_fluid::draw_fluid;
+use super::draw_list::{Bounds, Frame, Primitive};
 use super::draw_particles::draw_particles;
 use super::draw_rigid::{BodyColours, draw_rigid};
+use super::draw_soft::draw_soft;
 use super::draw_trails::Trails;
 use crate::math::{Fx, Real};
 use crate::replay::InputFeed;
@@ -45,6 +46,9 @@ pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
     }
     if let Some(particles) = world.particles() {
         draw_particles(particles, &mut primitives);
+    }
+    if let Some(soft) = world.soft() {
+        draw_soft(soft, &mut primitives);
     }
     if let Some(fluid) = world.fluid() {
         draw_fluid(fluid, &mut primitives);

@@ -10,8 +10,8 @@
 //!
 //! Each subsystem has one `draw_*` module emitting figures ([`Figure::Line`],
 //! [`Figure::Polygon`], [`Figure::Dot`] with a [`Paint`]) and one call in
-//! [`film::capture`]: rigid bodies, particles (speed scale, over the film), fluids
-//! ([`draw_fluid`]: a fixed density scale).
+//! [`film::capture`]: rigid bodies, particles (speed scale, over the film), soft bodies
+//! (mesh edges), fluids ([`draw_fluid`]: a fixed density scale).
 //!
 //! Output is deterministic: the same replay gives the same PNG, GIF and HTML bytes (no
 //! timestamps; sorting by layer, depth and list order).
@@ -21,6 +21,7 @@ pub mod draw_fluid;
 pub mod draw_list;
 pub mod draw_particles;
 pub mod draw_rigid;
+pub mod draw_soft;
 pub mod draw_trails;
 pub mod film;
 pub mod geometry;
