@@ -63,6 +63,13 @@ sync_tests!(
     cradle,
     incline,
     spinner,
+    dam_break,
+    tank,
+    pour,
+    cloth,
+    curtain,
+    rope,
+    jelly,
 );
 
 #[test]
