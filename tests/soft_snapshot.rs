@@ -1,6 +1,5 @@
 //! Soft bodies in snapshots: a curtain saved mid-run (with its kinematic target moving)
-//! continues bit for bit, and a snapshot of layout version 2 (before soft bodies) still
-//! reads.
+//! continues bit for bit.
 
 use fixstep::math::Fx;
 use fixstep::replay::InputFeed;
@@ -29,24 +28,4 @@ fn curtain_continues_bit_for_bit_from_a_snapshot() {
     let mut feed = InputFeed::new(&scene.script);
     run_to(&mut resumed, &mut feed, 150);
     assert_eq!(resumed.checksum(), straight.checksum());
-}
-
-#[test]
-fn a_layout_2_snapshot_still_reads() {
-    let scene = builtin_scene::<Fx>("stack").expect("built in");
-    let mut world = scene.build().expect("valid");
-    world.step(&Default::default());
-    let mut bytes = encode_snapshot(&world.snapshot()).expect("encodes");
-    // Layout 2 is layout 3 without the trailing `soft` field (None: one zero byte).
-    let hash_at = bytes.len() - 8;
-    assert_eq!(bytes[hash_at - 1], 0);
-    bytes.remove(hash_at - 1);
-    bytes[8..12].copy_from_slice(&2u32.to_le_bytes());
-    let at = bytes.len() - 8;
-    let mut hasher = fixstep::math::state_hash::StateHasher::new();
-    hasher.write_bytes(&bytes[..at]);
-    let hash = hasher.finish();
-    bytes[at..].copy_from_slice(&hash.to_le_bytes());
-    let state = decode_snapshot::<Fx>(&bytes).expect("a layout 2 snapshot reads");
-    assert_eq!(state, world.snapshot());
 }
