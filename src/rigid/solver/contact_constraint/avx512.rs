@@ -169,15 +169,15 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
                 mul3(tangents[1], t1),
             )
         };
-        side_a.v = sub3(side_a.v, push(normal_a, tangents_a));
-        side_a.w = sub3(side_a.w, push(in_a, it_a));
-        side_b.v = add3(side_b.v, push(normal_b, tangents_b));
-        side_b.w = add3(side_b.w, push(in_b, it_b));
-        bad |= (out_of_bound3(side_a.v)
-            | out_of_bound3(side_a.w)
-            | out_of_bound3(side_b.v)
-            | out_of_bound3(side_b.w))
-            & active;
+        bad |= Side::exchange(
+            (&mut side_a, &mut side_b),
+            [
+                push(normal_a, tangents_a),
+                push(in_a, it_a),
+                push(normal_b, tangents_b),
+                push(in_b, it_b),
+            ],
+        ) & active;
         if bad != 0 {
             return false;
         }
@@ -354,6 +354,22 @@ impl Side {
                 [zero; 3]
             },
         }
+    }
+
+    /// Applies an impulse's velocity changes, A losing and B gaining:
+    /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. Returns the lanes where a new
+    /// velocity left the checked bound.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    fn exchange(
+        (a, b): (&mut Side, &mut Side),
+        [dv_a, dw_a, dv_b, dw_b]: [[__m512i; 3]; 4],
+    ) -> __mmask8 {
+        a.v = sub3(a.v, dv_a);
+        a.w = sub3(a.w, dw_a);
+        b.v = add3(b.v, dv_b);
+        b.w = add3(b.w, dw_b);
+        out_of_bound3(a.v) | out_of_bound3(a.w) | out_of_bound3(b.v) | out_of_bound3(b.w)
     }
 
     /// Writes the velocities back.
@@ -578,15 +594,15 @@ unsafe fn solve_block(
         let new = _mm512_max_epi64(add(old, impulse), zero);
         let applied = select(in_use, sub(new, old), zero);
         bad |= out_of_bound(applied) & in_use;
-        side_a.v = sub3(side_a.v, mul3(normal_a, applied));
-        side_a.w = sub3(side_a.w, mul3(in_a, applied));
-        side_b.v = add3(side_b.v, mul3(normal_b, applied));
-        side_b.w = add3(side_b.w, mul3(in_b, applied));
-        bad |= (out_of_bound3(side_a.v)
-            | out_of_bound3(side_a.w)
-            | out_of_bound3(side_b.v)
-            | out_of_bound3(side_b.w))
-            & active;
+        bad |= Side::exchange(
+            (&mut side_a, &mut side_b),
+            [
+                mul3(normal_a, applied),
+                mul3(in_a, applied),
+                mul3(normal_b, applied),
+                mul3(in_b, applied),
+            ],
+        ) & active;
         normal_impulses[k] = select(in_use, new, old);
         max_normal_impulses[k] = select(in_use, _mm512_max_epi64(old_max, applied), old_max);
         if bad != 0 {
@@ -653,15 +669,15 @@ unsafe fn solve_block(
         ];
         bad |= (out_of_bound(applied[0]) | out_of_bound(applied[1])) & in_use;
         let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], applied[0]), mul3(a[1], applied[1]));
-        side_a.v = sub3(side_a.v, along(tangents_a));
-        side_a.w = sub3(side_a.w, along(it_a));
-        side_b.v = add3(side_b.v, along(tangents_b));
-        side_b.w = add3(side_b.w, along(it_b));
-        bad |= (out_of_bound3(side_a.v)
-            | out_of_bound3(side_a.w)
-            | out_of_bound3(side_b.v)
-            | out_of_bound3(side_b.w))
-            & active;
+        bad |= Side::exchange(
+            (&mut side_a, &mut side_b),
+            [
+                along(tangents_a),
+                along(it_a),
+                along(tangents_b),
+                along(it_b),
+            ],
+        ) & active;
         if bad != 0 {
             return false;
         }
