@@ -16,17 +16,6 @@ use crate::scene::SceneError;
 /// The most lattice sites along one axis of the tank.
 const MAX_SITES_PER_AXIS: u64 = 1 << 16;
 
-/// An error unless `lo ≤ value ≤ hi`; `what` says the unit.
-fn check_range<R: Real>(field: &str, value: R, lo: R, hi: R, what: &str) -> Result<(), SceneError> {
-    if value < lo || value > hi {
-        return Err(SceneError::new(
-            field,
-            format!("must be {lo} to {hi} {what} (got {value})"),
-        ));
-    }
-    Ok(())
-}
-
 /// An error unless `1 ≤ value ≤ hi`.
 fn check_count(field: &str, value: u32, hi: u32) -> Result<(), SceneError> {
     if !(1..=hi).contains(&value) {
@@ -89,32 +78,32 @@ impl<R: Real> FluidSettings<R> {
     /// Checks every setting and the tank, and derives the constants. `dt` is the world
     /// substep, s, for the time-step limit (not checked without it).
     fn compile(desc: &FluidDesc<R>, dt: Option<R>) -> Result<Self, SceneError> {
-        check_range("spacing", desc.spacing, R::from_ratio(1, 1000), R::ONE, "m")?;
-        check_range(
+        SceneError::check_range("spacing", desc.spacing, R::from_ratio(1, 1000), R::ONE, "m")?;
+        SceneError::check_range(
             "support",
             desc.support,
             R::from_ratio(3, 2),
             R::from_int(4),
             "spacings",
         )?;
-        check_range(
+        SceneError::check_range(
             "rest_density",
             desc.rest_density,
             R::ONE,
             R::from_int(100_000),
             "kg/m³",
         )?;
-        check_range(
+        SceneError::check_range(
             "speed_of_sound",
             desc.speed_of_sound,
             R::from_ratio(1, 10),
             R::from_int(1000),
             "m/s",
         )?;
-        check_range("viscosity", desc.viscosity, R::ZERO, R::ONE, "")?;
-        check_range("xsph", desc.xsph, R::ZERO, R::ONE, "")?;
+        SceneError::check_range("viscosity", desc.viscosity, R::ZERO, R::ONE, "")?;
+        SceneError::check_range("xsph", desc.xsph, R::ZERO, R::ONE, "")?;
         check_count("substeps", desc.substeps, MAX_FLUID_SUBSTEPS)?;
-        check_range(
+        SceneError::check_range(
             "max_density_error",
             desc.max_density_error,
             R::from_ratio(1, 100_000),

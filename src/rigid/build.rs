@@ -133,12 +133,7 @@ fn check_settings<R: Real>(s: &SolverSettings<R>) -> Result<(), SceneError> {
         ("linear_sleep_speed", s.linear_sleep_speed),
         ("angular_sleep_speed", s.angular_sleep_speed),
     ] {
-        if value < R::ZERO || value > limit {
-            return Err(SceneError::new(
-                name,
-                format!("must be 0 to {MAX_MAGNITUDE} (got {value})"),
-            ));
-        }
+        SceneError::check_range(name, value, R::ZERO, limit, "")?;
     }
     Ok(())
 }
@@ -214,12 +209,7 @@ fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, SceneError> {
         ("linear_damping", body.linear_damping),
         ("angular_damping", body.angular_damping),
     ] {
-        if value < R::ZERO || value > limit {
-            return Err(SceneError::new(
-                name,
-                format!("must be 0 to {MAX_MAGNITUDE} (got {value})"),
-            ));
-        }
+        SceneError::check_range(name, value, R::ZERO, limit, "")?;
     }
     if body.material.restitution < R::ZERO || body.material.restitution > R::ONE {
         return Err(SceneError::new(

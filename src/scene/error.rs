@@ -2,6 +2,8 @@
 
 use core::fmt;
 
+use crate::math::Real;
+
 /// A scene that cannot be built. `field` is a path such as `particles.emitters[2].rate`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SceneError {
@@ -18,6 +20,29 @@ impl SceneError {
             field: field.into(),
             message: message.into(),
         }
+    }
+
+    /// An error about `field` unless `lo ≤ value ≤ hi`: "must be lo to hi unit (got value)",
+    /// `unit` left out when empty.
+    pub fn check_range<R: Real>(
+        field: impl Into<String>,
+        value: R,
+        lo: R,
+        hi: R,
+        unit: &str,
+    ) -> Result<(), Self> {
+        if lo <= value && value <= hi {
+            return Ok(());
+        }
+        let unit = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {unit}")
+        };
+        Err(Self::new(
+            field,
+            format!("must be {lo} to {hi}{unit} (got {value})"),
+        ))
     }
 
     /// The same error seen from one level up: `prefix.field`.

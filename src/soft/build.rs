@@ -99,12 +99,7 @@ impl<R: Real> SoftSystem<R> {
             ("radius", desc.radius),
             ("drag", desc.drag),
         ] {
-            if value < R::ZERO || value > limit {
-                return Err(SceneError::new(
-                    name,
-                    format!("must be 0 to {MAX_MAGNITUDE} (got {value})"),
-                ));
-            }
+            SceneError::check_range(name, value, R::ZERO, limit, "")?;
         }
         for (name, v) in [("velocity", desc.velocity), ("wind", desc.wind)] {
             if v.abs().max_component() > limit {
