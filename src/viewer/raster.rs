@@ -200,16 +200,16 @@ impl Painter<'_> {
             return;
         };
         let paint = self.paint(colour);
-        self.pixmap.fill_path(
-            &path,
-            &paint,
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
+        self.fill(&path, &paint);
         if !self.look.flat {
             self.outline(&path, shade(colour, 0.6));
         }
+    }
+
+    /// Fills `path` with `paint` (non-zero winding).
+    fn fill(&mut self, path: &Path, paint: &Paint<'_>) {
+        self.pixmap
+            .fill_path(path, paint, FillRule::Winding, Transform::identity(), None);
     }
 
     fn outline(&mut self, path: &Path, colour: [u8; 3]) {
@@ -255,13 +255,7 @@ impl Painter<'_> {
     fn circle(&mut self, x: f32, y: f32, radius: f32, colour: [u8; 3]) {
         if let Some(path) = PathBuilder::from_circle(x, y, radius.max(0.5)) {
             let paint = self.paint(colour);
-            self.pixmap.fill_path(
-                &path,
-                &paint,
-                FillRule::Winding,
-                Transform::identity(),
-                None,
-            );
+            self.fill(&path, &paint);
         }
     }
 
@@ -293,13 +287,7 @@ impl Painter<'_> {
                 paint.shader = shader;
             }
         }
-        self.pixmap.fill_path(
-            &path,
-            &paint,
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
+        self.fill(&path, &paint);
         if !self.look.flat {
             self.outline(&path, shade(colour, 0.5));
         }
