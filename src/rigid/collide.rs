@@ -57,6 +57,10 @@ impl<R: Real> RigidSystem<R> {
             }
         }
 
+        // The broadphase's pairs are in order; the planes' pairs join them here, so that
+        // the contacts below come out in key order (one run for the sort to find).
+        scratch.pairs.sort();
+
         let old = core::mem::take(&mut self.contacts);
         let bodies = &self.bodies;
         let mut contacts: Vec<Contact<R>> = old
@@ -95,7 +99,9 @@ impl<R: Real> RigidSystem<R> {
                 },
             );
         }
-        contacts.sort_unstable_by_key(|c| c.key);
+        // Two runs, each in key order (the contacts kept, then the new ones), with distinct
+        // keys: the stable sort merges them in one pass and leaves a single run untouched.
+        contacts.sort_by_key(|c| c.key);
         self.contacts = contacts;
     }
 

@@ -11,7 +11,7 @@
 //! and the effective mass along n is 1/k with
 //! k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × n))·(r_a × n) + (I_b⁻¹(r_b × n))·(r_b × n). The same holds
 //! along each tangent. The products r × n and I⁻¹(r × n) are computed once per step in
-//! [`ContactBlock::prepare_lane`], so an iteration costs a few dot products per point.
+//! [`ContactBlock::prepare_products`], so an iteration costs a few dot products per point.
 //!
 //! Constraints are stored [`LANES`] to a [`ContactBlock`], field by field (structure of
 //! arrays); a lane is one contact. The solver visits the lanes of a block in order and the
@@ -20,12 +20,13 @@
 use super::body::SolverBody;
 use super::lanes::{LANES, Lanes, Lanes3};
 use super::softness::Softness;
-use crate::math::{Real, Vec3};
+use crate::math::Real;
 use crate::rigid::contact::Contact;
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 
 /// What the solver keeps for one contact point of each lane during a step.
 #[derive(Clone, Copy, Debug)]
+#[cfg_attr(test, derive(PartialEq))]
 struct PointLanes<R: Real> {
     /// r_a × n and r_b × n, m.
     rn_a: Lanes3<R>,
@@ -75,11 +76,15 @@ impl<R: Real> PointLanes<R> {
 
 #[cfg(target_arch = "x86_64")]
 mod avx512;
+mod prepare;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use prepare::ContactArms;
+
 /// The constraints of up to [`LANES`] contacts for a step, one per lane.
 #[derive(Clone, Debug)]
+#[cfg_attr(test, derive(PartialEq))]
 pub(crate) struct ContactBlock<R: Real> {
     /// Lanes in use, from lane 0.
     len: usize,
@@ -117,11 +122,6 @@ pub(crate) struct SolvePass<R: Real> {
     pub inv_h: R,
     pub max_push: R,
     pub use_bias: bool,
-}
-
-/// 1/k, or 0 when k is not positive (two bodies of infinite mass).
-fn inverse_or_zero<R: Real>(k: R) -> R {
-    if k > R::ZERO { R::ONE / k } else { R::ZERO }
 }
 
 /// Two distinct bodies of the solver array, mutably. Index [`STATIC_BODY`] is never written
@@ -173,78 +173,6 @@ impl<R: Real> ContactBlock<R> {
     pub fn clear(&mut self, independent: bool) {
         self.len = 0;
         self.independent = independent;
-    }
-
-    /// Builds, in the next free lane, the constraint of `contact` between solver bodies
-    /// `a` and `b` whose centres of mass are at `centre_a`, `centre_b` (m): anchors,
-    /// effective masses, tangents, and the approach velocity of each point for
-    /// restitution. The block must not be full.
-    #[allow(clippy::too_many_arguments)]
-    pub fn prepare_lane(
-        &mut self,
-        contact: &Contact<R>,
-        index: u32,
-        (a, centre_a): (u32, Vec3<R>),
-        (b, centre_b): (u32, Vec3<R>),
-        bodies: &[SolverBody<R>],
-        friction: R,
-        restitution: R,
-    ) {
-        let l = self.len;
-        self.len += 1;
-        let ba = &bodies[a as usize];
-        let bb = &bodies[b as usize];
-        let n = contact.normal;
-        let t0 = n.any_orthonormal();
-        let tangents = [t0, n.cross(t0)];
-        let m_sum = ba.inv_mass + bb.inv_mass;
-        for (cp, p) in self.points.iter_mut().zip(contact.points()) {
-            let r_a = p.point - centre_a;
-            let r_b = p.point - centre_b;
-            let rn_a = r_a.cross(n);
-            let rn_b = r_b.cross(n);
-            let in_a = ba.inv_inertia * rn_a;
-            let in_b = bb.inv_inertia * rn_b;
-            let k = m_sum + in_a.dot(rn_a) + in_b.dot(rn_b);
-            for (j, &t) in tangents.iter().enumerate() {
-                let rt_a = r_a.cross(t);
-                let rt_b = r_b.cross(t);
-                let it_a = ba.inv_inertia * rt_a;
-                let it_b = bb.inv_inertia * rt_b;
-                let kt = m_sum + it_a.dot(rt_a) + it_b.dot(rt_b);
-                cp.rt_a[j].set(l, rt_a);
-                cp.rt_b[j].set(l, rt_b);
-                cp.it_a[j].set(l, it_a);
-                cp.it_b[j].set(l, it_b);
-                cp.tangent_mass[j][l] = inverse_or_zero(kt);
-                cp.tangent_impulse[j][l] = p.tangent_impulse[j];
-            }
-            let relative_velocity = (bb.v - ba.v).dot(n) + bb.w.dot(rn_b) - ba.w.dot(rn_a);
-            cp.rn_a.set(l, rn_a);
-            cp.rn_b.set(l, rn_b);
-            cp.in_a.set(l, in_a);
-            cp.in_b.set(l, in_b);
-            cp.base_separation[l] = p.separation;
-            cp.normal_mass[l] = inverse_or_zero(k);
-            cp.normal_impulse[l] = p.normal_impulse;
-            cp.max_normal_impulse[l] = R::ZERO;
-            cp.relative_velocity[l] = relative_velocity;
-        }
-        self.a[l] = a;
-        self.b[l] = b;
-        self.contact[l] = index;
-        self.normal.set(l, n);
-        for (j, &t) in tangents.iter().enumerate() {
-            self.tangents[j].set(l, t);
-            self.tangents_a[j].set(l, t * ba.inv_mass);
-            self.tangents_b[j].set(l, t * bb.inv_mass);
-        }
-        self.normal_a.set(l, n * ba.inv_mass);
-        self.normal_b.set(l, n * bb.inv_mass);
-        self.friction[l] = friction;
-        self.restitution[l] = restitution;
-        self.rigid_partner[l] = ba.inv_mass == R::ZERO || bb.inv_mass == R::ZERO;
-        self.count[l] = contact.count;
     }
 
     /// Applies the impulses carried from the last step, lane by lane: v_a −= P/m_a,

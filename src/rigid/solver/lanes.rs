@@ -10,7 +10,7 @@ pub(crate) const LANES: usize = 8;
 pub(crate) type Lanes<R> = [R; LANES];
 
 /// One vector per lane, stored as three arrays of components.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Lanes3<R: Real> {
     pub x: Lanes<R>,
     pub y: Lanes<R>,

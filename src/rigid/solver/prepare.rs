@@ -3,7 +3,7 @@
 
 use super::Solver;
 use super::body::STATIC_BODY;
-use super::contact_constraint::ContactBlock;
+use super::contact_constraint::{ContactArms, ContactBlock};
 use crate::math::Real;
 use crate::rigid::bodies::Bodies;
 use crate::rigid::contact::Contact;
@@ -40,6 +40,7 @@ impl<R: Real> Solver<R> {
         batching.finish();
 
         *block_count = 0;
+        let mut arms = ContactArms::ZERO;
         for (independent, batch) in batching.blocks() {
             if *block_count == blocks.len() {
                 blocks.push(ContactBlock::empty());
@@ -59,8 +60,10 @@ impl<R: Real> Solver<R> {
                     solver_bodies,
                     mix_friction(ma.friction, mb.friction),
                     mix_restitution(ma.restitution, mb.restitution),
+                    &mut arms,
                 );
             }
+            block.prepare_products(&arms, solver_bodies);
         }
     }
 }

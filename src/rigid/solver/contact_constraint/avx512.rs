@@ -46,6 +46,10 @@
 //! The friction clamp, which needs 1/√x, runs per lane in scalar code with the checked
 //! operators, in the few lanes where it applies.
 
+mod prepare;
+
+pub(super) use prepare::prepare;
+
 use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
@@ -399,6 +403,31 @@ impl Side {
     }
 }
 
+/// The lanes in use of `block`, and the first word of each lane's body A and body B in
+/// an array of `body_count` solver bodies; `None` if an index is out of bounds.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn lane_words(block: &ContactBlock<Fx>, body_count: usize) -> Option<(__mmask8, __m512i, __m512i)> {
+    let mut words_a = [0i64; LANES];
+    let mut words_b = [0i64; LANES];
+    for l in 0..block.len {
+        let (a, b) = (block.a[l] as usize, block.b[l] as usize);
+        if a >= body_count || b >= body_count {
+            return None;
+        }
+        words_a[l] = a as i64 * BODY_WORDS;
+        words_b[l] = b as i64 * BODY_WORDS;
+    }
+    // SAFETY: 64 readable bytes each.
+    let (words_a, words_b) = unsafe {
+        (
+            _mm512_loadu_si512(words_a.as_ptr().cast()),
+            _mm512_loadu_si512(words_b.as_ptr().cast()),
+        )
+    };
+    Some((((1u16 << block.len) - 1) as __mmask8, words_a, words_b))
+}
+
 /// Where the bodies of a block's lanes are.
 struct BodyLanes {
     /// The lanes in use.
@@ -416,25 +445,9 @@ impl BodyLanes {
     #[inline]
     #[target_feature(enable = "avx512f")]
     fn new(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> Option<Self> {
-        let mut words_a = [0i64; LANES];
-        let mut words_b = [0i64; LANES];
-        for l in 0..block.len {
-            let (a, b) = (block.a[l] as usize, block.b[l] as usize);
-            if a >= bodies.len() || b >= bodies.len() {
-                return None;
-            }
-            words_a[l] = a as i64 * BODY_WORDS;
-            words_b[l] = b as i64 * BODY_WORDS;
-        }
-        // SAFETY: 64 readable bytes each.
-        let (words_a, words_b) = unsafe {
-            (
-                _mm512_loadu_si512(words_a.as_ptr().cast()),
-                _mm512_loadu_si512(words_b.as_ptr().cast()),
-            )
-        };
+        let (active, words_a, words_b) = lane_words(block, bodies.len())?;
         Some(Self {
-            active: ((1u16 << block.len) - 1) as __mmask8,
+            active,
             words_a,
             words_b,
             base: bodies.as_mut_ptr().cast::<i64>(),

@@ -3,7 +3,7 @@
 //! kernels' bound), the bits and the saturation count are those of the lanes solved one
 //! after another.
 
-use super::{ContactBlock, SolvePass};
+use super::{ContactArms, ContactBlock, SolvePass};
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Mat3, Pcg32, Real, Vec3};
 use crate::rigid::contact::{Contact, ContactKey, ContactPoint};
@@ -56,7 +56,7 @@ fn bodies(rng: &mut Pcg32, count: usize, scale: f64) -> Vec<SolverBody<Fx>> {
 }
 
 /// A block of `lanes` contacts with no moving body twice (independent) or with bodies
-/// drawn at random (not independent), with impulses up to `impulse`.
+/// drawn at random (not independent), with impulses up to `impulse`, prepared.
 fn block(
     rng: &mut Pcg32,
     bodies: &[SolverBody<Fx>],
@@ -64,6 +64,22 @@ fn block(
     independent: bool,
     impulse: f64,
 ) -> ContactBlock<Fx> {
+    let (mut block, arms) = lanes_of(rng, bodies, lanes, independent, impulse, 1.0);
+    block.prepare_products(&arms, bodies);
+    block
+}
+
+/// The block of [`block`] before its products, with its anchors: points within 2·`reach`
+/// and centres within `reach` of the origin (m).
+fn lanes_of(
+    rng: &mut Pcg32,
+    bodies: &[SolverBody<Fx>],
+    lanes: usize,
+    independent: bool,
+    impulse: f64,
+    reach: f64,
+) -> (ContactBlock<Fx>, ContactArms<Fx>) {
+    let mut arms = ContactArms::ZERO;
     let moving = bodies.len() as u32 - 1;
     let mut order: Vec<u32> = (1..=moving).collect();
     for i in (1..order.len()).rev() {
@@ -87,7 +103,7 @@ fn block(
             let fresh = rng.below(3) == 0;
             let carried = if fresh { 0.0 } else { impulse };
             *p = ContactPoint {
-                point: vector(rng, 2.0),
+                point: vector(rng, 2.0 * reach),
                 separation: value(rng, 0.05),
                 id: 0,
                 normal_impulse: rng.range(Fx::ZERO, Fx::from_f64(carried)),
@@ -108,14 +124,15 @@ fn block(
         block.prepare_lane(
             &contact,
             l as u32,
-            (a, vector(rng, 1.0)),
-            (b, vector(rng, 1.0)),
+            (a, vector(rng, reach)),
+            (b, vector(rng, reach)),
             bodies,
             rng.range(Fx::ZERO, Fx::ONE),
             rng.range(Fx::ZERO, Fx::ONE),
+            &mut arms,
         );
     }
-    block
+    (block, arms)
 }
 
 fn pass(use_bias: bool) -> SolvePass<Fx> {
@@ -239,5 +256,84 @@ fn blocks_near_the_kernel_bound_match_the_lanes() {
 fn blocks_that_saturate_match_the_lanes() {
     // Values near the ends of the range: the kernel refuses, the lanes saturate and count.
     let runs = compare(3, 100, 1.0e9, 1.0e9);
+    assert_eq!(runs, 0);
+}
+
+/// Runs `trials` random blocks, velocities up to `scale` and anchors within `reach`, through
+/// both forms of the preparation products and returns how many blocks the kernel took.
+fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usize {
+    let mut rng = Pcg32::new(seed, 11);
+    let mut kernel_runs = 0;
+    for trial in 0..trials {
+        let lanes = 1 + trial % LANES;
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scale);
+        let (block, arms) = lanes_of(&mut rng, &bodies, lanes, trial % 7 != 6, 1.0, reach);
+        let (mut fast, mut slow) = (block.clone(), block.clone());
+        let (took, fast_saturations) =
+            count_saturations(|| prepare_kernel(&mut fast, &arms, &bodies));
+        if took {
+            kernel_runs += 1;
+            assert_eq!(fast_saturations, 0, "trial {trial}");
+        } else {
+            fast = block.clone();
+        }
+        let ((), slow_saturations) =
+            count_saturations(|| slow.prepare_products_lanes(&arms, &bodies));
+        if !took {
+            fast.prepare_products_lanes(&arms, &bodies);
+        }
+        assert_eq!(fast, slow, "trial {trial}");
+        if took {
+            assert_eq!(
+                slow_saturations, 0,
+                "trial {trial}: the kernel took a block that saturates"
+            );
+        }
+        // The full stage, whichever path it takes, gives the lanes' effective masses.
+        let (mut whole, mut by_lanes) = (block.clone(), block.clone());
+        whole.prepare_products(&arms, &bodies);
+        by_lanes.prepare_products_lanes(&arms, &bodies);
+        by_lanes.invert_effective_masses();
+        assert_eq!(whole, by_lanes, "trial {trial}");
+    }
+    kernel_runs
+}
+
+/// The preparation kernel on `block`; whether it took it.
+#[cfg(target_arch = "x86_64")]
+fn prepare_kernel(
+    block: &mut ContactBlock<Fx>,
+    arms: &ContactArms<Fx>,
+    bodies: &[SolverBody<Fx>],
+) -> bool {
+    super::avx512::prepare(block, arms, bodies)
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn prepare_kernel(_: &mut ContactBlock<Fx>, _: &ContactArms<Fx>, _: &[SolverBody<Fx>]) -> bool {
+    false
+}
+
+#[test]
+fn preparation_at_everyday_magnitudes_matches_the_lanes() {
+    let runs = compare_preparation(4, 400, 5.0, 2.0);
+    if kernels_present() {
+        assert_eq!(runs, 400);
+    }
+}
+
+#[test]
+fn preparation_near_the_kernel_bound_matches_the_lanes() {
+    // Inverse inertias up to 400 and anchors up to 100 m: I⁻¹(r × n) reaches past 2¹⁴ in
+    // some blocks and not in others.
+    let runs = compare_preparation(5, 400, 100.0, 40.0);
+    if kernels_present() {
+        assert!(runs > 0 && runs < 400, "the kernel ran {runs} times");
+    }
+}
+
+#[test]
+fn preparation_that_saturates_matches_the_lanes() {
+    let runs = compare_preparation(6, 100, 1.0e9, 1.0e8);
     assert_eq!(runs, 0);
 }
