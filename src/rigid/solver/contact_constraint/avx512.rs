@@ -1,5 +1,5 @@
-//! The solve pass of an independent block of I32F32 constraints in AVX-512: the eight lanes
-//! side by side, one `i64` lane per constraint, with the bits of
+//! The solve pass of an independent block of I32F32 constraints in AVX-512 (F and DQ):
+//! the eight lanes side by side, one `i64` lane per constraint, with the bits of
 //! [`ContactBlock::solve_lanes`].
 //!
 //! # Why side by side gives the same bits
@@ -29,18 +29,20 @@
 //!
 //! # Products
 //!
-//! `_mm512_mul_epi32` multiplies the signed low 32 bits of each lane into 64. With
+//! `_mm512_mul_epi32` multiplies the signed low 32 bits of each lane into 64, and
+//! `_mm512_mullo_epi64` (AVX-512DQ) keeps the low 64 bits of a 64 × 64 product. With
 //! a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ (|a_h| ≤ 2¹⁴ for a checked a) and a_l ∈
 //! [−2³¹, 2³¹) the signed low half of a, and b likewise,
 //!
 //! ```text
-//! ⌊(a·b + 2³¹)/2³²⌋ = a_h·b_h·2³² + a_h·b_l + a_l·b_h + ⌊(a_l·b_l + 2³¹)/2³²⌋
+//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l + ⌊(a_l·b_l + 2³¹)/2³²⌋
 //! ```
 //!
-//! since the first three terms of a·b are multiples of 2³²; this is the checked `*` (to
-//! nearest, ties toward +∞). For the fused dot product Σ aᵢbᵢ rounded once, each a_l·b_l
-//! is split into q·2³² + r with 0 ≤ r < 2³², so that
-//! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (a_h·b_h·2³² + a_h·b_l + a_l·b_h + q) + ⌊(Σ r + 2³¹)/2³²⌋, and
+//! since a·b = a·b_h·2³² + a_h·b_l·2³² + a_l·b_l; this is the checked `*` (to nearest, ties
+//! toward +∞). The term a·b_h is below 2⁶⁰, so its low 64 bits are all of it. For the
+//! fused dot product Σ aᵢbᵢ rounded once, each a_l·b_l is split into q·2³² + r with
+//! 0 ≤ r < 2³², so that
+//! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
 //! Σ r + 2³¹ < 2³⁴ cannot overflow.
 //!
 //! The friction clamp, which needs 1/√x, runs per lane in scalar code with the checked
@@ -55,7 +57,7 @@ use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
     _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
     _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64, _mm512_max_epi64, _mm512_mul_epi32,
-    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_srai_epi64,
+    _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64,
     _mm512_storeu_si512, _mm512_sub_epi64,
 };
 use core::mem::{offset_of, size_of};
@@ -81,14 +83,21 @@ const _: () = {
     assert!(LANES == 8);
 };
 
+/// Whether this processor runs the kernels: AVX-512F and AVX-512DQ (every processor with
+/// AVX-512 for servers and desktops has both).
+pub(super) fn has_kernels() -> bool {
+    std::arch::is_x86_feature_detected!("avx512f")
+        && std::arch::is_x86_feature_detected!("avx512dq")
+}
+
 /// Solves `block` with the kernel when `R` is I32F32, the block is independent and the
-/// processor has AVX-512F; returns whether it did (if not, nothing was written).
+/// processor has AVX-512F and DQ; returns whether it did (if not, nothing was written).
 pub(super) fn solve<R: Real>(
     block: &mut ContactBlock<R>,
     bodies: &mut [SolverBody<R>],
     pass: &SolvePass<R>,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !has_kernels() {
         return false;
     }
     let (Some(block), Some(pass)) = (
@@ -99,14 +108,14 @@ pub(super) fn solve<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
-    // SAFETY: AVX-512F was detected on this processor just above.
+    // SAFETY: AVX-512F and DQ were detected on this processor just above.
     unsafe { solve_block(block, bodies, pass) }
 }
 
 /// Warm starting of `block` with the kernel, under the same conditions as [`solve`];
 /// returns whether it ran (if not, nothing was written).
 pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverBody<R>]) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !has_kernels() {
         return false;
     }
     let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
@@ -114,7 +123,7 @@ pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverB
     };
     // SAFETY: `R` is `Fx` (the downcast succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
-    // SAFETY: AVX-512F was detected on this processor just above.
+    // SAFETY: AVX-512F and DQ were detected on this processor just above.
     unsafe { warm_start_block(block, bodies) }
 }
 
@@ -124,8 +133,8 @@ pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverB
 /// value leaves the checked bound in a lane in use.
 ///
 /// # Safety
-/// The processor must have AVX-512F.
-#[target_feature(enable = "avx512f")]
+/// The processor must have AVX-512F and AVX-512DQ.
+#[target_feature(enable = "avx512f,avx512dq")]
 unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> bool {
     let Some(lanes) = BodyLanes::new(block, bodies) else {
         return false;
@@ -196,7 +205,7 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
 
 /// The raw bits of a lane array.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn load(lanes: &Lanes<Fx>) -> __m512i {
     // SAFETY: eight `Fx`, each one `i64`: 64 readable bytes.
     unsafe { _mm512_loadu_si512(lanes.as_ptr().cast()) }
@@ -204,80 +213,79 @@ fn load(lanes: &Lanes<Fx>) -> __m512i {
 
 /// Writes raw bits to a lane array.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
     // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
     unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) }
 }
 
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn load3(lanes: &Lanes3<Fx>) -> [__m512i; 3] {
     [load(&lanes.x), load(&lanes.y), load(&lanes.z)]
 }
 
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn add(a: __m512i, b: __m512i) -> __m512i {
     _mm512_add_epi64(a, b)
 }
 
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn sub(a: __m512i, b: __m512i) -> __m512i {
     _mm512_sub_epi64(a, b)
 }
 
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn add3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     [add(a[0], b[0]), add(a[1], b[1]), add(a[2], b[2])]
 }
 
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
 }
 
 /// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn high(a: __m512i) -> __m512i {
     _mm512_srai_epi64::<32>(add(a, _mm512_set1_epi64(1 << 31)))
 }
 
-/// The checked `*` of checked values: ⌊(a·b + 2³¹)/2³²⌋.
+/// The checked `*` of checked values: ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l +
+/// ⌊(a_l·b_l + 2³¹)/2³²⌋ (module documentation).
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn mul(a: __m512i, b: __m512i) -> __m512i {
     let (ah, bh) = (high(a), high(b));
-    let hh = _mm512_slli_epi64::<32>(_mm512_mul_epi32(ah, bh));
-    let cross = add(_mm512_mul_epi32(ah, b), _mm512_mul_epi32(a, bh));
+    let upper = add(_mm512_mullo_epi64(a, bh), _mm512_mul_epi32(ah, b));
     let low = _mm512_srai_epi64::<32>(add(_mm512_mul_epi32(a, b), _mm512_set1_epi64(1 << 31)));
-    add(add(hh, cross), low)
+    add(upper, low)
 }
 
 /// Each component times the same factor.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn mul3(a: [__m512i; 3], b: __m512i) -> [__m512i; 3] {
     [mul(a[0], b), mul(a[1], b), mul(a[2], b)]
 }
 
 /// The fused dot product of checked values: the exact Σ aᵢbᵢ rounded once.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
     let mask = _mm512_set1_epi64(0xffff_ffff);
     let mut whole = _mm512_setzero_si512();
     let mut remainders = _mm512_setzero_si512();
     for i in 0..3 {
         let (ah, bh) = (high(a[i]), high(b[i]));
-        let hh = _mm512_slli_epi64::<32>(_mm512_mul_epi32(ah, bh));
-        let cross = add(_mm512_mul_epi32(ah, b[i]), _mm512_mul_epi32(a[i], bh));
+        let upper = add(_mm512_mullo_epi64(a[i], bh), _mm512_mul_epi32(ah, b[i]));
         let ll = _mm512_mul_epi32(a[i], b[i]);
-        whole = add(whole, add(add(hh, cross), _mm512_srai_epi64::<32>(ll)));
+        whole = add(whole, add(upper, _mm512_srai_epi64::<32>(ll)));
         remainders = add(remainders, _mm512_and_si512(ll, mask));
     }
     add(whole, high(remainders))
@@ -285,7 +293,7 @@ fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
 
 /// The lanes where x lies outside [−2⁴⁶, 2⁴⁶).
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn out_of_bound(x: __m512i) -> __mmask8 {
     _mm512_cmpge_epu64_mask(
         add(x, _mm512_set1_epi64(1 << 46)),
@@ -294,21 +302,21 @@ fn out_of_bound(x: __m512i) -> __mmask8 {
 }
 
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
     out_of_bound(x[0]) | out_of_bound(x[1]) | out_of_bound(x[2])
 }
 
 /// `on` where the mask is set, `off` elsewhere.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
     _mm512_mask_blend_epi64(mask, off, on)
 }
 
 /// The same value in every lane.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn splat(x: Fx) -> __m512i {
     _mm512_set1_epi64(x.to_bits())
 }
@@ -329,7 +337,7 @@ impl Side {
     /// # Safety
     /// Every active lane's index must be that of a body of `bodies`.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512dq")]
     unsafe fn gather(
         bodies: *const i64,
         words: __m512i,
@@ -364,7 +372,7 @@ impl Side {
     /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. Returns the lanes where a new
     /// velocity left the checked bound.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512dq")]
     fn exchange(
         (a, b): (&mut Side, &mut Side),
         [dv_a, dw_a, dv_b, dw_b]: [[__m512i; 3]; 4],
@@ -381,7 +389,7 @@ impl Side {
     /// # Safety
     /// As for [`Side::gather`], with `bodies` writable.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512dq")]
     unsafe fn scatter_velocities(&self, bodies: *mut i64, words: __m512i, active: __mmask8) {
         for (offset, value) in [(V, self.v), (W, self.w)] {
             for (k, component) in value.into_iter().enumerate() {
@@ -394,7 +402,7 @@ impl Side {
 
     /// The lanes where a value lies outside the checked bound.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512dq")]
     fn out_of_bound(&self) -> __mmask8 {
         out_of_bound3(self.v)
             | out_of_bound3(self.w)
@@ -406,7 +414,7 @@ impl Side {
 /// The lanes in use of `block`, and the first word of each lane's body A and body B in
 /// an array of `body_count` solver bodies; `None` if an index is out of bounds.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn lane_words(block: &ContactBlock<Fx>, body_count: usize) -> Option<(__mmask8, __m512i, __m512i)> {
     let mut words_a = [0i64; LANES];
     let mut words_b = [0i64; LANES];
@@ -443,7 +451,7 @@ impl BodyLanes {
     /// The body words of `block`'s lanes in `bodies`, or `None` if an index is out of
     /// bounds.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512dq")]
     fn new(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> Option<Self> {
         let (active, words_a, words_b) = lane_words(block, bodies.len())?;
         Some(Self {
@@ -459,7 +467,7 @@ impl BodyLanes {
     /// # Safety
     /// The bodies must still be those `new` was given, alive and not otherwise borrowed.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512dq")]
     unsafe fn gather(&self, with_motion: bool) -> (Side, Side) {
         // SAFETY: every active lane's index was checked in `new`.
         unsafe {
@@ -475,7 +483,7 @@ impl BodyLanes {
     /// # Safety
     /// As for [`BodyLanes::gather`].
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512dq")]
     unsafe fn scatter(&self, a: &Side, b: &Side) {
         // SAFETY: every active lane's index was checked in `new`.
         unsafe {
@@ -489,8 +497,8 @@ impl BodyLanes {
 /// bound in a lane in use.
 ///
 /// # Safety
-/// The processor must have AVX-512F.
-#[target_feature(enable = "avx512f")]
+/// The processor must have AVX-512F and AVX-512DQ.
+#[target_feature(enable = "avx512f,avx512dq")]
 unsafe fn solve_block(
     block: &mut ContactBlock<Fx>,
     bodies: &mut [SolverBody<Fx>],
@@ -533,21 +541,7 @@ unsafe fn solve_block(
     let normal = load3(&block.normal);
     let normal_a = load3(&block.normal_a);
     let normal_b = load3(&block.normal_b);
-    let tangents = [load3(&block.tangents[0]), load3(&block.tangents[1])];
-    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
-    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
-    let friction = load(&block.friction);
-    bad |= (out_of_bound3(normal)
-        | out_of_bound3(normal_a)
-        | out_of_bound3(normal_b)
-        | out_of_bound3(tangents[0])
-        | out_of_bound3(tangents[1])
-        | out_of_bound3(tangents_a[0])
-        | out_of_bound3(tangents_a[1])
-        | out_of_bound3(tangents_b[0])
-        | out_of_bound3(tangents_b[1])
-        | out_of_bound(friction))
-        & active;
+    bad |= (out_of_bound3(normal) | out_of_bound3(normal_a) | out_of_bound3(normal_b)) & active;
     let counts = block.count.map(i64::from);
     // SAFETY: 64 readable bytes.
     let counts = unsafe { _mm512_loadu_si512(counts.as_ptr().cast()) };
@@ -558,30 +552,36 @@ unsafe fn solve_block(
     let moved = sub3(side_b.dp, side_a.dp);
     bad |= out_of_bound3(moved) & active;
     let moved_apart = dot3(moved, normal);
+    // The separations first, so that the motions are no longer needed in the loop below.
+    let mut separations = [zero; 4];
+    for (k, cp) in block.points.iter().enumerate() {
+        let in_use = points_in_use(k);
+        let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
+        let base_separation = load(&cp.base_separation);
+        bad |= (out_of_bound3(rn_a) | out_of_bound3(rn_b) | out_of_bound(base_separation)) & in_use;
+        let s = sub(
+            add(add(base_separation, moved_apart), dot3(side_b.dtheta, rn_b)),
+            dot3(side_a.dtheta, rn_a),
+        );
+        bad |= out_of_bound(s) & in_use;
+        separations[k] = s;
+    }
     let mut normal_impulses = [zero; 4];
     let mut max_normal_impulses = [zero; 4];
     for (k, cp) in block.points.iter().enumerate() {
         let in_use = points_in_use(k);
         let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
-        let base_separation = load(&cp.base_separation);
         let normal_mass = load(&cp.normal_mass);
         let old = load(&cp.normal_impulse);
         let old_max = load(&cp.max_normal_impulse);
-        bad |= (out_of_bound3(rn_a)
-            | out_of_bound3(rn_b)
-            | out_of_bound3(in_a)
+        bad |= (out_of_bound3(in_a)
             | out_of_bound3(in_b)
-            | out_of_bound(base_separation)
             | out_of_bound(normal_mass)
             | out_of_bound(old)
             | out_of_bound(old_max))
             & in_use;
-        let s = sub(
-            add(add(base_separation, moved_apart), dot3(side_b.dtheta, rn_b)),
-            dot3(side_a.dtheta, rn_a),
-        );
-        bad |= out_of_bound(s) & in_use;
+        let s = separations[k];
         let apart = _mm512_cmpgt_epi64_mask(s, zero);
         let speculative_bias = mul(s, inv_h);
         let (bias, scale_mass, scale_impulse) = if pass.use_bias {
@@ -624,6 +624,18 @@ unsafe fn solve_block(
     }
 
     // Friction.
+    let tangents = [load3(&block.tangents[0]), load3(&block.tangents[1])];
+    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
+    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
+    let friction = load(&block.friction);
+    bad |= (out_of_bound3(tangents[0])
+        | out_of_bound3(tangents[1])
+        | out_of_bound3(tangents_a[0])
+        | out_of_bound3(tangents_a[1])
+        | out_of_bound3(tangents_b[0])
+        | out_of_bound3(tangents_b[1])
+        | out_of_bound(friction))
+        & active;
     let mut tangent_impulses = [[zero; 2]; 4];
     for (k, cp) in block.points.iter().enumerate() {
         let in_use = points_in_use(k);
@@ -713,7 +725,7 @@ unsafe fn solve_block(
 
 /// The tangent impulses of the `outside` lanes scaled back onto the cone's edge, λ ←
 /// λ · (limit / |λ|), with the checked operators as in the lane-by-lane solve.
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn clamp_to_cone(
     outside: __mmask8,
     new: [__m512i; 2],

@@ -221,7 +221,7 @@ fn kernel_takes(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -
 /// Whether this processor runs the kernels.
 fn kernels_present() -> bool {
     #[cfg(target_arch = "x86_64")]
-    return std::arch::is_x86_feature_detected!("avx512f");
+    return super::avx512::has_kernels();
     #[cfg(not(target_arch = "x86_64"))]
     false
 }

@@ -27,7 +27,8 @@ use core::arch::x86_64::{
 use core::mem::{offset_of, size_of};
 
 use super::{
-    BODY_WORDS, V, W, add, lane_words, load3, mul, mul3, out_of_bound, out_of_bound3, sub, sub3,
+    BODY_WORDS, V, W, add, has_kernels, lane_words, load3, mul, mul3, out_of_bound, out_of_bound3,
+    sub, sub3,
 };
 use crate::math::{Fx, Mat3, Real, Vec3};
 use crate::rigid::solver::body::SolverBody;
@@ -47,13 +48,13 @@ const _: () = {
 };
 
 /// Computes the products of `block` with the kernel when `R` is I32F32 and the processor
-/// has AVX-512F; returns whether it did (if not, the caller must compute them all).
+/// has AVX-512F and DQ; returns whether it did (if not, the caller must compute them all).
 pub(in crate::rigid::solver::contact_constraint) fn prepare<R: Real>(
     block: &mut ContactBlock<R>,
     arms: &ContactArms<R>,
     bodies: &[SolverBody<R>],
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !has_kernels() {
         return false;
     }
     let (Some(block), Some(arms)) = (
@@ -64,15 +65,15 @@ pub(in crate::rigid::solver::contact_constraint) fn prepare<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &*(core::ptr::from_ref(bodies) as *const [SolverBody<Fx>]) };
-    // SAFETY: AVX-512F was detected on this processor just above.
+    // SAFETY: AVX-512F and DQ were detected on this processor just above.
     unsafe { prepare_block(block, arms, bodies) }
 }
 
 /// The kernel. Returns false when a value leaves the checked bound in a point in use.
 ///
 /// # Safety
-/// The processor must have AVX-512F.
-#[target_feature(enable = "avx512f")]
+/// The processor must have AVX-512F and AVX-512DQ.
+#[target_feature(enable = "avx512f,avx512dq")]
 unsafe fn prepare_block(
     block: &mut ContactBlock<Fx>,
     arms: &ContactArms<Fx>,
@@ -194,7 +195,7 @@ unsafe fn prepare_block(
 
 /// a × b with each product rounded on its own, as [`Vec3::cross`].
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     [
         sub(mul(a[1], b[2]), mul(a[2], b[1])),
@@ -205,14 +206,14 @@ fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
 
 /// a·b with each product rounded on its own, as [`Vec3::dot`].
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn dot(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
     add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2]))
 }
 
 /// M v for M given by columns, as `Mat3 * Vec3`: row i is Σⱼ Mᵢⱼvⱼ.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn mat_vec(columns: [[__m512i; 3]; 3], v: [__m512i; 3]) -> [__m512i; 3] {
     let row = |i: usize| {
         add(
@@ -225,21 +226,21 @@ fn mat_vec(columns: [[__m512i; 3]; 3], v: [__m512i; 3]) -> [__m512i; 3] {
 
 /// The lanes where an element of the matrix lies outside the checked bound.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn out_of_bound_matrix(columns: [[__m512i; 3]; 3]) -> __mmask8 {
     out_of_bound3(columns[0]) | out_of_bound3(columns[1]) | out_of_bound3(columns[2])
 }
 
 /// Writes the lanes of `mask` to a lane array; the others keep their values.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn store(lanes: &mut Lanes<Fx>, mask: __mmask8, value: __m512i) {
     // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
     unsafe { _mm512_mask_storeu_epi64(lanes.as_mut_ptr().cast(), mask, value) }
 }
 
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512dq")]
 fn store3(lanes: &mut Lanes3<Fx>, mask: __mmask8, value: [__m512i; 3]) {
     store(&mut lanes.x, mask, value[0]);
     store(&mut lanes.y, mask, value[1]);
