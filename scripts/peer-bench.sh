@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# fixstep beside Rapier 0.36 on identical rigid-body scenes, in one run per Rapier mode
+# (bench/peers, a package outside the fixstep workspace: the test command never builds
+# Rapier). Builds the comparison twice, with Rapier's default mode and with its
+# enhanced-determinism mode, and prints one table for each: per scene and engine the
+# median ms per step over ROUNDS interleaved runs and the ratio to fixstep I32F32.
+#   ./scripts/peer-bench.sh [ROUNDS] [SCENE ...]     (default 5 rounds, every scene)
+# The first build downloads and compiles Rapier (a few minutes on two cores).
+set -euo pipefail
+cd "$(dirname "$0")/../bench/peers"
+
+target=${CARGO_TARGET_DIR:-target}
+cargo build --release --locked --target-dir "$target/default"
+cargo build --release --locked --target-dir "$target/enhanced-determinism" \
+  --features enhanced-determinism
+
+echo "# Rapier default"
+"$target/default/release/fixstep-peers" "$@"
+echo
+echo "# Rapier enhanced-determinism"
+"$target/enhanced-determinism/release/fixstep-peers" "$@"
