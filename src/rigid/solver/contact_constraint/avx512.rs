@@ -556,6 +556,9 @@ unsafe fn solve_block(
     let mut separations = [zero; 4];
     for (k, cp) in block.points.iter().enumerate() {
         let in_use = points_in_use(k);
+        if in_use == 0 {
+            continue;
+        }
         let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
         let base_separation = load(&cp.base_separation);
         bad |= (out_of_bound3(rn_a) | out_of_bound3(rn_b) | out_of_bound(base_separation)) & in_use;
@@ -570,6 +573,10 @@ unsafe fn solve_block(
     let mut max_normal_impulses = [zero; 4];
     for (k, cp) in block.points.iter().enumerate() {
         let in_use = points_in_use(k);
+        if in_use == 0 {
+            // No lane has this point (nor the next ones): nothing to solve or store.
+            continue;
+        }
         let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
         let normal_mass = load(&cp.normal_mass);
@@ -713,6 +720,9 @@ unsafe fn solve_block(
     }
 
     for (k, cp) in block.points.iter_mut().enumerate() {
+        if points_in_use(k) == 0 {
+            continue;
+        }
         store(&mut cp.normal_impulse, normal_impulses[k]);
         store(&mut cp.max_normal_impulse, max_normal_impulses[k]);
         store(&mut cp.tangent_impulse[0], tangent_impulses[k][0]);
