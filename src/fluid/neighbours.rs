@@ -24,6 +24,18 @@ pub struct NeighbourLists<R: Real> {
 }
 
 impl<R: Real> NeighbourLists<R> {
+    /// The number of particles listed (rows).
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.start.len().saturating_sub(1)
+    }
+
+    /// Whether no particle is listed.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
     /// The entries of particle `i`: `start[i]..start[i + 1]`.
     #[inline(always)]
     pub fn range(&self, i: usize) -> core::ops::Range<usize> {
