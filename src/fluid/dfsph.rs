@@ -69,12 +69,12 @@ impl<R: Real> FluidSystem<R> {
         for i in 0..self.positions.len() {
             let mut sum = Vec3::ZERO;
             let mut squares = R::ZERO;
-            for &g in &s.fluid.gradient[s.fluid.range(i)] {
+            for g in s.fluid.range(i).map(|e| s.fluid.gradient(e)) {
                 sum += g;
                 squares += g.length_squared();
             }
             let mut wall = Vec3::ZERO;
-            for &g in &s.walls.gradient[s.walls.range(i)] {
+            for g in s.walls.range(i).map(|e| s.walls.gradient(e)) {
                 wall += g;
             }
             s.wall_gradient.push(wall);

@@ -19,8 +19,9 @@ pub struct NeighbourLists<R: Real> {
     pub index: Vec<u32>,
     /// V₀W of each pair (dimensionless).
     pub value: Vec<R>,
-    /// V₀∇ᵢW of each pair, 1/m.
-    pub gradient: Vec<Vec3<R>>,
+    /// V₀∇ᵢW of each pair, 1/m, by component (x, y, z): structure of arrays, which the
+    /// vector kernels of [`row_sums`](super::row_sums) load as it is.
+    pub gradients: [Vec<R>; 3],
 }
 
 impl<R: Real> NeighbourLists<R> {
@@ -42,6 +43,13 @@ impl<R: Real> NeighbourLists<R> {
         self.start[i] as usize..self.start[i + 1] as usize
     }
 
+    /// V₀∇ᵢW of entry `e`, 1/m.
+    #[inline(always)]
+    pub fn gradient(&self, e: usize) -> Vec3<R> {
+        let [x, y, z] = &self.gradients;
+        Vec3::new(x[e], y[e], z[e])
+    }
+
     /// Finds, for each of `queries`, every point of `points` (sorted into `grid`) closer
     /// than the kernel support, except the query itself when `skip_self` (the queries are
     /// the points).
@@ -56,7 +64,9 @@ impl<R: Real> NeighbourLists<R> {
         self.start.clear();
         self.index.clear();
         self.value.clear();
-        self.gradient.clear();
+        for g in &mut self.gradients {
+            g.clear();
+        }
         self.start.push(0);
         for (i, &xi) in queries.iter().enumerate() {
             grid.for_each_within(xi, kernel.inv_support, |candidates| {
@@ -67,7 +77,9 @@ impl<R: Real> NeighbourLists<R> {
                     if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
                         self.index.push(j);
                         self.value.push(value);
-                        self.gradient.push(gradient);
+                        self.gradients[0].push(gradient.x);
+                        self.gradients[1].push(gradient.y);
+                        self.gradients[2].push(gradient.z);
                     }
                 }
             });

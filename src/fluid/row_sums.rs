@@ -54,7 +54,7 @@ pub(crate) fn density_rates_scalar<R: Real>(
         let mut rate = R::ZERO;
         for e in lists.range(i) {
             let j = lists.index[e] as usize;
-            rate += (vi - velocities[j]).dot(lists.gradient[e]);
+            rate += (vi - velocities[j]).dot(lists.gradient(e));
         }
         out.push(rate);
     }
@@ -85,7 +85,7 @@ pub(crate) fn pressure_pushes_scalar<R: Real>(
         let mut push = Vec3::ZERO;
         for e in lists.range(i) {
             let j = lists.index[e] as usize;
-            push += lists.gradient[e] * (ki + stiffness[j]);
+            push += lists.gradient(e) * (ki + stiffness[j]);
         }
         out.push(push);
     }

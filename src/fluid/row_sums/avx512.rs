@@ -32,8 +32,8 @@ use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cvtepu32_epi64,
     _mm512_mask_cmplt_epu64_mask, _mm512_mask_i64gather_epi64, _mm512_maskz_loadu_epi32,
-    _mm512_mul_epi32, _mm512_or_si512, _mm512_reduce_add_epi64, _mm512_reduce_or_epi64,
-    _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
+    _mm512_maskz_loadu_epi64, _mm512_mul_epi32, _mm512_or_si512, _mm512_reduce_add_epi64,
+    _mm512_reduce_or_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
     _mm512_srai_epi64, _mm512_sub_epi64, _mm512_xor_si512,
 };
 use core::mem::size_of;
@@ -147,7 +147,7 @@ fn mul(a: __m512i, b: __m512i) -> __m512i {
 ///
 /// # Safety
 /// `first + count` must not exceed the number of entries of `lists.index` and
-/// `lists.gradient`.
+/// `lists.gradients`.
 #[inline]
 #[target_feature(enable = "avx512f")]
 unsafe fn load_entries(
@@ -165,16 +165,11 @@ unsafe fn load_entries(
     if _mm512_mask_cmplt_epu64_mask(mask, index, points) != mask {
         return None;
     }
-    let zero = _mm512_setzero_si512();
-    let words = _mm512_set_epi64(21, 18, 15, 12, 9, 6, 3, 0);
-    // SAFETY: lane l < count reads the words of entry first + l, which exists.
-    let gradient = unsafe {
-        let base = lists.gradient.as_ptr().add(first).cast::<i64>();
-        [0, 1, 2].map(|c| {
-            let at = _mm512_add_epi64(words, _mm512_set1_epi64(c));
-            _mm512_mask_i64gather_epi64::<8>(zero, mask, at, base)
-        })
-    };
+    // SAFETY: the masked loads read only the `count` entries from `first`, which exist.
+    let gradient = lists
+        .gradients
+        .each_ref()
+        .map(|g| unsafe { _mm512_maskz_loadu_epi64(mask, g.as_ptr().add(first).cast()) });
     Some((mask, index, gradient))
 }
 
@@ -193,7 +188,10 @@ unsafe fn density_rates_kernel(
     let zero = _mm512_setzero_si512();
     let base = velocities.as_ptr().cast::<i64>();
     let points = _mm512_set1_epi64(velocities.len() as i64);
-    let entries = lists.index.len().min(lists.gradient.len());
+    let entries = lists
+        .gradients
+        .iter()
+        .fold(lists.index.len(), |n, g| n.min(g.len()));
     let mut velocity_bits = 0;
     for v in velocities {
         velocity_bits |=
@@ -250,7 +248,10 @@ unsafe fn pressure_pushes_kernel(
     let zero = _mm512_setzero_si512();
     let base = stiffness.as_ptr().cast::<i64>();
     let points = _mm512_set1_epi64(stiffness.len() as i64);
-    let entries = lists.index.len().min(lists.gradient.len());
+    let entries = lists
+        .gradients
+        .iter()
+        .fold(lists.index.len(), |n, g| n.min(g.len()));
     let stiffness_bits = stiffness
         .iter()
         .fold(0, |bits, k| bits | magnitude_of(k.to_bits()));

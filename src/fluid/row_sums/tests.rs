@@ -54,7 +54,10 @@ fn lists(
         for _ in 0..rng.below(longest + 1) {
             lists.index.push(rng.below(n as u32));
             lists.value.push(Fx::from_bits(0));
-            lists.gradient.push(vector(rng, gradient_bits, extremes));
+            let g = vector(rng, gradient_bits, extremes);
+            for (list, c) in lists.gradients.iter_mut().zip([g.x, g.y, g.z]) {
+                list.push(c);
+            }
         }
         lists.start.push(lists.index.len() as u32);
     }
