@@ -69,8 +69,21 @@ pub(super) fn density_rates<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let velocities = unsafe { &*(core::ptr::from_ref(velocities) as *const [Vec3<Fx>]) };
+    let velocity_bits = bit_length(velocities.iter().fold(0, |bits, v| {
+        bits | magnitude_of(v.x.to_bits())
+            | magnitude_of(v.y.to_bits())
+            | magnitude_of(v.z.to_bits())
+    }));
+    // |vᵢ − vⱼ| < 2^(B + 1).
+    let difference_bits = velocity_bits + 1;
     // SAFETY: AVX-512F was detected just above.
-    unsafe { density_rates_kernel(lists, velocities, out) }
+    unsafe {
+        if difference_bits <= 31 {
+            density_rates_kernel::<true>(lists, velocities, difference_bits, out)
+        } else {
+            density_rates_kernel::<false>(lists, velocities, difference_bits, out)
+        }
+    }
 }
 
 /// [`pressure_pushes`](super::pressure_pushes) with the kernel, under the same conditions
@@ -92,8 +105,21 @@ pub(super) fn pressure_pushes<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let stiffness = unsafe { &*(core::ptr::from_ref(stiffness) as *const [Fx]) };
+    let stiffness_bits = bit_length(
+        stiffness
+            .iter()
+            .fold(0, |bits, k| bits | magnitude_of(k.to_bits())),
+    );
+    // |kᵢ + kⱼ| < 2^(B + 1).
+    let sum_bits = stiffness_bits + 1;
     // SAFETY: AVX-512F was detected just above.
-    unsafe { pressure_pushes_kernel(lists, stiffness, out) }
+    unsafe {
+        if sum_bits <= 31 {
+            pressure_pushes_kernel::<true>(lists, stiffness, sum_bits, out)
+        } else {
+            pressure_pushes_kernel::<false>(lists, stiffness, sum_bits, out)
+        }
+    }
 }
 
 /// Whether products and row sums with operands of `a` and `b` bits (see the module
@@ -125,6 +151,23 @@ fn magnitude_of(v: i64) -> u64 {
 #[target_feature(enable = "avx512f")]
 fn high(a: __m512i) -> __m512i {
     _mm512_srai_epi64::<32>(_mm512_add_epi64(a, _mm512_set1_epi64(1 << 31)))
+}
+
+/// The checked `*` of bounded values: ⌊(a·b + 2³¹)/2³²⌋ per lane. `NARROW`: b is a
+/// 32-bit signed number (b_h = 0), so that the product is a_h·b + ⌊(a_l·b + 2³¹)/2³²⌋,
+/// two multiplies instead of four.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn product<const NARROW: bool>(a: __m512i, b: __m512i) -> __m512i {
+    if NARROW {
+        let low = _mm512_srai_epi64::<32>(_mm512_add_epi64(
+            _mm512_mul_epi32(a, b),
+            _mm512_set1_epi64(1 << 31),
+        ));
+        _mm512_add_epi64(_mm512_mul_epi32(high(a), b), low)
+    } else {
+        mul(a, b)
+    }
 }
 
 /// The checked `*` of bounded values: ⌊(a·b + 2³¹)/2³²⌋ per lane.
@@ -173,15 +216,17 @@ unsafe fn load_entries(
     Some((mask, index, gradient))
 }
 
-/// The density rate kernel: returns false when the bound fails (`out` then holds nothing
-/// of use).
+/// The density rate kernel, for velocity differences below 2^`difference_bits` (32-bit
+/// signed numbers when `NARROW`): returns false when the bound fails (`out` then holds
+/// nothing of use).
 ///
 /// # Safety
-/// The processor must have AVX-512F.
+/// The processor must have AVX-512F; with `NARROW`, `difference_bits` must be at most 31.
 #[target_feature(enable = "avx512f")]
-unsafe fn density_rates_kernel(
+unsafe fn density_rates_kernel<const NARROW: bool>(
     lists: &NeighbourLists<Fx>,
     velocities: &[Vec3<Fx>],
+    difference_bits: u32,
     out: &mut Vec<Fx>,
 ) -> bool {
     out.clear();
@@ -192,11 +237,6 @@ unsafe fn density_rates_kernel(
         .gradients
         .iter()
         .fold(lists.index.len(), |n, g| n.min(g.len()));
-    let mut velocity_bits = 0;
-    for v in velocities {
-        velocity_bits |=
-            magnitude_of(v.x.to_bits()) | magnitude_of(v.y.to_bits()) | magnitude_of(v.z.to_bits());
-    }
     let mut gradient_bits = zero;
     let mut longest = 0;
     for (i, vi) in velocities.iter().enumerate().take(lists.len()) {
@@ -223,25 +263,29 @@ unsafe fn density_rates_kernel(
                 let vj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, at, base) };
                 let g = gradient[c as usize];
                 gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
-                sum = _mm512_add_epi64(sum, mul(_mm512_sub_epi64(vi[c as usize], vj), g));
+                sum = _mm512_add_epi64(
+                    sum,
+                    product::<NARROW>(g, _mm512_sub_epi64(vi[c as usize], vj)),
+                );
             }
             first += count;
         }
         out.push(Fx::from_bits(_mm512_reduce_add_epi64(sum)));
     }
     let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
-    within_bound(a, bit_length(velocity_bits) + 1, 3 * longest)
+    within_bound(a, difference_bits, 3 * longest)
 }
 
-/// The pressure push kernel: returns false when the bound fails (`out` then holds nothing
-/// of use).
+/// The pressure push kernel, for stiffness sums below 2^`sum_bits` (32-bit signed numbers
+/// when `NARROW`): returns false when the bound fails (`out` then holds nothing of use).
 ///
 /// # Safety
-/// The processor must have AVX-512F.
+/// The processor must have AVX-512F; with `NARROW`, `sum_bits` must be at most 31.
 #[target_feature(enable = "avx512f")]
-unsafe fn pressure_pushes_kernel(
+unsafe fn pressure_pushes_kernel<const NARROW: bool>(
     lists: &NeighbourLists<Fx>,
     stiffness: &[Fx],
+    sum_bits: u32,
     out: &mut Vec<Vec3<Fx>>,
 ) -> bool {
     out.clear();
@@ -252,9 +296,6 @@ unsafe fn pressure_pushes_kernel(
         .gradients
         .iter()
         .fold(lists.index.len(), |n, g| n.min(g.len()));
-    let stiffness_bits = stiffness
-        .iter()
-        .fold(0, |bits, k| bits | magnitude_of(k.to_bits()));
     let mut gradient_bits = zero;
     let mut longest = 0;
     for (i, ki) in stiffness.iter().enumerate().take(lists.len()) {
@@ -279,7 +320,7 @@ unsafe fn pressure_pushes_kernel(
             let k = _mm512_add_epi64(ki, kj);
             for (p, g) in push.iter_mut().zip(gradient) {
                 gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
-                *p = _mm512_add_epi64(*p, mul(g, k));
+                *p = _mm512_add_epi64(*p, product::<NARROW>(g, k));
             }
             first += count;
         }
@@ -287,5 +328,5 @@ unsafe fn pressure_pushes_kernel(
         out.push(Vec3::new(x, y, z));
     }
     let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
-    within_bound(a, bit_length(stiffness_bits) + 1, longest)
+    within_bound(a, sum_bits, longest)
 }

@@ -154,3 +154,14 @@ fn empty_and_short_rows_match() {
         compare(seed, 17, 0, [41, 36], false);
     }
 }
+
+#[test]
+fn small_velocities_and_stiffnesses_take_the_narrow_products_and_match() {
+    // Magnitudes up to 2²⁹ and 2³⁰ (0.125 and 0.25): differences and sums of 32-bit signed
+    // numbers (the two-multiply product) and just beyond.
+    for seed in 0..40 {
+        let bits = 29 + (seed % 2) as u32;
+        let taken = compare(seed, 300, 40, [41, bits], false);
+        assert_eq!(taken, kernels_present(), "seed {seed}");
+    }
+}
