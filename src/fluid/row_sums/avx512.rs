@@ -16,28 +16,20 @@
 //!
 //! # Products
 //!
-//! `_mm512_mul_epi32` multiplies the signed low 32 bits of two lanes into 64. With
-//! a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ and a_l ∈ [−2³¹, 2³¹) the signed low half of a
-//! (both 32-bit numbers for |a| < 2⁶²), and b likewise,
-//!
-//! ```text
-//! ⌊(a·b + 2³¹)/2³²⌋ = a_h·b_h·2³² + a_h·b_l + a_l·b_h + ⌊(a_l·b_l + 2³¹)/2³²⌋,
-//! ```
-//!
-//! since the first three terms of a·b are multiples of 2³²: the checked `*` (to nearest,
-//! ties toward +∞). A lane past the end of a row loads zero for the neighbour and the
-//! gradient, so its product is ⌊2³¹/2³²⌋ = 0 and adds nothing.
+//! Each product is [`lanes::product`](crate::fluid::lanes::product), the checked `*` when
+//! its operands are bounded as above. A lane past the end of a row loads zero for the
+//! neighbour and the gradient, so its product is ⌊2³¹/2³²⌋ = 0 and adds nothing.
 
 use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cvtepu32_epi64,
     _mm512_mask_cmplt_epu64_mask, _mm512_mask_i64gather_epi64, _mm512_maskz_loadu_epi32,
-    _mm512_maskz_loadu_epi64, _mm512_mul_epi32, _mm512_or_si512, _mm512_reduce_add_epi64,
-    _mm512_reduce_or_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
-    _mm512_srai_epi64, _mm512_sub_epi64, _mm512_xor_si512,
+    _mm512_maskz_loadu_epi64, _mm512_or_si512, _mm512_reduce_add_epi64, _mm512_reduce_or_epi64,
+    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_sub_epi64,
 };
 use core::mem::size_of;
 
+use crate::fluid::lanes::{bit_length, magnitude, magnitude_of, product};
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::{Fx, Real, Vec3};
 
@@ -127,61 +119,6 @@ pub(super) fn pressure_pushes<R: Real>(
 fn within_bound(a: u32, b: u32, terms: usize) -> bool {
     let sum_bits = usize::BITS - terms.max(1).saturating_sub(1).leading_zeros();
     a <= MAX_OPERAND_BITS && b <= MAX_OPERAND_BITS && (a + b).saturating_sub(32) + sum_bits <= 61
-}
-
-/// The bit length of `bits` as an unsigned number.
-fn bit_length(bits: u64) -> u32 {
-    u64::BITS - bits.leading_zeros()
-}
-
-/// |v| or |v| − 1 per lane: `v ^ (v >> 63)`.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn magnitude(v: __m512i) -> __m512i {
-    _mm512_xor_si512(v, _mm512_srai_epi64::<63>(v))
-}
-
-/// The same for one value.
-fn magnitude_of(v: i64) -> u64 {
-    (v ^ (v >> 63)) as u64
-}
-
-/// a_h = ⌊(a + 2³¹)/2³²⌋ per lane.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn high(a: __m512i) -> __m512i {
-    _mm512_srai_epi64::<32>(_mm512_add_epi64(a, _mm512_set1_epi64(1 << 31)))
-}
-
-/// The checked `*` of bounded values: ⌊(a·b + 2³¹)/2³²⌋ per lane. `NARROW`: b is a
-/// 32-bit signed number (b_h = 0), so that the product is a_h·b + ⌊(a_l·b + 2³¹)/2³²⌋,
-/// two multiplies instead of four.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn product<const NARROW: bool>(a: __m512i, b: __m512i) -> __m512i {
-    if NARROW {
-        let low = _mm512_srai_epi64::<32>(_mm512_add_epi64(
-            _mm512_mul_epi32(a, b),
-            _mm512_set1_epi64(1 << 31),
-        ));
-        _mm512_add_epi64(_mm512_mul_epi32(high(a), b), low)
-    } else {
-        mul(a, b)
-    }
-}
-
-/// The checked `*` of bounded values: ⌊(a·b + 2³¹)/2³²⌋ per lane.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn mul(a: __m512i, b: __m512i) -> __m512i {
-    let (ah, bh) = (high(a), high(b));
-    let hh = _mm512_slli_epi64::<32>(_mm512_mul_epi32(ah, bh));
-    let cross = _mm512_add_epi64(_mm512_mul_epi32(ah, b), _mm512_mul_epi32(a, bh));
-    let low = _mm512_srai_epi64::<32>(_mm512_add_epi64(
-        _mm512_mul_epi32(a, b),
-        _mm512_set1_epi64(1 << 31),
-    ));
-    _mm512_add_epi64(_mm512_add_epi64(hh, cross), low)
 }
 
 /// The entries `first..first + count` (count 1 to 8) of a row: the lane mask, the
