@@ -300,13 +300,14 @@ fn evaluate_blocks<const BLOCKS: usize>(
             unsafe { _mm512_storeu_si512(o.as_mut_ptr().cast(), lanes) };
         }
         let start = first + 8 * b;
-        for k in 0..(survivors.len - start).min(8) {
-            let gradient = Vec3::new(
-                Fx::from_bits(out[1][k]),
-                Fx::from_bits(out[2][k]),
-                Fx::from_bits(out[3][k]),
-            );
-            lists.push(index[start + k] as u32, Fx::from_bits(out[0][k]), gradient);
+        let count = (survivors.len - start).min(8);
+        let [value, gx, gy, gz] = out.map(|lanes| lanes.map(Fx::from_bits));
+        lists
+            .index
+            .extend(index[start..start + count].iter().map(|&j| j as u32));
+        lists.value.extend_from_slice(&value[..count]);
+        for (list, lanes) in lists.gradients.iter_mut().zip([gx, gy, gz]) {
+            list.extend_from_slice(&lanes[..count]);
         }
     }
     (first + 8 * BLOCKS).min(survivors.len)
