@@ -73,5 +73,5 @@ fn rebuilding_gives_the_same_lists() {
     let (a, b) = (build(), build());
     assert_eq!(a.index, b.index);
     assert_eq!(a.value, b.value);
-    assert_eq!(a.gradient, b.gradient);
+    assert_eq!(a.gradients, b.gradients);
 }

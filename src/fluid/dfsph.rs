@@ -25,6 +25,7 @@
 //! velocity noise it would remove. Magnitudes at spacing 5 mm, Δt = 10⁻⁴ s: Dᵢ ≈ 10⁵,
 //! αᵢ ≈ 10³, kᵢ ≈ 1, corrections ≈ 10⁻² m/s.
 
+use super::row_sums;
 use super::system::FluidSystem;
 use crate::math::{Real, Vec3};
 
@@ -54,7 +55,7 @@ impl<R: Real> FluidSystem<R> {
         for (p, &rho) in s.pressure.iter_mut().zip(&s.density) {
             *p *= rho * rho;
         }
-        s.last_iterations = iterations;
+        s.last_iterations += iterations;
     }
 
     /// αᵢ = (1/Δt) / (Δt max(Dᵢ, D₀/16)) into `factor`, and
@@ -68,12 +69,12 @@ impl<R: Real> FluidSystem<R> {
         for i in 0..self.positions.len() {
             let mut sum = Vec3::ZERO;
             let mut squares = R::ZERO;
-            for &g in &s.fluid.gradient[s.fluid.range(i)] {
+            for g in s.fluid.range(i).map(|e| s.fluid.gradient(e)) {
                 sum += g;
                 squares += g.length_squared();
             }
             let mut wall = Vec3::ZERO;
-            for &g in &s.walls.gradient[s.walls.range(i)] {
+            for g in s.walls.range(i).map(|e| s.walls.gradient(e)) {
                 wall += g;
             }
             s.wall_gradient.push(wall);
@@ -85,16 +86,11 @@ impl<R: Real> FluidSystem<R> {
     /// kᵢ = max(ρ̃*ᵢ − 1, 0) αᵢ into `scalar`; returns Σ max(ρ̃*ᵢ − 1, 0).
     fn predict_stiffness(&mut self, dt: R) -> R {
         let s = &mut self.scratch;
+        row_sums::density_rates(&s.fluid, &self.velocities, &mut s.rate);
         s.scalar.clear();
         let mut total = R::ZERO;
-        for i in 0..self.positions.len() {
-            let vi = self.velocities[i];
-            let mut change = R::ZERO;
-            for e in s.fluid.range(i) {
-                let j = s.fluid.index[e] as usize;
-                change += (vi - self.velocities[j]).dot(s.fluid.gradient[e]);
-            }
-            change += vi.dot(s.wall_gradient[i]);
+        for (i, &vi) in self.velocities.iter().enumerate() {
+            let change = s.rate[i] + vi.dot(s.wall_gradient[i]);
             let error = (s.density[i] + change * dt - R::ONE).max(R::ZERO);
             total += error;
             s.scalar.push(error * s.factor[i]);
@@ -105,19 +101,11 @@ impl<R: Real> FluidSystem<R> {
     /// vᵢ ← vᵢ − Δt (Σⱼ (kᵢ + kⱼ) V₀∇Wᵢⱼ + Σ_b kᵢ V₀∇W_ib), Jacobi.
     fn correct_velocities(&mut self, dt: R) {
         let s = &mut self.scratch;
-        s.delta.clear();
-        for i in 0..self.positions.len() {
+        row_sums::pressure_pushes(&s.fluid, &s.scalar, &mut s.delta);
+        for (i, v) in self.velocities.iter_mut().enumerate() {
             let ki = s.scalar[i];
             s.pressure[i] += ki;
-            let mut push = Vec3::ZERO;
-            for e in s.fluid.range(i) {
-                let j = s.fluid.index[e] as usize;
-                push += s.fluid.gradient[e] * (ki + s.scalar[j]);
-            }
-            s.delta.push((push + s.wall_gradient[i] * ki) * dt);
-        }
-        for (v, dv) in self.velocities.iter_mut().zip(&s.delta) {
-            *v -= *dv;
+            *v -= (s.delta[i] + s.wall_gradient[i] * ki) * dt;
         }
     }
 }

@@ -133,12 +133,20 @@ impl<R: Real> Kernel<R> {
         if q2 >= R::ONE {
             return None;
         }
+        Some(self.evaluate_within(d, q2))
+    }
+
+    /// V₀W and V₀∇ᵢW for the normalised offset `d` = (xᵢ − xⱼ)/H with `q2` = |d|² < 1:
+    /// the second half of [`Kernel::evaluate`], for searches that test the support
+    /// themselves. One square root.
+    #[inline(always)]
+    pub fn evaluate_within(&self, d: Vec3<R>, q2: R) -> (R, Vec3<R>) {
         let q = q2.sqrt();
         let t = R::ONE - q;
         let t3 = t * t * t;
         let value = self.density_scale * (t3 * t * (R::ONE + R::from_int(4) * q));
         let gradient = d * -(self.gradient_scale * t3);
-        Some((value, gradient))
+        (value, gradient)
     }
 }
 

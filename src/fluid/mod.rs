@@ -17,7 +17,8 @@
 //! sort into cells · [`neighbours`] neighbour lists with kernel values.
 //!
 //! Dynamics: [`emitter`] nozzles · [`density`] kernel sums · [`wcsph`] Tait pressure ·
-//! [`dfsph`] the constant-density solver · [`xsph`] velocity smoothing · [`boundary`] the
+//! [`dfsph`] the constant-density solver and [`row_sums`] its iterations' sums over the
+//! neighbours · [`xsph`] velocity smoothing · [`boundary`] the
 //! tank's boundary particles and walls.
 //!
 //! # Determinism
@@ -36,9 +37,12 @@ mod emitter;
 pub mod grid;
 mod hashing;
 pub mod kernel;
+#[cfg(target_arch = "x86_64")]
+mod lanes;
 mod metrics;
 pub mod neighbours;
 pub mod presets;
+mod row_sums;
 mod system;
 mod wcsph;
 mod xsph;

@@ -6,6 +6,11 @@
 //! every machine. Each entry keeps the neighbour's index, V₀W and V₀∇ᵢW (see
 //! [`kernel`](super::kernel)), so the square root of a pair is taken once per substep.
 
+#[cfg(target_arch = "x86_64")]
+mod avx512;
+#[cfg(test)]
+mod tests;
+
 use super::grid::CellGrid;
 use super::kernel::Kernel;
 use crate::math::{Real, Vec3};
@@ -19,20 +24,44 @@ pub struct NeighbourLists<R: Real> {
     pub index: Vec<u32>,
     /// V₀W of each pair (dimensionless).
     pub value: Vec<R>,
-    /// V₀∇ᵢW of each pair, 1/m.
-    pub gradient: Vec<Vec3<R>>,
+    /// V₀∇ᵢW of each pair, 1/m, by component (x, y, z): structure of arrays, which the
+    /// vector kernels of [`row_sums`](super::row_sums) load as it is.
+    pub gradients: [Vec<R>; 3],
 }
 
 impl<R: Real> NeighbourLists<R> {
+    /// The number of particles listed (rows).
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.start.len().saturating_sub(1)
+    }
+
+    /// Whether no particle is listed.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
     /// The entries of particle `i`: `start[i]..start[i + 1]`.
     #[inline(always)]
     pub fn range(&self, i: usize) -> core::ops::Range<usize> {
         self.start[i] as usize..self.start[i + 1] as usize
     }
 
+    /// V₀∇ᵢW of entry `e`, 1/m.
+    #[inline(always)]
+    pub fn gradient(&self, e: usize) -> Vec3<R> {
+        let [x, y, z] = &self.gradients;
+        Vec3::new(x[e], y[e], z[e])
+    }
+
     /// Finds, for each of `queries`, every point of `points` (sorted into `grid`) closer
     /// than the kernel support, except the query itself when `skip_self` (the queries are
     /// the points).
+    ///
+    /// In I32F32 on x86-64 with AVX-512F the candidates are tested, and the survivors'
+    /// kernel values computed, eight at a time ([`avx512`]), with the same lists as
+    /// [`NeighbourLists::build_scalar`] bit for bit.
     pub fn build(
         &mut self,
         queries: &[Vec3<R>],
@@ -41,11 +70,23 @@ impl<R: Real> NeighbourLists<R> {
         kernel: &Kernel<R>,
         skip_self: bool,
     ) {
-        self.start.clear();
-        self.index.clear();
-        self.value.clear();
-        self.gradient.clear();
-        self.start.push(0);
+        #[cfg(target_arch = "x86_64")]
+        if avx512::build(self, queries, points, grid, kernel, skip_self) {
+            return;
+        }
+        self.build_scalar(queries, points, grid, kernel, skip_self);
+    }
+
+    /// [`NeighbourLists::build`], one candidate after another with [`Kernel::evaluate`].
+    pub fn build_scalar(
+        &mut self,
+        queries: &[Vec3<R>],
+        points: &[Vec3<R>],
+        grid: &CellGrid<R>,
+        kernel: &Kernel<R>,
+        skip_self: bool,
+    ) {
+        self.clear();
         for (i, &xi) in queries.iter().enumerate() {
             grid.for_each_within(xi, kernel.inv_support, |candidates| {
                 for &j in candidates {
@@ -53,13 +94,32 @@ impl<R: Real> NeighbourLists<R> {
                         continue;
                     }
                     if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
-                        self.index.push(j);
-                        self.value.push(value);
-                        self.gradient.push(gradient);
+                        self.push(j, value, gradient);
                     }
                 }
             });
             self.start.push(self.index.len() as u32);
         }
+    }
+
+    /// Empties the lists, leaving the start of the first row.
+    fn clear(&mut self) {
+        self.start.clear();
+        self.index.clear();
+        self.value.clear();
+        for g in &mut self.gradients {
+            g.clear();
+        }
+        self.start.push(0);
+    }
+
+    /// Appends an entry to the current row.
+    #[inline(always)]
+    fn push(&mut self, j: u32, value: R, gradient: Vec3<R>) {
+        self.index.push(j);
+        self.value.push(value);
+        self.gradients[0].push(gradient.x);
+        self.gradients[1].push(gradient.y);
+        self.gradients[2].push(gradient.z);
     }
 }

@@ -63,6 +63,28 @@ pub fn tank<R: Real>(per_side: u32, solver: FluidSolver) -> FluidDesc<R> {
     desc
 }
 
+/// The benchmark's fluid (`benches/fluid.rs`): a cube of `n`³ particles 1 cm apart on the
+/// floor of a tank of the same footprint, 1.5 × as high, with default settings and
+/// `substeps` fluid substeps per step.
+pub fn cube<R: Real>(n: u32, solver: FluidSolver, substeps: u32) -> FluidDesc<R> {
+    let dx = R::from_ratio(1, 100);
+    let side = dx * R::from_int(n as i32);
+    let tank = FluidBox {
+        min: Vec3::ZERO,
+        max: Vec3::new(side, side * R::from_ratio(3, 2), side),
+    };
+    let mut desc = FluidDesc::new(solver, dx, tank);
+    desc.substeps = substeps;
+    desc.blocks.push(FluidBlock {
+        region: FluidBox {
+            min: Vec3::ZERO,
+            max: Vec3::splat(side),
+        },
+        velocity: Vec3::ZERO,
+    });
+    desc
+}
+
 /// A jet poured into an empty box under DFSPH: a 3 × 3 nozzle 2 cm apart, 0.2 m above
 /// the floor of a box 0.2 m wide, 1 m/s downwards, `count` particles in all; 5 fluid
 /// substeps per 60 Hz tick.

@@ -95,9 +95,11 @@ pub(crate) struct Scratch<R: Real> {
     pub inv_density: Vec<R>,
     /// Σ_b V₀∇W_ib of each fluid particle, 1/m (DFSPH).
     pub wall_gradient: Vec<Vec3<R>>,
-    /// A per-particle velocity change, m/s.
+    /// A per-particle velocity change, m/s (DFSPH: first the pressure push, m/s²).
     pub delta: Vec<Vec3<R>>,
-    /// Solver iterations of the last substep (DFSPH), for reports.
+    /// Σⱼ (vᵢ − vⱼ)·V₀∇Wᵢⱼ of each fluid particle, 1/s (DFSPH).
+    pub rate: Vec<R>,
+    /// Solver iterations of the last step, summed over its substeps (DFSPH), for reports.
     pub last_iterations: u32,
 }
 
@@ -145,7 +147,7 @@ impl<R: Real> FluidSystem<R> {
         self.positions.is_empty()
     }
 
-    /// Pressure solver iterations in the last substep (0 for WCSPH).
+    /// Pressure solver iterations in the last step, summed over its substeps (0 for WCSPH).
     pub fn last_iterations(&self) -> u32 {
         self.scratch.last_iterations
     }
@@ -164,6 +166,7 @@ impl<R: Real> FluidSystem<R> {
     /// [`FluidSettings::substeps`] equal substeps.
     pub fn step(&mut self, dt: R, gravity: Vec3<R>) {
         self.prepare();
+        self.scratch.last_iterations = 0;
         let h = dt * R::from_ratio(1, i64::from(self.settings.substeps));
         for _ in 0..self.settings.substeps {
             self.emit(h);

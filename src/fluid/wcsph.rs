@@ -46,13 +46,13 @@ impl<R: Real> FluidSystem<R> {
                 let j = s.fluid.index[e] as usize;
                 let d = (xi - self.positions[j]) * inv_support;
                 let approach = (vi - self.velocities[j]).dot(d).min(R::ZERO);
-                push += s.fluid.gradient[e] * (si + s.scalar[j] - damping * approach);
+                push += s.fluid.gradient(e) * (si + s.scalar[j] - damping * approach);
             }
             for e in s.walls.range(i) {
                 let b = s.walls.index[e] as usize;
                 let d = (xi - boundary[b]) * inv_support;
                 let approach = vi.dot(d).min(R::ZERO);
-                push += s.walls.gradient[e] * (si - damping * approach);
+                push += s.walls.gradient(e) * (si - damping * approach);
             }
             s.delta.push((gravity - push) * dt);
         }

@@ -1,0 +1,90 @@
+//! Steps the benchmark's fluid (`presets::cube`) and prints the mean time per step and the
+//! solver's iterations, for profiling (`perf record ./target/release/examples/fluid_steps`).
+//! The benchmark figures come from `cargo bench --bench fluid`, not from here.
+//!
+//! Usage: `cargo run --release --example fluid_steps [dfsph|wcsph] [N] [RATE] [SUBSTEPS]
+//! [WARM] [STEPS] [fx|f64]`: N³ particles, steps of 1/RATE s in SUBSTEPS fluid substeps,
+//! WARM steps untimed, then STEPS timed (default `dfsph 20 200 3 20 10 fx`: the DFSPH case
+//! of the benchmark, 8000 particles at Δt = 5 ms).
+
+use std::time::{Duration, Instant};
+
+use fixstep::fluid::{FluidSolver, FluidSystem, presets};
+use fixstep::math::{Fx, Real, Vec3};
+
+/// The command line's settings.
+struct Run {
+    solver: FluidSolver,
+    n: u32,
+    rate: i64,
+    substeps: u32,
+    warm: u32,
+    steps: u32,
+}
+
+fn run<R: Real>(r: &Run) {
+    let dt = R::from_ratio(1, r.rate);
+    let gravity = Vec3::new(R::ZERO, R::from_f64(-9.81), R::ZERO);
+    let desc = presets::cube::<R>(r.n, r.solver, r.substeps);
+    let mut fluid = match FluidSystem::from_desc(&desc, dt) {
+        Ok(fluid) => fluid,
+        Err(e) => {
+            eprintln!("error: {e}");
+            std::process::exit(2);
+        }
+    };
+    for _ in 0..r.warm {
+        fluid.step(dt, gravity);
+    }
+    let mut elapsed = Duration::ZERO;
+    let mut iterations = 0;
+    for _ in 0..r.steps {
+        let start = Instant::now();
+        fluid.step(dt, gravity);
+        elapsed += start.elapsed();
+        iterations += fluid.last_iterations();
+    }
+    let m = fluid.metrics(gravity);
+    println!(
+        "{} {:?} {} particles, dt 1/{} s in {} substeps: {:?} per step over {} steps; \
+         {:.1} solver iterations per step; mean density error {:.5}, max speed \
+         {:.3} m/s",
+        R::NAME,
+        r.solver,
+        fluid.len(),
+        r.rate,
+        r.substeps,
+        elapsed / r.steps.max(1),
+        r.steps,
+        f64::from(iterations) / f64::from(r.steps.max(1)),
+        m.density_error_avg,
+        m.max_speed,
+    );
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let arg = |i: usize, default: &str| args.get(i).cloned().unwrap_or_else(|| default.into());
+    let number = |i: usize, default: &str| -> u32 {
+        arg(i, default).parse().unwrap_or_else(|_| {
+            eprintln!("error: argument {} must be a whole number", i + 1);
+            std::process::exit(2);
+        })
+    };
+    let solver = match arg(0, "dfsph").as_str() {
+        "wcsph" => FluidSolver::Wcsph,
+        _ => FluidSolver::Dfsph,
+    };
+    let r = Run {
+        solver,
+        n: number(1, "20"),
+        rate: i64::from(number(2, "200")),
+        substeps: number(3, "3"),
+        warm: number(4, "20"),
+        steps: number(5, "10"),
+    };
+    match arg(6, "fx").as_str() {
+        "f64" => run::<f64>(&r),
+        _ => run::<Fx>(&r),
+    }
+}

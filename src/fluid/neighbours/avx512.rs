@@ -1,0 +1,354 @@
+//! The neighbour search in AVX-512F for I32F32: eight candidates side by side through
+//! the support test, the survivors packed in order, then eight survivors side by side
+//! through the kernel's value and gradient.
+//!
+//! # Same lists
+//!
+//! For each candidate j of query i the kernel computes, modulo 2⁶⁴, what
+//! [`Kernel::evaluate`] computes: the offset o = xᵢ − xⱼ, the test |o_c| < H on each
+//! component, d = o · (1/H) and q² = d_x² + d_y² + d_z², and keeps j when all of it passes
+//! and q² < 1 (and j ≠ i when the queries are the points); then, for the survivors, the
+//! square root q = √q², t = 1 − q, t³ = t·t·t, V₀W = c_w ((t³·t)(1 + 4q)) and
+//! V₀∇W = d · (−(c_g t³)), each product rounded as the checked `*`. Before it starts it
+//! checks that every coordinate of the queries and points is at most 2⁶⁰ in magnitude (as
+//! raw bits), that 0 < H < 2³¹ and 0 < 1/H < 2⁶⁰, and that c_w and c_g are positive and
+//! below 2⁵⁵ (2.7·10⁴ at most in a valid scene: 2⁴⁷). Then:
+//!
+//! - o is exact (below 2⁶¹), and so is the component test, as in the scalar form;
+//! - in a lane that passes it, |o_c| < H < 2³¹ is a 32-bit signed number, so the product
+//!   o_c · (1/H) is the two-multiply form of [`lanes::product`](crate::fluid::lanes::product),
+//!   exact, with |d_c| at most about 1; its squares and their sum are exact too;
+//! - in a survivor, 0 ≤ q² < 1, so √q² < 1 is found exactly ([`sqrt`]); t, t³ and t³·t lie
+//!   in [0, 1], 1 + 4q in [1, 5] (4q is exact, as the checked 4 · q is), and the products
+//!   with c_w, c_g and d stay far inside the range: every product is the checked one.
+//!
+//! So the survivors, their order (the candidates' order) and their values and gradients
+//! are the scalar form's bit for bit; lanes that fail the test hold meaningless values and
+//! are dropped. Other formats, targets and inputs beyond the bounds take
+//! [`NeighbourLists::build_scalar`].
+
+use core::any::Any;
+use core::arch::x86_64::{
+    __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cmpgt_epu64_mask,
+    _mm512_cmple_epu64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_add_epi64,
+    _mm512_mask_cmpgt_epi64_mask, _mm512_mask_cmplt_epi64_mask, _mm512_mask_cmplt_epu64_mask,
+    _mm512_mask_cmpneq_epi64_mask, _mm512_mask_i64gather_epi64, _mm512_mask_mov_epi64,
+    _mm512_maskz_compress_epi64, _mm512_maskz_loadu_epi32, _mm512_mul_epu32, _mm512_or_si512,
+    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_storeu_si512,
+    _mm512_sub_epi64,
+};
+use core::mem::size_of;
+
+use super::NeighbourLists;
+use crate::fluid::grid::CellGrid;
+use crate::fluid::kernel::Kernel;
+use crate::fluid::lanes::{bit_length, magnitude_of, mul, product};
+use crate::math::{Fx, Real, Vec3};
+
+// The layout the gathers rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
+const _: () = {
+    assert!(size_of::<Fx>() == 8);
+    assert!(size_of::<Vec3<Fx>>() == 24);
+};
+
+/// [`NeighbourLists::build`] with the kernel when `R` is I32F32, the processor has
+/// AVX-512F and the inputs are within the bounds (see the module documentation); returns
+/// whether it did (if not, the lists hold nothing of use).
+pub(super) fn build<R: Real>(
+    lists: &mut NeighbourLists<R>,
+    queries: &[Vec3<R>],
+    points: &[Vec3<R>],
+    grid: &CellGrid<R>,
+    kernel: &Kernel<R>,
+    skip_self: bool,
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let (Some(lists), Some(grid), Some(kernel)) = (
+        (lists as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
+        (grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
+        (kernel as &dyn Any).downcast_ref::<Kernel<Fx>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slices' type is unchanged.
+    let (queries, points) = unsafe {
+        (
+            &*(core::ptr::from_ref(queries) as *const [Vec3<Fx>]),
+            &*(core::ptr::from_ref(points) as *const [Vec3<Fx>]),
+        )
+    };
+    let coordinates = |set: &[Vec3<Fx>]| {
+        set.iter().fold(0, |bits, p| {
+            bits | magnitude_of(p.x.to_bits())
+                | magnitude_of(p.y.to_bits())
+                | magnitude_of(p.z.to_bits())
+        })
+    };
+    let within = |value: Fx, bits: u32| 0 < value.to_bits() && value.to_bits() < 1 << bits;
+    if bit_length(coordinates(queries) | coordinates(points)) > 60
+        || !within(kernel.support, 31)
+        || !within(kernel.inv_support, 60)
+        || !within(kernel.density_scale, 55)
+        || !within(kernel.gradient_scale, 55)
+    {
+        return false;
+    }
+    // SAFETY: AVX-512F was detected just above.
+    unsafe { build_kernel(lists, queries, points, grid, kernel, skip_self) }
+}
+
+/// The constants of a search, in lanes.
+struct Search {
+    /// H.
+    support: __m512i,
+    /// −H.
+    neg_support: __m512i,
+    /// 1/H.
+    inv_support: __m512i,
+    /// 1.
+    one: __m512i,
+    /// c_w.
+    density_scale: __m512i,
+    /// c_g.
+    gradient_scale: __m512i,
+    /// The number of points, for the index check.
+    points: __m512i,
+    skip_self: bool,
+}
+
+/// The survivors of one query's candidates, in order: index, d and q², packed eight at a
+/// time with room for eight more.
+#[derive(Default)]
+struct Survivors {
+    len: usize,
+    lanes: [Vec<i64>; 5],
+}
+
+impl Survivors {
+    /// Forgets the survivors.
+    fn clear(&mut self) {
+        self.len = 0;
+    }
+
+    /// Appends the lanes of `keep` of `values` (index, d_x, d_y, d_z, q²), in lane order.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    fn append(&mut self, keep: __mmask8, values: [__m512i; 5]) {
+        let at = self.len;
+        for (list, lanes) in self.lanes.iter_mut().zip(values) {
+            if list.len() < at + 8 {
+                list.resize(at + 8, 0);
+            }
+            // Packed in a register, then stored whole: a compressing store to memory is
+            // slow on some processors (Zen 4).
+            // SAFETY: eight values into `list[at..at + 8]`, which exists.
+            unsafe {
+                _mm512_storeu_si512(
+                    list.as_mut_ptr().add(at).cast(),
+                    _mm512_maskz_compress_epi64(keep, lanes),
+                );
+            }
+        }
+        self.len += keep.count_ones() as usize;
+    }
+}
+
+/// The search: returns false when a grid entry is not a point's index (the lists then hold
+/// nothing of use).
+///
+/// # Safety
+/// The processor must have AVX-512F; the bounds of [`build`] must hold.
+#[target_feature(enable = "avx512f")]
+unsafe fn build_kernel(
+    lists: &mut NeighbourLists<Fx>,
+    queries: &[Vec3<Fx>],
+    points: &[Vec3<Fx>],
+    grid: &CellGrid<Fx>,
+    kernel: &Kernel<Fx>,
+    skip_self: bool,
+) -> bool {
+    lists.clear();
+    let search = Search {
+        support: _mm512_set1_epi64(kernel.support.to_bits()),
+        neg_support: _mm512_set1_epi64(-kernel.support.to_bits()),
+        inv_support: _mm512_set1_epi64(kernel.inv_support.to_bits()),
+        one: _mm512_set1_epi64(Fx::ONE.to_bits()),
+        density_scale: _mm512_set1_epi64(kernel.density_scale.to_bits()),
+        gradient_scale: _mm512_set1_epi64(kernel.gradient_scale.to_bits()),
+        points: _mm512_set1_epi64(points.len() as i64),
+        skip_self,
+    };
+    let mut survivors = Survivors::default();
+    let mut valid = true;
+    for (i, &xi) in queries.iter().enumerate() {
+        survivors.clear();
+        grid.for_each_within(xi, kernel.inv_support, |candidates| {
+            // SAFETY: the caller's conditions are this function's.
+            valid &= unsafe { test_candidates(&mut survivors, candidates, i, xi, points, &search) };
+        });
+        if !valid {
+            return false;
+        }
+        evaluate_survivors(lists, &survivors, &search);
+        lists.start.push(lists.index.len() as u32);
+    }
+    true
+}
+
+/// Tests `candidates` for query `i` at `xi`, eight at a time, and appends the survivors
+/// with d and q²; false when a candidate is not a point's index.
+///
+/// # Safety
+/// The processor must have AVX-512F; the bounds of [`build`] must hold.
+#[target_feature(enable = "avx512f")]
+unsafe fn test_candidates(
+    survivors: &mut Survivors,
+    candidates: &[u32],
+    i: usize,
+    xi: Vec3<Fx>,
+    points: &[Vec3<Fx>],
+    search: &Search,
+) -> bool {
+    let zero = _mm512_setzero_si512();
+    let base = points.as_ptr().cast::<i64>();
+    let x = [xi.x, xi.y, xi.z].map(|c| _mm512_set1_epi64(c.to_bits()));
+    let me = _mm512_set1_epi64(i as i64);
+    let mut first = 0;
+    while first < candidates.len() {
+        let count = (candidates.len() - first).min(8);
+        let mask = ((1u16 << count) - 1) as __mmask8;
+        // SAFETY: the masked load reads only the `count` candidates from `first`.
+        let index32 = unsafe {
+            _mm512_maskz_loadu_epi32(u16::from(mask), candidates.as_ptr().add(first).cast())
+        };
+        first += count;
+        let j = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
+        if _mm512_mask_cmplt_epu64_mask(mask, j, search.points) != mask {
+            return false;
+        }
+        let mut keep = mask;
+        if search.skip_self {
+            keep = _mm512_mask_cmpneq_epi64_mask(keep, j, me);
+        }
+        let words = _mm512_add_epi64(_mm512_slli_epi64::<1>(j), j);
+        let mut offset = [zero; 3];
+        for (c, o) in offset.iter_mut().enumerate() {
+            let at = _mm512_add_epi64(words, _mm512_set1_epi64(c as i64));
+            // SAFETY: every index in use is below `points.len()` (checked above).
+            let xj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, keep, at, base) };
+            *o = _mm512_sub_epi64(x[c], xj);
+            keep = _mm512_mask_cmplt_epi64_mask(keep, *o, search.support);
+            keep = _mm512_mask_cmpgt_epi64_mask(keep, *o, search.neg_support);
+        }
+        if keep == 0 {
+            continue;
+        }
+        let d = offset.map(|o| product::<true>(search.inv_support, o));
+        let q2 = _mm512_add_epi64(
+            _mm512_add_epi64(mul(d[0], d[0]), mul(d[1], d[1])),
+            mul(d[2], d[2]),
+        );
+        keep = _mm512_mask_cmplt_epi64_mask(keep, q2, search.one);
+        survivors.append(keep, [j, d[0], d[1], d[2], q2]);
+    }
+    true
+}
+
+/// Appends the survivors to the current row with V₀W and V₀∇ᵢW, eight at a time, up to
+/// four blocks of eight side by side (so that their square roots, each a chain of
+/// dependent steps, overlap).
+#[target_feature(enable = "avx512f")]
+fn evaluate_survivors(lists: &mut NeighbourLists<Fx>, survivors: &Survivors, search: &Search) {
+    let mut first = 0;
+    while first < survivors.len {
+        first = match (survivors.len - first).div_ceil(8) {
+            1 => evaluate_blocks::<1>(lists, survivors, first, search),
+            2 => evaluate_blocks::<2>(lists, survivors, first, search),
+            3 => evaluate_blocks::<3>(lists, survivors, first, search),
+            _ => evaluate_blocks::<4>(lists, survivors, first, search),
+        };
+    }
+}
+
+/// Evaluates and appends `BLOCKS` blocks of eight survivors from `first` (the last may be
+/// partial); returns the next survivor.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn evaluate_blocks<const BLOCKS: usize>(
+    lists: &mut NeighbourLists<Fx>,
+    survivors: &Survivors,
+    first: usize,
+    search: &Search,
+) -> usize {
+    let [index, dx, dy, dz, q2] = &survivors.lanes;
+    // SAFETY: `append` keeps eight slots beyond every survivor it stored, and the blocks
+    // start at survivors it stored.
+    let load = |lanes: &Vec<i64>, block: usize| unsafe {
+        _mm512_loadu_si512(lanes.as_ptr().add(first + 8 * block).cast())
+    };
+    let roots = sqrt::<BLOCKS>(core::array::from_fn(|b| load(q2, b)));
+    for (b, q) in roots.into_iter().enumerate() {
+        let (value, gradient) = evaluate(q, [load(dx, b), load(dy, b), load(dz, b)], search);
+        let mut out = [[0i64; 8]; 4];
+        for (o, lanes) in out
+            .iter_mut()
+            .zip([value, gradient[0], gradient[1], gradient[2]])
+        {
+            // SAFETY: eight values into eight slots.
+            unsafe { _mm512_storeu_si512(o.as_mut_ptr().cast(), lanes) };
+        }
+        let start = first + 8 * b;
+        let count = (survivors.len - start).min(8);
+        let [value, gx, gy, gz] = out.map(|lanes| lanes.map(Fx::from_bits));
+        lists
+            .index
+            .extend(index[start..start + count].iter().map(|&j| j as u32));
+        lists.value.extend_from_slice(&value[..count]);
+        for (list, lanes) in lists.gradients.iter_mut().zip([gx, gy, gz]) {
+            list.extend_from_slice(&lanes[..count]);
+        }
+    }
+    (first + 8 * BLOCKS).min(survivors.len)
+}
+
+/// V₀W and V₀∇ᵢW of eight survivors from q = √q² and d, as [`Kernel::evaluate_within`]
+/// computes them (see the module documentation).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn evaluate(q: __m512i, d: [__m512i; 3], search: &Search) -> (__m512i, [__m512i; 3]) {
+    let t = _mm512_sub_epi64(search.one, q);
+    let t3 = mul(mul(t, t), t);
+    let grow = _mm512_add_epi64(search.one, _mm512_slli_epi64::<2>(q));
+    let value = mul(search.density_scale, mul(mul(t3, t), grow));
+    let slope = _mm512_sub_epi64(_mm512_setzero_si512(), mul(search.gradient_scale, t3));
+    (value, d.map(|c| mul(c, slope)))
+}
+
+/// √x per lane for 0 ≤ x < 1 as I32F32 bits (0 ≤ x < 2³²), in `BLOCKS` registers side by
+/// side: round(√(x·2³²)), correctly rounded to nearest like [`Real::sqrt`] of I32F32.
+/// With n = x·2³² < 2⁶⁴, the floor r = ⌊√n⌋ < 2³² is found bit by bit from the top (a bit
+/// stays when the square, exact in 64 bits, does not pass n), then r + 1 is taken when
+/// n > r² + r, i.e. when √n lies at or past r + ½ (n is a whole number, and
+/// (r + ½)² = r² + r + ¼).
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(super) fn sqrt<const BLOCKS: usize>(x: [__m512i; BLOCKS]) -> [__m512i; BLOCKS] {
+    let n = x.map(|x| _mm512_slli_epi64::<32>(x));
+    let mut root = [_mm512_setzero_si512(); BLOCKS];
+    for bit in (0..32).rev() {
+        let step = _mm512_set1_epi64(1 << bit);
+        for (r, &n) in root.iter_mut().zip(&n) {
+            let candidate = _mm512_or_si512(*r, step);
+            let fits = _mm512_cmple_epu64_mask(_mm512_mul_epu32(candidate, candidate), n);
+            *r = _mm512_mask_mov_epi64(*r, fits, candidate);
+        }
+    }
+    core::array::from_fn(|b| {
+        let r = root[b];
+        let square_and_root = _mm512_add_epi64(_mm512_mul_epu32(r, r), r);
+        let up = _mm512_cmpgt_epu64_mask(n[b], square_and_root);
+        _mm512_mask_add_epi64(r, up, r, _mm512_set1_epi64(1))
+    })
+}

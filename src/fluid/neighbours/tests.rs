@@ -1,0 +1,147 @@
+//! The neighbour search's dispatch (the AVX-512 candidate test where it runs) against the
+//! scalar form, entry for entry, on random points, a lattice (pairs exactly one spacing
+//! apart, ties of the support) and points far outside the grid.
+
+use super::NeighbourLists;
+use crate::fluid::grid::CellGrid;
+use crate::fluid::kernel::Kernel;
+use crate::math::{Fx, Pcg32, Real, Vec3};
+
+/// Both searches of `queries` among `points` (a grid over [0, 0.1 m]³), compared; returns
+/// whether the kernel took the search.
+fn compare(queries: &[Vec3<Fx>], points: &[Vec3<Fx>], spacing: Fx, skip_self: bool) -> bool {
+    let kernel = Kernel::<Fx>::calibrated(spacing, Fx::TWO);
+    let mut grid = CellGrid::new(
+        Vec3::ZERO,
+        Vec3::splat(Fx::from_ratio(1, 10)),
+        kernel.support,
+    );
+    grid.fill(points);
+    let (mut fast, mut slow) = (NeighbourLists::default(), NeighbourLists::default());
+    fast.build(queries, points, &grid, &kernel, skip_self);
+    slow.build_scalar(queries, points, &grid, &kernel, skip_self);
+    assert_eq!(fast.start, slow.start);
+    assert_eq!(fast.index, slow.index);
+    assert_eq!(fast.value, slow.value);
+    assert_eq!(fast.gradients, slow.gradients);
+    kernel_takes(queries, points, &grid, &kernel, skip_self)
+}
+
+#[cfg(target_arch = "x86_64")]
+fn kernel_takes(
+    queries: &[Vec3<Fx>],
+    points: &[Vec3<Fx>],
+    grid: &CellGrid<Fx>,
+    kernel: &Kernel<Fx>,
+    skip_self: bool,
+) -> bool {
+    let mut lists = NeighbourLists::default();
+    super::avx512::build(&mut lists, queries, points, grid, kernel, skip_self)
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn kernel_takes(_: &[Vec3<Fx>], _: &[Vec3<Fx>], _: &CellGrid<Fx>, _: &Kernel<Fx>, _: bool) -> bool {
+    false
+}
+
+fn kernels_present() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return std::arch::is_x86_feature_detected!("avx512f");
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
+/// `n` random points in the 0.1 m cube, raw bits.
+fn random(n: usize, seed: u64) -> Vec<Vec3<Fx>> {
+    let mut rng = Pcg32::new(seed, 11);
+    let tenth = Fx::from_ratio(1, 10).to_bits() as u64;
+    (0..n)
+        .map(|_| {
+            let mut c = || Fx::from_bits((rng.next_u64() % tenth) as i64);
+            Vec3::new(c(), c(), c())
+        })
+        .collect()
+}
+
+#[test]
+fn random_points_match_the_scalar_search() {
+    for seed in 0..6 {
+        let points = random(1500, seed);
+        let taken = compare(&points, &points, Fx::from_ratio(5, 1000), true);
+        assert_eq!(taken, kernels_present());
+        let queries = random(300, seed + 100);
+        compare(&queries, &points, Fx::from_ratio(5, 1000), false);
+    }
+}
+
+#[test]
+fn a_lattice_with_pairs_on_the_support_matches() {
+    // Spacing 5 mm, support 1 cm: pairs two spacings apart lie exactly on the support.
+    let spacing = Fx::from_ratio(5, 1000);
+    let mut points = Vec::new();
+    for k in 0..12 {
+        for j in 0..12 {
+            for i in 0..12 {
+                points.push(Vec3::new(
+                    spacing * Fx::from_int(i),
+                    spacing * Fx::from_int(j),
+                    spacing * Fx::from_int(k),
+                ));
+            }
+        }
+    }
+    let taken = compare(&points, &points, spacing, true);
+    assert_eq!(taken, kernels_present());
+}
+
+#[test]
+fn points_beyond_the_grid_and_the_bounds_match() {
+    let mut points = random(400, 9);
+    points.push(Vec3::from_f64(-0.3, 0.0, 0.02));
+    points.push(Vec3::from_f64(0.05, 5.0e6, 0.05));
+    let taken = compare(&points, &points, Fx::from_ratio(5, 1000), true);
+    assert_eq!(taken, kernels_present());
+    // Coordinates beyond 2⁶⁰ as bits (2.7·10⁸ m): the scalar search.
+    points.push(Vec3::new(Fx::MAX, Fx::ZERO, Fx::MIN));
+    assert!(!compare(&points, &points, Fx::from_ratio(5, 1000), true));
+}
+
+/// The kernel's square root against `Fx::sqrt` over [0, 1): random values, and the values
+/// around every square and every rounding midpoint of a sample of roots.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn the_kernels_square_root_is_fx_sqrt() {
+    use core::arch::x86_64::{_mm512_loadu_si512, _mm512_storeu_si512};
+    if !kernels_present() {
+        return;
+    }
+    let mut rng = Pcg32::new(5, 3);
+    let mut inputs: Vec<i64> = (0..200_000).map(|_| i64::from(rng.next_u32())).collect();
+    inputs.extend([0, 1, 2, 3, (1 << 32) - 1, (1 << 32) - 2, 1 << 31]);
+    for _ in 0..20_000 {
+        // A root r (I32F32 bits below 2³²) and the inputs x whose x·2³² lie near r² and
+        // (r + ½)².
+        let r = u128::from(rng.next_u32());
+        for target in [r * r, r * r + r] {
+            let x = (target >> 32) as i64;
+            for x in [x - 1, x, x + 1] {
+                if (0..1 << 32).contains(&x) {
+                    inputs.push(x);
+                }
+            }
+        }
+    }
+    for block in inputs.chunks(8) {
+        let mut lanes = [0i64; 8];
+        lanes[..block.len()].copy_from_slice(block);
+        let mut out = [0i64; 8];
+        // SAFETY: the processor has AVX-512F (checked above); eight values each way.
+        unsafe {
+            let roots = super::avx512::sqrt::<1>([_mm512_loadu_si512(lanes.as_ptr().cast())]);
+            _mm512_storeu_si512(out.as_mut_ptr().cast(), roots[0]);
+        }
+        for (&x, &root) in lanes.iter().zip(&out) {
+            assert_eq!(root, Fx::from_bits(x).sqrt().to_bits(), "√ of {x} bits");
+        }
+    }
+}

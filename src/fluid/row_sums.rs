@@ -1,0 +1,92 @@
+//! The two sums over a particle's fluid neighbours that every DFSPH iteration repeats,
+//! kept apart so that I32F32 can take a vector kernel with the same bits.
+//!
+//! For fluid particle i and its neighbour entries e = (j, V₀∇ᵢWᵢⱼ) (see
+//! [`neighbours`](super::neighbours)):
+//!
+//! - density rate: Σⱼ (vᵢ − vⱼ)·V₀∇ᵢWᵢⱼ (1/s), each dot product the three rounded products
+//!   added in order, the terms added in entry order;
+//! - pressure push: Σⱼ (kᵢ + kⱼ) V₀∇ᵢWᵢⱼ (m/s²) for the stiffnesses k (m²/s²), each
+//!   component a rounded product, added in entry order.
+//!
+//! # Same bits
+//!
+//! In fixed point a sum of already-rounded terms is exact whatever its order unless a
+//! partial sum leaves the range. The AVX-512 kernel ([`avx512`], I32F32 on x86-64 when the
+//! processor has AVX-512F) computes every product rounded exactly as the checked `*`, and
+//! sums eight entries side by side, then the lanes. It measures the bit lengths of what it
+//! read (gradients, velocities or stiffnesses) and the longest row, and its result stands
+//! only when those bounds prove that no product and no partial sum, in any order, can leave
+//! the range: then the checked operators of the scalar form saturate nowhere and both give
+//! the exact sums. Otherwise the scalar form runs, saturating and counting as it always
+//! does. Other formats and targets run the scalar form only.
+
+#[cfg(target_arch = "x86_64")]
+mod avx512;
+#[cfg(test)]
+mod tests;
+
+use super::neighbours::NeighbourLists;
+use crate::math::{Real, Vec3};
+
+/// Σⱼ (vᵢ − vⱼ)·V₀∇ᵢWᵢⱼ over the fluid neighbours of each particle of `lists` (1/s), into
+/// `out`, one per particle.
+pub(crate) fn density_rates<R: Real>(
+    lists: &NeighbourLists<R>,
+    velocities: &[Vec3<R>],
+    out: &mut Vec<R>,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if avx512::density_rates(lists, velocities, out) {
+        return;
+    }
+    density_rates_scalar(lists, velocities, out);
+}
+
+/// [`density_rates`] with the checked operators, entry after entry.
+pub(crate) fn density_rates_scalar<R: Real>(
+    lists: &NeighbourLists<R>,
+    velocities: &[Vec3<R>],
+    out: &mut Vec<R>,
+) {
+    out.clear();
+    for (i, &vi) in velocities.iter().enumerate().take(lists.len()) {
+        let mut rate = R::ZERO;
+        for e in lists.range(i) {
+            let j = lists.index[e] as usize;
+            rate += (vi - velocities[j]).dot(lists.gradient(e));
+        }
+        out.push(rate);
+    }
+}
+
+/// Σⱼ (kᵢ + kⱼ) V₀∇ᵢWᵢⱼ over the fluid neighbours of each particle of `lists` (m/s²), for
+/// the stiffnesses `stiffness` (m²/s²), into `out`, one per particle.
+pub(crate) fn pressure_pushes<R: Real>(
+    lists: &NeighbourLists<R>,
+    stiffness: &[R],
+    out: &mut Vec<Vec3<R>>,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if avx512::pressure_pushes(lists, stiffness, out) {
+        return;
+    }
+    pressure_pushes_scalar(lists, stiffness, out);
+}
+
+/// [`pressure_pushes`] with the checked operators, entry after entry.
+pub(crate) fn pressure_pushes_scalar<R: Real>(
+    lists: &NeighbourLists<R>,
+    stiffness: &[R],
+    out: &mut Vec<Vec3<R>>,
+) {
+    out.clear();
+    for (i, &ki) in stiffness.iter().enumerate().take(lists.len()) {
+        let mut push = Vec3::ZERO;
+        for e in lists.range(i) {
+            let j = lists.index[e] as usize;
+            push += lists.gradient(e) * (ki + stiffness[j]);
+        }
+        out.push(push);
+    }
+}

@@ -1,0 +1,269 @@
+//! The row sums in AVX-512F for I32F32: eight neighbour entries of one row side by side,
+//! one `i64` lane each, then the lanes added.
+//!
+//! # Exactness
+//!
+//! Every operation is done modulo 2⁶⁴. The kernel ORs together the magnitudes of every
+//! value it reads (as `v ^ (v >> 63)`, which is |v| or |v| − 1) and so knows bit lengths
+//! A (gradients) and B (velocities, or stiffnesses) with |g| ≤ 2ᴬ and |v| ≤ 2ᴮ, and the
+//! longest row L. A difference vᵢ − vⱼ (or sum kᵢ + kⱼ) is at most 2ᴮ⁺¹; a rounded product
+//! of it with a gradient component at most 2^(A + B + 1 − 32); a row's sum has at most
+//! T = 3L such terms (L for a push component). When A, B + 1 ≤ 61 and
+//! A + B + 1 − 32 + ⌈log₂ T⌉ ≤ 61, every product, and every partial sum in any order, is
+//! below 2⁶², so the checked operators of the scalar form saturate nowhere and their sums
+//! are exact, and so are the kernel's. When the bound fails, the kernel's output is thrown
+//! away (the caller runs the scalar form).
+//!
+//! # Products
+//!
+//! Each product is [`lanes::product`](crate::fluid::lanes::product), the checked `*` when
+//! its operands are bounded as above. A lane past the end of a row loads zero for the
+//! neighbour and the gradient, so its product is ⌊2³¹/2³²⌋ = 0 and adds nothing.
+
+use core::any::Any;
+use core::arch::x86_64::{
+    __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cvtepu32_epi64,
+    _mm512_mask_cmplt_epu64_mask, _mm512_mask_i64gather_epi64, _mm512_maskz_loadu_epi32,
+    _mm512_maskz_loadu_epi64, _mm512_or_si512, _mm512_reduce_add_epi64, _mm512_reduce_or_epi64,
+    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_sub_epi64,
+};
+use core::mem::size_of;
+
+use crate::fluid::lanes::{bit_length, magnitude, magnitude_of, product};
+use crate::fluid::neighbours::NeighbourLists;
+use crate::math::{Fx, Real, Vec3};
+
+// The layout the gathers rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
+const _: () = {
+    assert!(size_of::<Fx>() == 8);
+    assert!(size_of::<Vec3<Fx>>() == 24);
+};
+
+/// The largest bit length of a value that enters a product (see the module documentation).
+const MAX_OPERAND_BITS: u32 = 61;
+
+/// [`density_rates`](super::density_rates) with the kernel when `R` is I32F32 and the
+/// processor has AVX-512F; returns whether it did (if not, `out` holds nothing of use).
+#[allow(clippy::ptr_arg)] // `out` is downcast to the `Vec` it grows
+pub(super) fn density_rates<R: Real>(
+    lists: &NeighbourLists<R>,
+    velocities: &[Vec3<R>],
+    out: &mut Vec<R>,
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let (Some(lists), Some(out)) = (
+        (lists as &dyn Any).downcast_ref::<NeighbourLists<Fx>>(),
+        (out as &mut dyn Any).downcast_mut::<Vec<Fx>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
+    let velocities = unsafe { &*(core::ptr::from_ref(velocities) as *const [Vec3<Fx>]) };
+    let velocity_bits = bit_length(velocities.iter().fold(0, |bits, v| {
+        bits | magnitude_of(v.x.to_bits())
+            | magnitude_of(v.y.to_bits())
+            | magnitude_of(v.z.to_bits())
+    }));
+    // |vᵢ − vⱼ| < 2^(B + 1).
+    let difference_bits = velocity_bits + 1;
+    // SAFETY: AVX-512F was detected just above.
+    unsafe {
+        if difference_bits <= 31 {
+            density_rates_kernel::<true>(lists, velocities, difference_bits, out)
+        } else {
+            density_rates_kernel::<false>(lists, velocities, difference_bits, out)
+        }
+    }
+}
+
+/// [`pressure_pushes`](super::pressure_pushes) with the kernel, under the same conditions
+/// as [`density_rates`].
+#[allow(clippy::ptr_arg)] // `out` is downcast to the `Vec` it grows
+pub(super) fn pressure_pushes<R: Real>(
+    lists: &NeighbourLists<R>,
+    stiffness: &[R],
+    out: &mut Vec<Vec3<R>>,
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let (Some(lists), Some(out)) = (
+        (lists as &dyn Any).downcast_ref::<NeighbourLists<Fx>>(),
+        (out as &mut dyn Any).downcast_mut::<Vec<Vec3<Fx>>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
+    let stiffness = unsafe { &*(core::ptr::from_ref(stiffness) as *const [Fx]) };
+    let stiffness_bits = bit_length(
+        stiffness
+            .iter()
+            .fold(0, |bits, k| bits | magnitude_of(k.to_bits())),
+    );
+    // |kᵢ + kⱼ| < 2^(B + 1).
+    let sum_bits = stiffness_bits + 1;
+    // SAFETY: AVX-512F was detected just above.
+    unsafe {
+        if sum_bits <= 31 {
+            pressure_pushes_kernel::<true>(lists, stiffness, sum_bits, out)
+        } else {
+            pressure_pushes_kernel::<false>(lists, stiffness, sum_bits, out)
+        }
+    }
+}
+
+/// Whether products and row sums with operands of `a` and `b` bits (see the module
+/// documentation) over rows of at most `terms` terms stay below 2⁶².
+fn within_bound(a: u32, b: u32, terms: usize) -> bool {
+    let sum_bits = usize::BITS - terms.max(1).saturating_sub(1).leading_zeros();
+    a <= MAX_OPERAND_BITS && b <= MAX_OPERAND_BITS && (a + b).saturating_sub(32) + sum_bits <= 61
+}
+
+/// The entries `first..first + count` (count 1 to 8) of a row: the lane mask, the
+/// neighbour indices as `i64`, and the three gradient components (zero past `count`); or
+/// `None` when an index is not below `points`.
+///
+/// # Safety
+/// `first + count` must not exceed the number of entries of `lists.index` and
+/// `lists.gradients`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+unsafe fn load_entries(
+    lists: &NeighbourLists<Fx>,
+    first: usize,
+    count: usize,
+    points: __m512i,
+) -> Option<(__mmask8, __m512i, [__m512i; 3])> {
+    let mask = ((1u16 << count) - 1) as __mmask8;
+    // SAFETY: the masked load reads only the `count` entries from `first`, which exist.
+    let index32 = unsafe {
+        _mm512_maskz_loadu_epi32(u16::from(mask), lists.index.as_ptr().add(first).cast())
+    };
+    let index = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
+    if _mm512_mask_cmplt_epu64_mask(mask, index, points) != mask {
+        return None;
+    }
+    // SAFETY: the masked loads read only the `count` entries from `first`, which exist.
+    let gradient = lists
+        .gradients
+        .each_ref()
+        .map(|g| unsafe { _mm512_maskz_loadu_epi64(mask, g.as_ptr().add(first).cast()) });
+    Some((mask, index, gradient))
+}
+
+/// The density rate kernel, for velocity differences below 2^`difference_bits` (32-bit
+/// signed numbers when `NARROW`): returns false when the bound fails (`out` then holds
+/// nothing of use).
+///
+/// # Safety
+/// The processor must have AVX-512F; with `NARROW`, `difference_bits` must be at most 31.
+#[target_feature(enable = "avx512f")]
+unsafe fn density_rates_kernel<const NARROW: bool>(
+    lists: &NeighbourLists<Fx>,
+    velocities: &[Vec3<Fx>],
+    difference_bits: u32,
+    out: &mut Vec<Fx>,
+) -> bool {
+    out.clear();
+    let zero = _mm512_setzero_si512();
+    let base = velocities.as_ptr().cast::<i64>();
+    let points = _mm512_set1_epi64(velocities.len() as i64);
+    let entries = lists
+        .gradients
+        .iter()
+        .fold(lists.index.len(), |n, g| n.min(g.len()));
+    let mut gradient_bits = zero;
+    let mut longest = 0;
+    for (i, vi) in velocities.iter().enumerate().take(lists.len()) {
+        let range = lists.range(i);
+        if range.end > entries {
+            return false;
+        }
+        longest = longest.max(range.len());
+        let vi = [vi.x, vi.y, vi.z].map(|c| _mm512_set1_epi64(c.to_bits()));
+        let mut sum = zero;
+        let mut first = range.start;
+        while first < range.end {
+            let count = (range.end - first).min(8);
+            // SAFETY: `first + count` is within the row, which ends within the entries.
+            let Some((mask, index, gradient)) =
+                (unsafe { load_entries(lists, first, count, points) })
+            else {
+                return false;
+            };
+            let words = _mm512_add_epi64(_mm512_slli_epi64::<1>(index), index);
+            for c in 0..3 {
+                let at = _mm512_add_epi64(words, _mm512_set1_epi64(c));
+                // SAFETY: every index in use is below `velocities.len()` (`load_entries`).
+                let vj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, at, base) };
+                let g = gradient[c as usize];
+                gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
+                sum = _mm512_add_epi64(
+                    sum,
+                    product::<NARROW>(g, _mm512_sub_epi64(vi[c as usize], vj)),
+                );
+            }
+            first += count;
+        }
+        out.push(Fx::from_bits(_mm512_reduce_add_epi64(sum)));
+    }
+    let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
+    within_bound(a, difference_bits, 3 * longest)
+}
+
+/// The pressure push kernel, for stiffness sums below 2^`sum_bits` (32-bit signed numbers
+/// when `NARROW`): returns false when the bound fails (`out` then holds nothing of use).
+///
+/// # Safety
+/// The processor must have AVX-512F; with `NARROW`, `sum_bits` must be at most 31.
+#[target_feature(enable = "avx512f")]
+unsafe fn pressure_pushes_kernel<const NARROW: bool>(
+    lists: &NeighbourLists<Fx>,
+    stiffness: &[Fx],
+    sum_bits: u32,
+    out: &mut Vec<Vec3<Fx>>,
+) -> bool {
+    out.clear();
+    let zero = _mm512_setzero_si512();
+    let base = stiffness.as_ptr().cast::<i64>();
+    let points = _mm512_set1_epi64(stiffness.len() as i64);
+    let entries = lists
+        .gradients
+        .iter()
+        .fold(lists.index.len(), |n, g| n.min(g.len()));
+    let mut gradient_bits = zero;
+    let mut longest = 0;
+    for (i, ki) in stiffness.iter().enumerate().take(lists.len()) {
+        let range = lists.range(i);
+        if range.end > entries {
+            return false;
+        }
+        longest = longest.max(range.len());
+        let ki = _mm512_set1_epi64(ki.to_bits());
+        let mut push = [zero; 3];
+        let mut first = range.start;
+        while first < range.end {
+            let count = (range.end - first).min(8);
+            // SAFETY: `first + count` is within the row, which ends within the entries.
+            let Some((mask, index, gradient)) =
+                (unsafe { load_entries(lists, first, count, points) })
+            else {
+                return false;
+            };
+            // SAFETY: every index in use is below `stiffness.len()` (`load_entries`).
+            let kj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, index, base) };
+            let k = _mm512_add_epi64(ki, kj);
+            for (p, g) in push.iter_mut().zip(gradient) {
+                gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
+                *p = _mm512_add_epi64(*p, product::<NARROW>(g, k));
+            }
+            first += count;
+        }
+        let [x, y, z] = push.map(|p| Fx::from_bits(_mm512_reduce_add_epi64(p)));
+        out.push(Vec3::new(x, y, z));
+    }
+    let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
+    within_bound(a, sum_bits, longest)
+}

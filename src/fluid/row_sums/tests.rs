@@ -1,0 +1,167 @@
+//! The row sums' dispatch (the AVX-512 kernel where it runs) against the scalar form, bit
+//! for bit and saturation for saturation, on random rows at everyday magnitudes, near the
+//! kernel's bound and at the ends of the range.
+
+use super::{density_rates, density_rates_scalar, pressure_pushes, pressure_pushes_scalar};
+use crate::fluid::neighbours::NeighbourLists;
+use crate::math::saturation::count_saturations;
+use crate::math::{Fx, Pcg32, Vec3};
+
+/// A random value of at most `bits` bits of magnitude (as raw I32F32 bits), either sign;
+/// one in eight is ±2^bits exactly, and with `extremes` one in sixteen is `i64::MIN` or
+/// `i64::MAX`.
+fn value(rng: &mut Pcg32, bits: u32, extremes: bool) -> Fx {
+    let pick = rng.below(16);
+    if extremes && pick == 0 {
+        return Fx::from_bits(if rng.below(2) == 0 {
+            i64::MIN
+        } else {
+            i64::MAX
+        });
+    }
+    let magnitude = if pick < 2 {
+        1i64 << bits.min(62)
+    } else {
+        (rng.next_u64() >> (64 - bits.min(63))) as i64
+    };
+    Fx::from_bits(if rng.below(2) == 0 {
+        magnitude
+    } else {
+        -magnitude
+    })
+}
+
+fn vector(rng: &mut Pcg32, bits: u32, extremes: bool) -> Vec3<Fx> {
+    Vec3::new(
+        value(rng, bits, extremes),
+        value(rng, bits, extremes),
+        value(rng, bits, extremes),
+    )
+}
+
+/// `n` rows of 0 to `longest` entries (every length mod 8 occurs), random neighbours below
+/// `n`, gradients of `gradient_bits` bits.
+fn lists(
+    rng: &mut Pcg32,
+    n: usize,
+    longest: u32,
+    gradient_bits: u32,
+    extremes: bool,
+) -> NeighbourLists<Fx> {
+    let mut lists = NeighbourLists::default();
+    lists.start.push(0);
+    for _ in 0..n {
+        for _ in 0..rng.below(longest + 1) {
+            lists.index.push(rng.below(n as u32));
+            lists.value.push(Fx::from_bits(0));
+            let g = vector(rng, gradient_bits, extremes);
+            for (list, c) in lists.gradients.iter_mut().zip([g.x, g.y, g.z]) {
+                list.push(c);
+            }
+        }
+        lists.start.push(lists.index.len() as u32);
+    }
+    lists
+}
+
+/// Compares both sums on one random case; returns whether the dispatched results came from
+/// the kernel (where it exists) rather than from the scalar fallback.
+fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) -> bool {
+    let mut rng = Pcg32::new(seed, 7);
+    let lists = lists(&mut rng, n, longest, bits[0], extremes);
+    let velocities: Vec<_> = (0..n)
+        .map(|_| vector(&mut rng, bits[1], extremes))
+        .collect();
+    let stiffness: Vec<_> = (0..n).map(|_| value(&mut rng, bits[1], extremes)).collect();
+
+    let (mut fast, mut slow) = (Vec::new(), Vec::new());
+    let ((), fast_count) = count_saturations(|| density_rates(&lists, &velocities, &mut fast));
+    let ((), slow_count) =
+        count_saturations(|| density_rates_scalar(&lists, &velocities, &mut slow));
+    assert_eq!(fast, slow, "density rates, seed {seed}");
+    assert_eq!(
+        fast_count, slow_count,
+        "density rate saturations, seed {seed}"
+    );
+
+    let (mut fast, mut slow) = (Vec::new(), Vec::new());
+    let ((), fast_count) = count_saturations(|| pressure_pushes(&lists, &stiffness, &mut fast));
+    let ((), slow_count) =
+        count_saturations(|| pressure_pushes_scalar(&lists, &stiffness, &mut slow));
+    assert_eq!(fast, slow, "pressure pushes, seed {seed}");
+    assert_eq!(
+        fast_count, slow_count,
+        "pressure push saturations, seed {seed}"
+    );
+    kernel_takes(&lists, &velocities, &stiffness)
+}
+
+/// Whether both kernels take the case (not falling back to the scalar form).
+#[cfg(target_arch = "x86_64")]
+fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: &[Fx]) -> bool {
+    super::avx512::density_rates(lists, velocities, &mut Vec::new())
+        && super::avx512::pressure_pushes(lists, stiffness, &mut Vec::new())
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn kernel_takes(_: &NeighbourLists<Fx>, _: &[Vec3<Fx>], _: &[Fx]) -> bool {
+    false
+}
+
+/// Whether this processor runs the kernels.
+fn kernels_present() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return std::arch::is_x86_feature_detected!("avx512f");
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
+#[test]
+fn everyday_magnitudes_take_the_kernel_and_match() {
+    // Gradients up to 2⁴¹ (about 500 1/m), velocities and stiffnesses up to 2³⁶ (16).
+    for seed in 0..40 {
+        let taken = compare(seed, 300, 40, [41, 36], false);
+        assert_eq!(taken, kernels_present(), "seed {seed}");
+    }
+}
+
+#[test]
+fn magnitudes_near_the_bound_match() {
+    // Around the bound: some cases pass the check, some fall back; all must match.
+    let mut taken = 0;
+    for seed in 0..200 {
+        let a = 40 + (seed % 20) as u32;
+        let b = 30 + (seed % 23) as u32;
+        taken += u32::from(compare(seed, 64, 70, [a, b], false));
+    }
+    if kernels_present() {
+        assert!(taken > 0 && taken < 200, "{taken} of 200 taken");
+    }
+}
+
+#[test]
+fn extreme_values_saturate_as_the_scalar_form() {
+    for seed in 0..100 {
+        let taken = compare(seed, 40, 20, [62, 62], true);
+        assert!(!taken, "seed {seed}: extremes must fall back");
+    }
+}
+
+#[test]
+fn empty_and_short_rows_match() {
+    for seed in 0..20 {
+        compare(seed, 1, 3, [41, 36], false);
+        compare(seed, 17, 0, [41, 36], false);
+    }
+}
+
+#[test]
+fn small_velocities_and_stiffnesses_take_the_narrow_products_and_match() {
+    // Magnitudes up to 2²⁹ and 2³⁰ (0.125 and 0.25): differences and sums of 32-bit signed
+    // numbers (the two-multiply product) and just beyond.
+    for seed in 0..40 {
+        let bits = 29 + (seed % 2) as u32;
+        let taken = compare(seed, 300, 40, [41, bits], false);
+        assert_eq!(taken, kernels_present(), "seed {seed}");
+    }
+}
