@@ -1,0 +1,254 @@
+//! The distance rows of I32F32 in AVX-512: eight rows side by side, one `i64` lane per
+//! row, with the bits of the scalar row ([`Distances::solve_row`]).
+//!
+//! # Why side by side gives the same bits
+//!
+//! Gauss–Seidel visits the rows in order, each reading the positions the rows before it
+//! wrote. Rows that share no vertex read nothing the others write, so solving eight such
+//! rows together reads and writes exactly what solving them one after another does. The
+//! blocks of eight consecutive rows that share no vertex are listed once per substep length
+//! ([`independent_blocks`]); in colour order nearly every block is one (rows of one colour
+//! share no vertex). The other blocks and the rows past the last multiple of eight take the
+//! scalar row, and so does any lane the kernel leaves (below): since a block's lanes are
+//! independent, solving such a lane after the others gives the same bits too.
+//!
+//! # Exactness
+//!
+//! The kernel computes every operation of the scalar row, in the same order, modulo 2⁶⁴.
+//! It checks that every value it loads (the ends' positions, ℓ₀, y₀, μ, sₐ, s_b, ρ) and
+//! d, |d|², |d|²y₀, the residual r, n̂ and the two steps sₐr and s_b r lie in [−2⁴⁶, 2⁴⁶)
+//! as raw bits (|x| < 16384 in I32F32). Then every product is of values below 2⁴⁸ and
+//! below 2⁶² after rounding, and every sum or difference has two or three such terms or
+//! checked values: no operation of the row leaves the `i64` range. (In the lanes that take
+//! the series: |δ| ≤ 2³⁰ raw, so the series lies in (2³¹, 2³³) and y = y₀·series below
+//! 2⁴⁷ + 1; |d|²y and d·y are below 2⁶¹, r below 2⁶² + 2⁴⁷.) The checked operators then
+//! saturate nowhere and give the exact rounded values, which the kernel's exact residues
+//! equal; and the scalar row, whether its guard stays clear or it reruns checked, gives the
+//! checked operators' values.
+//!
+//! The kernel leaves to the scalar row the lanes where a check fails and the lanes whose q
+//! is outside [3/4, 5/4] (1/|d| from a square root, or coincident ends): it writes nothing
+//! in those lanes.
+//!
+//! The lane arithmetic (products from 32-bit halves, the bound check) is in
+//! [`lanes`](crate::soft::lanes).
+
+use core::any::Any;
+use core::arch::x86_64::{
+    __m256i, __m512i, __mmask8, _mm256_loadu_si256, _mm512_cmpge_epi64_mask,
+    _mm512_cmpge_epu64_mask, _mm512_cmple_epi64_mask, _mm512_cvtepu32_epi64,
+    _mm512_i64gather_epi64, _mm512_mask_storeu_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
+    _mm512_slli_epi64, _mm512_storeu_si512,
+};
+
+use super::{DistanceFactors, Distances};
+use crate::math::{Fx, Real, Vec3};
+use crate::soft::lanes::{LANES, add, load, mul, out_of_bound, out_of_bound3, splat, split, sub};
+
+/// Whether rows 8k..8k+8 (ends `a`, `b`) share no vertex, for each whole block k.
+pub(super) fn independent_blocks(a: &[u32], b: &[u32]) -> Vec<bool> {
+    a.chunks_exact(LANES)
+        .zip(b.chunks_exact(LANES))
+        .map(|(a, b)| {
+            let mut ends = [0u32; 2 * LANES];
+            ends[..LANES].copy_from_slice(a);
+            ends[LANES..].copy_from_slice(b);
+            ends.sort_unstable();
+            ends.windows(2).all(|w| w[0] != w[1])
+        })
+        .collect()
+}
+
+/// One Gauss–Seidel pass over every row with the kernel when `R` is I32F32 and the
+/// processor has AVX-512F; returns whether it ran (if not, nothing was written).
+pub(super) fn solve<R: Real>(
+    rows: &mut Distances<R>,
+    positions: &mut [Vec3<R>],
+    f: &DistanceFactors<R>,
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let (Some(rows), Some(f)) = (
+        (rows as &mut dyn Any).downcast_mut::<Distances<Fx>>(),
+        (f as &dyn Any).downcast_ref::<DistanceFactors<Fx>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
+    let positions = unsafe { &mut *(core::ptr::from_mut(positions) as *mut [Vec3<Fx>]) };
+    // SAFETY: AVX-512F was detected on this processor just above.
+    unsafe { solve_rows(rows, positions, f) };
+    true
+}
+
+/// Every row in order: the independent blocks with the kernel and what it leaves, the
+/// other rows, with the scalar row.
+///
+/// # Safety
+/// The processor must have AVX-512F.
+#[target_feature(enable = "avx512f")]
+unsafe fn solve_rows(
+    rows: &mut Distances<Fx>,
+    positions: &mut [Vec3<Fx>],
+    f: &DistanceFactors<Fx>,
+) {
+    let count = rows.a.len();
+    for k in 0..count / LANES {
+        let start = k * LANES;
+        let done = if f.independent.get(k).copied().unwrap_or(false) {
+            solve_block(rows, positions, f, start)
+        } else {
+            0
+        };
+        for l in 0..LANES {
+            if done & (1 << l) == 0 {
+                rows.solve_row(positions, f, start + l);
+            }
+        }
+    }
+    for c in count - count % LANES..count {
+        rows.solve_row(positions, f, c);
+    }
+}
+
+/// The kernel on rows `start..start + 8`, which share no vertex: returns the lanes it
+/// solved and wrote.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn solve_block(
+    rows: &mut Distances<Fx>,
+    positions: &mut [Vec3<Fx>],
+    f: &DistanceFactors<Fx>,
+    start: usize,
+) -> __mmask8 {
+    let block = start..start + LANES;
+    let (a, b) = (ends(&rows.a[block.clone()]), ends(&rows.b[block.clone()]));
+    let vertices = _mm512_set1_epi64(positions.len() as i64);
+    if _mm512_cmpge_epu64_mask(a, vertices) | _mm512_cmpge_epu64_mask(b, vertices) != 0 {
+        return 0;
+    }
+    // Each vertex is three words.
+    let (words_a, words_b) = (
+        add(_mm512_slli_epi64::<1>(a), a),
+        add(_mm512_slli_epi64::<1>(b), b),
+    );
+    let base = positions.as_mut_ptr().cast::<i64>();
+    // SAFETY: every lane's vertex index was checked against the positions just above.
+    let (xa, xb) = unsafe { (gather3(base, words_a), gather3(base, words_b)) };
+    let rest = load(&rows.rest[block.clone()]);
+    let previous = load(&rows.inv_length[block.clone()]);
+    let mu = load(&rows.lambda[block.clone()]);
+    let share_a = load(&f.share_a[block.clone()]);
+    let share_b = load(&f.share_b[block.clone()]);
+    let relax = load(&f.relax[block.clone()]);
+    let mut bad = out_of_bound3(xa)
+        | out_of_bound3(xb)
+        | out_of_bound(rest)
+        | out_of_bound(previous)
+        | out_of_bound(mu)
+        | out_of_bound(share_a)
+        | out_of_bound(share_b)
+        | out_of_bound(relax);
+
+    let d = [sub(xa[0], xb[0]), sub(xa[1], xb[1]), sub(xa[2], xb[2])];
+    bad |= out_of_bound3(d);
+    let d = d.map(|x| split(x));
+    let length_squared = add(add(mul(d[0], d[0]), mul(d[1], d[1])), mul(d[2], d[2]));
+    bad |= out_of_bound(length_squared);
+    let (length_squared, previous) = (split(length_squared), split(previous));
+    let scaled = mul(length_squared, previous);
+    bad |= out_of_bound(scaled);
+    let q = mul(split(scaled), previous);
+    let series_lanes = _mm512_cmpge_epi64_mask(q, splat(Fx::from_ratio(3, 4)))
+        & _mm512_cmple_epi64_mask(q, splat(Fx::from_ratio(5, 4)));
+    let delta = split(sub(q, splat(Fx::ONE)));
+    let half = mul(delta, split(splat(Fx::HALF)));
+    let square = mul(delta, delta);
+    let quadratic = mul(split(square), split(splat(Fx::from_ratio(3, 8))));
+    let linear = sub(splat(Fx::ONE), half);
+    let series = add(linear, quadratic);
+    let inv_length = mul(previous, split(series));
+    let y = split(inv_length);
+    let length = mul(length_squared, y);
+    let shortfall = sub(rest, length);
+    let residual = sub(shortfall, mu);
+    bad |= out_of_bound(residual);
+    let r = split(residual);
+    let new_mu = add(mu, mul(split(relax), r));
+    let direction = [mul(d[0], y), mul(d[1], y), mul(d[2], y)];
+    bad |= out_of_bound3(direction);
+    let step_a = mul(split(share_a), r);
+    let step_b = mul(split(share_b), r);
+    bad |= out_of_bound(step_a) | out_of_bound(step_b);
+    let step_a = split(step_a);
+    let minus_b = split(sub(_mm512_setzero_si512(), step_b));
+    let direction = direction.map(|x| split(x));
+    let new_a = [0, 1, 2].map(|i| add(xa[i], mul(direction[i], step_a)));
+    let new_b = [0, 1, 2].map(|i| add(xb[i], mul(direction[i], minus_b)));
+
+    let solved = series_lanes & !bad;
+    if solved != 0 {
+        let (new_a, new_b) = (lanes3(new_a), lanes3(new_b));
+        for l in 0..LANES {
+            if solved & (1 << l) != 0 {
+                let (a, b) = (rows.a[start + l] as usize, rows.b[start + l] as usize);
+                positions[a] = Vec3::new(
+                    Fx::from_bits(new_a[0][l]),
+                    Fx::from_bits(new_a[1][l]),
+                    Fx::from_bits(new_a[2][l]),
+                );
+                positions[b] = Vec3::new(
+                    Fx::from_bits(new_b[0][l]),
+                    Fx::from_bits(new_b[1][l]),
+                    Fx::from_bits(new_b[2][l]),
+                );
+            }
+        }
+        store(&mut rows.lambda[block.clone()], solved, new_mu);
+        store(&mut rows.inv_length[block], solved, inv_length);
+    }
+    solved
+}
+
+/// Eight vertex indices as `i64` lanes.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn ends(indices: &[u32]) -> __m512i {
+    let indices = &indices[..LANES];
+    // SAFETY: eight `u32`: 32 readable bytes.
+    _mm512_cvtepu32_epi64(unsafe { _mm256_loadu_si256(indices.as_ptr().cast::<__m256i>()) })
+}
+
+/// Writes the lanes of `lanes` of `value` to eight values.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn store(values: &mut [Fx], lanes: __mmask8, value: __m512i) {
+    let values = &mut values[..LANES];
+    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
+    unsafe { _mm512_mask_storeu_epi64(values.as_mut_ptr().cast(), lanes, value) }
+}
+
+/// The three components of the vertices whose first words are `words`.
+///
+/// # Safety
+/// Every lane's three words must lie in the positions at `base`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+unsafe fn gather3(base: *const i64, words: __m512i) -> [__m512i; 3] {
+    // SAFETY: the caller's promise.
+    [0, 1, 2]
+        .map(|k| unsafe { _mm512_i64gather_epi64::<8>(add(words, _mm512_set1_epi64(k)), base) })
+}
+
+/// The lanes of three vectors.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn lanes3(value: [__m512i; 3]) -> [[i64; LANES]; 3] {
+    let mut lanes = [[0; LANES]; 3];
+    for (out, v) in lanes.iter_mut().zip(value) {
+        // SAFETY: 64 writable bytes.
+        unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), v) };
+    }
+    lanes
+}
