@@ -1,6 +1,7 @@
 //! I32F32 arithmetic on eight `i64` lanes in AVX-512F, shared by the soft-body kernels
 //! (the distance rows, the prediction and the velocity update): exact sums and differences
-//! modulo 2⁶⁴, the checked `*` of values below 2⁶² from 32-bit halves, and the bound check
+//! modulo 2⁶⁴, the checked `*` and the fused dot product of values below 2⁶² from 32-bit
+//! halves, and the bound check
 //! that proves no operation of a kernel leaves the `i64` range.
 //!
 //! # Products
@@ -18,8 +19,10 @@
 //! is split into its halves once ([`Split`]).
 
 use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_add_epi64, _mm512_cmpge_epu64_mask, _mm512_loadu_si512,
-    _mm512_mul_epi32, _mm512_set1_epi64, _mm512_slli_epi64, _mm512_srai_epi64, _mm512_sub_epi64,
+    __m256i, __m512i, __mmask8, _mm256_loadu_si256, _mm512_add_epi64, _mm512_and_si512,
+    _mm512_cmpge_epu64_mask, _mm512_cvtepu32_epi64, _mm512_i64gather_epi64, _mm512_loadu_si512,
+    _mm512_mul_epi32, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
+    _mm512_srai_epi64, _mm512_sub_epi64,
 };
 use core::mem::size_of;
 
@@ -68,6 +71,31 @@ pub(crate) fn load(values: &[Fx]) -> __m512i {
     unsafe { _mm512_loadu_si512(values.as_ptr().cast()) }
 }
 
+/// The positions of the eight vertices `indices` as x, y and z lanes, or `None` if an
+/// index is out of bounds.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn gather3(positions: &[Vec3<Fx>], indices: &[u32]) -> Option<[__m512i; 3]> {
+    let indices = &indices[..LANES];
+    // SAFETY: eight `u32`: 32 readable bytes.
+    let indices =
+        _mm512_cvtepu32_epi64(unsafe { _mm256_loadu_si256(indices.as_ptr().cast::<__m256i>()) });
+    let count = _mm512_set1_epi64(positions.len() as i64);
+    if _mm512_cmpge_epu64_mask(indices, count) != 0 {
+        return None;
+    }
+    // Each vertex is three words.
+    let words = add(_mm512_slli_epi64::<1>(indices), indices);
+    let base = positions.as_ptr().cast::<i64>();
+    // SAFETY: every lane's index was checked against the positions just above, and a
+    // `Vec3<Fx>` is three `i64`.
+    Some(
+        [0, 1, 2].map(|k| unsafe {
+            _mm512_i64gather_epi64::<8>(add(words, _mm512_set1_epi64(k)), base)
+        }),
+    )
+}
+
 /// A value with its high half a_h = ⌊(a + 2³¹)/2³²⌋, ready for [`mul`].
 #[derive(Clone, Copy)]
 pub(crate) struct Split {
@@ -100,6 +128,30 @@ pub(crate) fn mul(a: Split, b: Split) -> __m512i {
         _mm512_set1_epi64(1 << 31),
     ));
     add(add(hh, cross), low)
+}
+
+/// The fused dot product of values below 2⁶²: the exact Σ aᵢbᵢ rounded once, as
+/// [`Real::dot3`](crate::math::Real::dot3) gives it when it does not saturate. Each
+/// a_l·b_l is split into q·2³² + r with 0 ≤ r < 2³², so that
+/// ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (a_h·b_h·2³² + a_h·b_l + a_l·b_h + q) + ⌊(Σ r + 2³¹)/2³²⌋,
+/// and Σ r + 2³¹ < 2³⁴ cannot overflow.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn dot3(a: [Split; 3], b: [Split; 3]) -> __m512i {
+    let mask = _mm512_set1_epi64(0xffff_ffff);
+    let mut whole = _mm512_setzero_si512();
+    let mut remainders = _mm512_setzero_si512();
+    for i in 0..3 {
+        let hh = _mm512_slli_epi64::<32>(_mm512_mul_epi32(a[i].high, b[i].high));
+        let cross = add(
+            _mm512_mul_epi32(a[i].high, b[i].value),
+            _mm512_mul_epi32(a[i].value, b[i].high),
+        );
+        let low = _mm512_mul_epi32(a[i].value, b[i].value);
+        whole = add(whole, add(add(hh, cross), _mm512_srai_epi64::<32>(low)));
+        remainders = add(remainders, _mm512_and_si512(low, mask));
+    }
+    add(whole, split(remainders).high)
 }
 
 /// The lanes where x lies outside [−2⁴⁶, 2⁴⁶) ([`BOUND_BITS`]).

@@ -52,6 +52,10 @@ impl<R: Real> SoftSystem<R> {
         let inv_h2 = inv_h * inv_h;
         let w = &self.vertices.inv_mass;
         scratch.distance = self.distances.factors(w, inv_h2);
+        #[cfg(target_arch = "x86_64")]
+        {
+            scratch.tether_blocks = self.tethers.independent_blocks();
+        }
         (scratch.hinge_share, scratch.hinge_relax) = self.hinges.factors(w, inv_h2);
         (scratch.attachment_share, scratch.attachment_relax) = self.attachments.factors(w, inv_h2);
         scratch.inv_h2 = inv_h2;
@@ -70,7 +74,11 @@ impl<R: Real> SoftSystem<R> {
         let w = &self.vertices.inv_mass;
         let s = &self.scratch;
         for _ in 0..self.settings.iterations {
-            self.tethers.solve(x);
+            self.tethers.solve(
+                x,
+                #[cfg(target_arch = "x86_64")]
+                &s.tether_blocks,
+            );
             self.distances.solve(x, &s.distance);
             self.hinges.solve(x, &s.hinge_share, &s.hinge_relax);
             self.tetrahedra.solve(x, w, s.inv_h2);

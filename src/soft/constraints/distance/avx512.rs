@@ -35,15 +35,15 @@
 
 use core::any::Any;
 use core::arch::x86_64::{
-    __m256i, __m512i, __mmask8, _mm256_loadu_si256, _mm512_cmpge_epi64_mask,
-    _mm512_cmpge_epu64_mask, _mm512_cmple_epi64_mask, _mm512_cvtepu32_epi64,
-    _mm512_i64gather_epi64, _mm512_mask_storeu_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
-    _mm512_slli_epi64, _mm512_storeu_si512,
+    __m512i, __mmask8, _mm512_cmpge_epi64_mask, _mm512_cmple_epi64_mask, _mm512_mask_storeu_epi64,
+    _mm512_setzero_si512, _mm512_storeu_si512,
 };
 
 use super::{DistanceFactors, Distances};
 use crate::math::{Fx, Real, Vec3};
-use crate::soft::lanes::{LANES, add, load, mul, out_of_bound, out_of_bound3, splat, split, sub};
+use crate::soft::lanes::{
+    LANES, add, gather3, load, mul, out_of_bound, out_of_bound3, splat, split, sub,
+};
 
 /// Whether rows 8k..8k+8 (ends `a`, `b`) share no vertex, for each whole block k.
 pub(super) fn independent_blocks(a: &[u32], b: &[u32]) -> Vec<bool> {
@@ -123,19 +123,12 @@ fn solve_block(
     start: usize,
 ) -> __mmask8 {
     let block = start..start + LANES;
-    let (a, b) = (ends(&rows.a[block.clone()]), ends(&rows.b[block.clone()]));
-    let vertices = _mm512_set1_epi64(positions.len() as i64);
-    if _mm512_cmpge_epu64_mask(a, vertices) | _mm512_cmpge_epu64_mask(b, vertices) != 0 {
+    let (Some(xa), Some(xb)) = (
+        gather3(positions, &rows.a[block.clone()]),
+        gather3(positions, &rows.b[block.clone()]),
+    ) else {
         return 0;
-    }
-    // Each vertex is three words.
-    let (words_a, words_b) = (
-        add(_mm512_slli_epi64::<1>(a), a),
-        add(_mm512_slli_epi64::<1>(b), b),
-    );
-    let base = positions.as_mut_ptr().cast::<i64>();
-    // SAFETY: every lane's vertex index was checked against the positions just above.
-    let (xa, xb) = unsafe { (gather3(base, words_a), gather3(base, words_b)) };
+    };
     let rest = load(&rows.rest[block.clone()]);
     let previous = load(&rows.inv_length[block.clone()]);
     let mu = load(&rows.lambda[block.clone()]);
@@ -211,15 +204,6 @@ fn solve_block(
     solved
 }
 
-/// Eight vertex indices as `i64` lanes.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn ends(indices: &[u32]) -> __m512i {
-    let indices = &indices[..LANES];
-    // SAFETY: eight `u32`: 32 readable bytes.
-    _mm512_cvtepu32_epi64(unsafe { _mm256_loadu_si256(indices.as_ptr().cast::<__m256i>()) })
-}
-
 /// Writes the lanes of `lanes` of `value` to eight values.
 #[inline]
 #[target_feature(enable = "avx512f")]
@@ -227,18 +211,6 @@ fn store(values: &mut [Fx], lanes: __mmask8, value: __m512i) {
     let values = &mut values[..LANES];
     // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
     unsafe { _mm512_mask_storeu_epi64(values.as_mut_ptr().cast(), lanes, value) }
-}
-
-/// The three components of the vertices whose first words are `words`.
-///
-/// # Safety
-/// Every lane's three words must lie in the positions at `base`.
-#[inline]
-#[target_feature(enable = "avx512f")]
-unsafe fn gather3(base: *const i64, words: __m512i) -> [__m512i; 3] {
-    // SAFETY: the caller's promise.
-    [0, 1, 2]
-        .map(|k| unsafe { _mm512_i64gather_epi64::<8>(add(words, _mm512_set1_epi64(k)), base) })
 }
 
 /// The lanes of three vectors.

@@ -1,0 +1,156 @@
+//! The tethers of I32F32 in AVX-512: eight rows side by side find which are slack, with
+//! the bits of the scalar row ([`Tethers::solve_row`]).
+//!
+//! A slack row (|d|² ≤ ℓ₀²) changes nothing; a taut one moves its vertex. The kernel tests
+//! eight rows at once and leaves the rows it does not prove slack to the scalar row, in
+//! order. That gives the bits of the rows one after another when the block's rows are
+//! independent: no two move the same vertex and none's anchor is another's vertex
+//! ([`Tethers::independent_blocks`]), so each row reads the same positions whether the
+//! taut rows before it in the block have moved their vertices or not. In the tethers'
+//! round order (see `tether_order` in the builder) nearly every block is independent.
+//!
+//! # Exactness
+//!
+//! The scalar test compares the fused |d|² = d·d (the exact sum rounded once) with the
+//! checked ℓ₀·ℓ₀. The kernel checks that both ends' positions, d and ℓ₀ lie in
+//! [−2⁴⁶, 2⁴⁶) as raw bits: then d·d is below 2⁹⁴ before rounding and ℓ₀² below 2⁶⁰ after,
+//! neither saturates, and the kernel's exact values
+//! ([`dot3`](crate::soft::lanes::dot3), [`mul`](crate::soft::lanes::mul)) are the scalar
+//! ones. A lane where a check fails is not proved slack and takes the scalar row.
+
+use core::any::Any;
+use core::arch::x86_64::{
+    __m512i, __mmask8, _mm512_cmple_epi64_mask, _mm512_loadu_si512, _mm512_setzero_si512,
+    _mm512_storeu_si512,
+};
+
+use super::Tethers;
+use crate::math::{Fx, Real, Vec3};
+use crate::soft::lanes::{
+    LANES, add, dot3, gather3, load, mul, out_of_bound, out_of_bound3, splat, split, sub,
+};
+
+impl<R: Real> Tethers<R> {
+    /// Whether rows 8k..8k+8 are independent (no two move the same vertex, none's anchor
+    /// is another's vertex), for each whole block k.
+    pub fn independent_blocks(&self) -> Vec<bool> {
+        self.vertex
+            .chunks_exact(LANES)
+            .zip(self.anchor.chunks_exact(LANES))
+            .map(|(vertices, anchors)| {
+                let mut moved = [0u32; LANES];
+                moved.copy_from_slice(vertices);
+                moved.sort_unstable();
+                moved.windows(2).all(|w| w[0] != w[1])
+                    && anchors.iter().all(|a| moved.binary_search(a).is_err())
+            })
+            .collect()
+    }
+}
+
+/// One pass over every row with the kernel when `R` is I32F32 and the processor has
+/// AVX-512F; returns whether it ran (if not, nothing was written).
+pub(super) fn solve<R: Real>(
+    rows: &Tethers<R>,
+    positions: &mut [Vec3<R>],
+    independent: &[bool],
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let Some(rows) = (rows as &dyn Any).downcast_ref::<Tethers<Fx>>() else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcast succeeded), so the slice's type is unchanged.
+    let positions = unsafe { &mut *(core::ptr::from_mut(positions) as *mut [Vec3<Fx>]) };
+    // SAFETY: AVX-512F was detected on this processor just above.
+    unsafe { solve_rows(rows, positions, independent) };
+    true
+}
+
+/// Every row in order: the independent blocks with the kernel and the scalar row for what
+/// it leaves; the other rows with the scalar row.
+///
+/// # Safety
+/// The processor must have AVX-512F.
+#[target_feature(enable = "avx512f")]
+unsafe fn solve_rows(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], independent: &[bool]) {
+    let count = rows.vertex.len();
+    for k in 0..count / LANES {
+        let start = k * LANES;
+        let done = if independent.get(k).copied().unwrap_or(false) {
+            solve_block(rows, positions, start)
+        } else {
+            0
+        };
+        for l in 0..LANES {
+            if done & (1 << l) == 0 {
+                rows.solve_row(positions, start + l);
+            }
+        }
+    }
+    for t in count - count % LANES..count {
+        rows.solve_row(positions, t);
+    }
+}
+
+/// The kernel on the independent rows `start..start + 8`: returns the lanes it solved (the
+/// slack ones, which write nothing, and the taut ones it wrote).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn solve_block(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> __mmask8 {
+    let block = start..start + LANES;
+    let (Some(x), Some(p)) = (
+        gather3(positions, &rows.vertex[block.clone()]),
+        gather3(positions, &rows.anchor[block.clone()]),
+    ) else {
+        return 0;
+    };
+    let rest = load(&rows.rest[block]);
+    let d = [sub(x[0], p[0]), sub(x[1], p[1]), sub(x[2], p[2])];
+    let bad = out_of_bound3(x) | out_of_bound3(p) | out_of_bound3(d) | out_of_bound(rest);
+    let d = d.map(|c| split(c));
+    let rest = split(rest);
+    let length_squared = dot3(d, d);
+    let slack = _mm512_cmple_epi64_mask(length_squared, mul(rest, rest)) & !bad;
+    let taut = !slack & !bad;
+    if taut == 0 {
+        return slack;
+    }
+    // 1/|d| per taut lane with the scalar square root (|d|² > ℓ₀² ≥ 0, so it never
+    // saturates); the lanes are independent, so the processor overlaps them.
+    let squares = lanes(length_squared);
+    let mut inverse = [0i64; LANES];
+    for l in 0..LANES {
+        if taut & (1 << l) != 0 {
+            inverse[l] = Fx::from_bits(squares[l]).rsqrt().to_bits();
+        }
+    }
+    // SAFETY: 64 readable bytes.
+    let inverse = unsafe { _mm512_loadu_si512(inverse.as_ptr().cast()) };
+    let shrink = sub(splat(Fx::ONE), mul(rest, split(inverse)));
+    let minus = sub(_mm512_setzero_si512(), shrink);
+    let taut = taut & !(out_of_bound(inverse) | out_of_bound(minus));
+    let minus = split(minus);
+    let moved = [0, 1, 2].map(|k| lanes(add(x[k], mul(d[k], minus))));
+    for l in 0..LANES {
+        if taut & (1 << l) != 0 {
+            positions[rows.vertex[start + l] as usize] = Vec3::new(
+                Fx::from_bits(moved[0][l]),
+                Fx::from_bits(moved[1][l]),
+                Fx::from_bits(moved[2][l]),
+            );
+        }
+    }
+    slack | taut
+}
+
+/// The lanes of a vector.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn lanes(value: __m512i) -> [i64; LANES] {
+    let mut lanes = [0; LANES];
+    // SAFETY: 64 writable bytes.
+    unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) };
+    lanes
+}
