@@ -19,9 +19,11 @@
 //! is split into its halves once ([`Split`]).
 
 use core::arch::x86_64::{
-    __m256i, __m512i, __mmask8, _mm256_loadu_si256, _mm512_add_epi64, _mm512_and_si512,
-    _mm512_cmpge_epu64_mask, _mm512_cvtepu32_epi64, _mm512_i64gather_epi64, _mm512_loadu_si512,
-    _mm512_mul_epi32, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
+    __m512i, __mmask8, _mm_cvtsi128_si64, _mm_loadl_epi64, _mm_loadu_si128, _mm_storel_epi64,
+    _mm_storeu_si128, _mm512_add_epi64, _mm512_and_si512, _mm512_castsi128_si512,
+    _mm512_castsi512_si128, _mm512_cmpge_epu64_mask, _mm512_extracti32x4_epi32, _mm512_inserti32x4,
+    _mm512_loadu_si512, _mm512_mul_epi32, _mm512_permutex2var_epi64, _mm512_permutexvar_epi64,
+    _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
     _mm512_srai_epi64, _mm512_sub_epi64,
 };
 use core::mem::size_of;
@@ -72,28 +74,86 @@ pub(crate) fn load(values: &[Fx]) -> __m512i {
 }
 
 /// The positions of the eight vertices `indices` as x, y and z lanes, or `None` if an
-/// index is out of bounds.
+/// index is out of bounds: eight loads of three words and a transpose (the processor's
+/// gather instructions are slower on some cores).
 #[inline]
 #[target_feature(enable = "avx512f")]
 pub(crate) fn gather3(positions: &[Vec3<Fx>], indices: &[u32]) -> Option<[__m512i; 3]> {
     let indices = &indices[..LANES];
-    // SAFETY: eight `u32`: 32 readable bytes.
-    let indices =
-        _mm512_cvtepu32_epi64(unsafe { _mm256_loadu_si256(indices.as_ptr().cast::<__m256i>()) });
-    let count = _mm512_set1_epi64(positions.len() as i64);
-    if _mm512_cmpge_epu64_mask(indices, count) != 0 {
-        return None;
+    let mut vertices = [_mm512_setzero_si512(); LANES];
+    for (vertex, &i) in vertices.iter_mut().zip(indices) {
+        let position = positions.get(i as usize)?;
+        let words = core::ptr::from_ref(position).cast::<i64>();
+        // SAFETY: a `Vec3<Fx>` is three readable `i64`: x and y, then z.
+        let (xy, z) = unsafe {
+            (
+                _mm_loadu_si128(words.cast()),
+                _mm_loadl_epi64(words.add(2).cast()),
+            )
+        };
+        *vertex = _mm512_inserti32x4::<1>(_mm512_castsi128_si512(xy), z);
     }
-    // Each vertex is three words.
-    let words = add(_mm512_slli_epi64::<1>(indices), indices);
-    let base = positions.as_ptr().cast::<i64>();
-    // SAFETY: every lane's index was checked against the positions just above, and a
-    // `Vec3<Fx>` is three `i64`.
-    Some(
-        [0, 1, 2].map(|k| unsafe {
-            _mm512_i64gather_epi64::<8>(add(words, _mm512_set1_epi64(k)), base)
-        }),
-    )
+    // Pairs: [x₀ x₁ y₀ y₁ z₀ z₁ · ·], then quads: [x₀..x₃ y₀..y₃] and [z₀..z₃ · · · ·].
+    let pair = _mm512_set_epi64(0, 0, 10, 2, 9, 1, 8, 0);
+    let [v0, v1, v2, v3, v4, v5, v6, v7] = vertices;
+    let (p01, p23) = (
+        _mm512_permutex2var_epi64(v0, pair, v1),
+        _mm512_permutex2var_epi64(v2, pair, v3),
+    );
+    let (p45, p67) = (
+        _mm512_permutex2var_epi64(v4, pair, v5),
+        _mm512_permutex2var_epi64(v6, pair, v7),
+    );
+    let xy = _mm512_set_epi64(11, 10, 3, 2, 9, 8, 1, 0);
+    let z = _mm512_set_epi64(0, 0, 0, 0, 13, 12, 5, 4);
+    let (xy0, xy4) = (
+        _mm512_permutex2var_epi64(p01, xy, p23),
+        _mm512_permutex2var_epi64(p45, xy, p67),
+    );
+    let (z0, z4) = (
+        _mm512_permutex2var_epi64(p01, z, p23),
+        _mm512_permutex2var_epi64(p45, z, p67),
+    );
+    let low = _mm512_set_epi64(11, 10, 9, 8, 3, 2, 1, 0);
+    let high = _mm512_set_epi64(15, 14, 13, 12, 7, 6, 5, 4);
+    Some([
+        _mm512_permutex2var_epi64(xy0, low, xy4),
+        _mm512_permutex2var_epi64(xy0, high, xy4),
+        _mm512_permutex2var_epi64(z0, low, z4),
+    ])
+}
+
+/// Lane `l` of a vector.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn lane(value: __m512i, l: usize) -> i64 {
+    let moved = _mm512_permutexvar_epi64(_mm512_set1_epi64(l as i64), value);
+    _mm_cvtsi128_si64(_mm512_castsi512_si128(moved))
+}
+
+/// Lane `l` of x, y and z lanes, in the low three lanes of a vector (for [`put3`]).
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn lane3(value: [__m512i; 3], l: usize) -> __m512i {
+    let l = l as i64;
+    let xy = _mm512_permutex2var_epi64(
+        value[0],
+        _mm512_set_epi64(0, 0, 0, 0, 0, 0, 8 + l, l),
+        value[1],
+    );
+    _mm512_permutex2var_epi64(xy, _mm512_set_epi64(0, 0, 0, 0, 0, 8 + l, 1, 0), value[2])
+}
+
+/// Writes the low three lanes of `value` (x, y, z) to `target`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn put3(target: &mut Vec3<Fx>, value: __m512i) {
+    let words = core::ptr::from_mut(target).cast::<i64>();
+    // SAFETY: a `Vec3<Fx>` is three writable `i64`: x and y, then z.
+    unsafe {
+        _mm_storeu_si128(words.cast(), _mm512_castsi512_si128(value));
+        _mm_storel_epi64(words.add(2).cast(), _mm512_extracti32x4_epi32::<1>(value));
+    }
 }
 
 /// A value with its high half a_h = ⌊(a + 2³¹)/2³²⌋, ready for [`mul`].
@@ -111,6 +171,13 @@ pub(crate) fn split(value: __m512i) -> Split {
         value,
         high: _mm512_srai_epi64::<32>(add(value, _mm512_set1_epi64(1 << 31))),
     }
+}
+
+/// [`split`] of three vectors.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn split3(value: [__m512i; 3]) -> [Split; 3] {
+    [split(value[0]), split(value[1]), split(value[2])]
 }
 
 /// The checked `*` of values below 2⁶², when it does not saturate: ⌊(a·b + 2³¹)/2³²⌋

@@ -247,7 +247,13 @@ fn load3(vertices: &[Vec3<Fx>]) -> [__m512i; 3] {
     let vertices = &vertices[..LANES];
     let words = vertices.as_ptr().cast::<i64>();
     // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`.
-    unsafe { [0, 1, 2].map(|k| _mm512_loadu_si512(words.add(k * LANES).cast())) }
+    unsafe {
+        [
+            _mm512_loadu_si512(words.cast()),
+            _mm512_loadu_si512(words.add(LANES).cast()),
+            _mm512_loadu_si512(words.add(2 * LANES).cast()),
+        ]
+    }
 }
 
 /// Writes the lanes of `lanes` of three vectors to the 24 coordinates of eight vertices.

@@ -36,13 +36,14 @@
 use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_cmpge_epi64_mask, _mm512_cmple_epi64_mask, _mm512_mask_storeu_epi64,
-    _mm512_setzero_si512, _mm512_storeu_si512,
+    _mm512_setzero_si512,
 };
 
 use super::{DistanceFactors, Distances};
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::{
-    LANES, add, gather3, load, mul, out_of_bound, out_of_bound3, splat, split, sub,
+    LANES, add, gather3, lane3, load, mul, out_of_bound, out_of_bound3, put3, splat, split, split3,
+    sub,
 };
 
 /// Whether rows 8k..8k+8 (ends `a`, `b`) share no vertex, for each whole block k.
@@ -146,7 +147,7 @@ fn solve_block(
 
     let d = [sub(xa[0], xb[0]), sub(xa[1], xb[1]), sub(xa[2], xb[2])];
     bad |= out_of_bound3(d);
-    let d = d.map(|x| split(x));
+    let d = split3(d);
     let length_squared = add(add(mul(d[0], d[0]), mul(d[1], d[1])), mul(d[2], d[2]));
     bad |= out_of_bound(length_squared);
     let (length_squared, previous) = (split(length_squared), split(previous));
@@ -176,26 +177,25 @@ fn solve_block(
     bad |= out_of_bound(step_a) | out_of_bound(step_b);
     let step_a = split(step_a);
     let minus_b = split(sub(_mm512_setzero_si512(), step_b));
-    let direction = direction.map(|x| split(x));
-    let new_a = [0, 1, 2].map(|i| add(xa[i], mul(direction[i], step_a)));
-    let new_b = [0, 1, 2].map(|i| add(xb[i], mul(direction[i], minus_b)));
+    let direction = split3(direction);
+    let new_a = [
+        add(xa[0], mul(direction[0], step_a)),
+        add(xa[1], mul(direction[1], step_a)),
+        add(xa[2], mul(direction[2], step_a)),
+    ];
+    let new_b = [
+        add(xb[0], mul(direction[0], minus_b)),
+        add(xb[1], mul(direction[1], minus_b)),
+        add(xb[2], mul(direction[2], minus_b)),
+    ];
 
     let solved = series_lanes & !bad;
     if solved != 0 {
-        let (new_a, new_b) = (lanes3(new_a), lanes3(new_b));
         for l in 0..LANES {
             if solved & (1 << l) != 0 {
                 let (a, b) = (rows.a[start + l] as usize, rows.b[start + l] as usize);
-                positions[a] = Vec3::new(
-                    Fx::from_bits(new_a[0][l]),
-                    Fx::from_bits(new_a[1][l]),
-                    Fx::from_bits(new_a[2][l]),
-                );
-                positions[b] = Vec3::new(
-                    Fx::from_bits(new_b[0][l]),
-                    Fx::from_bits(new_b[1][l]),
-                    Fx::from_bits(new_b[2][l]),
-                );
+                put3(&mut positions[a], lane3(new_a, l));
+                put3(&mut positions[b], lane3(new_b, l));
             }
         }
         store(&mut rows.lambda[block.clone()], solved, new_mu);
@@ -211,16 +211,4 @@ fn store(values: &mut [Fx], lanes: __mmask8, value: __m512i) {
     let values = &mut values[..LANES];
     // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
     unsafe { _mm512_mask_storeu_epi64(values.as_mut_ptr().cast(), lanes, value) }
-}
-
-/// The lanes of three vectors.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn lanes3(value: [__m512i; 3]) -> [[i64; LANES]; 3] {
-    let mut lanes = [[0; LANES]; 3];
-    for (out, v) in lanes.iter_mut().zip(value) {
-        // SAFETY: 64 writable bytes.
-        unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), v) };
-    }
-    lanes
 }

@@ -20,14 +20,14 @@
 
 use core::any::Any;
 use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_cmple_epi64_mask, _mm512_loadu_si512, _mm512_setzero_si512,
-    _mm512_storeu_si512,
+    __mmask8, _mm512_cmple_epi64_mask, _mm512_loadu_si512, _mm512_setzero_si512,
 };
 
 use super::Tethers;
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::{
-    LANES, add, dot3, gather3, load, mul, out_of_bound, out_of_bound3, splat, split, sub,
+    LANES, add, dot3, gather3, lane, lane3, load, mul, out_of_bound, out_of_bound3, put3, splat,
+    split, split3, sub,
 };
 
 impl<R: Real> Tethers<R> {
@@ -109,7 +109,7 @@ fn solve_block(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> 
     let rest = load(&rows.rest[block]);
     let d = [sub(x[0], p[0]), sub(x[1], p[1]), sub(x[2], p[2])];
     let bad = out_of_bound3(x) | out_of_bound3(p) | out_of_bound3(d) | out_of_bound(rest);
-    let d = d.map(|c| split(c));
+    let d = split3(d);
     let rest = split(rest);
     let length_squared = dot3(d, d);
     let slack = _mm512_cmple_epi64_mask(length_squared, mul(rest, rest)) & !bad;
@@ -119,11 +119,10 @@ fn solve_block(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> 
     }
     // 1/|d| per taut lane with the scalar square root (|d|² > ℓ₀² ≥ 0, so it never
     // saturates); the lanes are independent, so the processor overlaps them.
-    let squares = lanes(length_squared);
     let mut inverse = [0i64; LANES];
-    for l in 0..LANES {
+    for (l, y) in inverse.iter_mut().enumerate() {
         if taut & (1 << l) != 0 {
-            inverse[l] = Fx::from_bits(squares[l]).rsqrt().to_bits();
+            *y = Fx::from_bits(lane(length_squared, l)).rsqrt().to_bits();
         }
     }
     // SAFETY: 64 readable bytes.
@@ -132,25 +131,18 @@ fn solve_block(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> 
     let minus = sub(_mm512_setzero_si512(), shrink);
     let taut = taut & !(out_of_bound(inverse) | out_of_bound(minus));
     let minus = split(minus);
-    let moved = [0, 1, 2].map(|k| lanes(add(x[k], mul(d[k], minus))));
+    let moved = [
+        add(x[0], mul(d[0], minus)),
+        add(x[1], mul(d[1], minus)),
+        add(x[2], mul(d[2], minus)),
+    ];
     for l in 0..LANES {
         if taut & (1 << l) != 0 {
-            positions[rows.vertex[start + l] as usize] = Vec3::new(
-                Fx::from_bits(moved[0][l]),
-                Fx::from_bits(moved[1][l]),
-                Fx::from_bits(moved[2][l]),
+            put3(
+                &mut positions[rows.vertex[start + l] as usize],
+                lane3(moved, l),
             );
         }
     }
     slack | taut
-}
-
-/// The lanes of a vector.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn lanes(value: __m512i) -> [i64; LANES] {
-    let mut lanes = [0; LANES];
-    // SAFETY: 64 writable bytes.
-    unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) };
-    lanes
 }
