@@ -221,6 +221,28 @@ pub(crate) fn dot3(a: [Split; 3], b: [Split; 3]) -> __m512i {
     add(whole, split(remainders).high)
 }
 
+/// [`mul`] when |b| < 2³¹ ([`out_of_short`] clear): b is its own signed low half (b_h =
+/// 0), so ⌊(a·b + 2³¹)/2³²⌋ = a_h·b + ⌊(a_l·b + 2³¹)/2³²⌋, two multiplies instead of four.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn mul_short(a: Split, b: __m512i) -> __m512i {
+    let low = _mm512_srai_epi64::<32>(add(
+        _mm512_mul_epi32(a.value, b),
+        _mm512_set1_epi64(1 << 31),
+    ));
+    add(_mm512_mul_epi32(a.high, b), low)
+}
+
+/// The lanes where x lies outside [−2³¹, 2³¹), the range of [`mul_short`]'s second factor.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn out_of_short(x: __m512i) -> __mmask8 {
+    _mm512_cmpge_epu64_mask(
+        add(x, _mm512_set1_epi64(1 << 31)),
+        _mm512_set1_epi64(1 << 32),
+    )
+}
+
 /// The lanes where x lies outside [−2⁴⁶, 2⁴⁶) ([`BOUND_BITS`]).
 #[inline]
 #[target_feature(enable = "avx512f")]

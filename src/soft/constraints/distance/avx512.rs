@@ -16,15 +16,21 @@
 //!
 //! The kernel computes every operation of the scalar row, in the same order, modulo 2⁶⁴.
 //! It checks that every value it loads (the ends' positions, ℓ₀, y₀, μ, sₐ, s_b, ρ) and
-//! d, |d|², |d|²y₀, the residual r, n̂ and the two steps sₐr and s_b r lie in [−2⁴⁶, 2⁴⁶)
-//! as raw bits (|x| < 16384 in I32F32). Then every product is of values below 2⁴⁸ and
-//! below 2⁶² after rounding, and every sum or difference has two or three such terms or
-//! checked values: no operation of the row leaves the `i64` range. (In the lanes that take
+//! d, |d|², |d|²y₀ and n̂ lie in [−2⁴⁶, 2⁴⁶) as raw bits (|x| < 16384 in I32F32), and the
+//! residual r and the two steps sₐr and −s_b r in [−2³¹, 2³¹) (below half a metre; the
+//! products with them take the short form of [`mul_short`]). Then every product is of
+//! values below 2⁴⁸ and below 2⁶² after rounding, and every sum or difference has two or
+//! three such terms or checked values: no operation of the row leaves the `i64` range. (In the lanes that take
 //! the series: |δ| ≤ 2³⁰ raw, so the series lies in (2³¹, 2³³) and y = y₀·series below
 //! 2⁴⁷ + 1; |d|²y and d·y are below 2⁶¹, r below 2⁶² + 2⁴⁷.) The checked operators then
 //! saturate nowhere and give the exact rounded values, which the kernel's exact residues
 //! equal; and the scalar row, whether its guard stays clear or it reruns checked, gives the
 //! checked operators' values.
+//!
+//! Three products of the series have short exact forms there: with |δ| < 2³¹ raw, δ is its
+//! own signed low half, so δ·δ is one 32×32-bit multiply, ⌊(δ² + 2³¹)/2³²⌋; δ·½ is
+//! ⌊(δ·2³¹ + 2³¹)/2³²⌋ = ⌊(δ + 1)/2⌋; and s·3/8 (s = δ² ≥ 0, below 2²⁹) is
+//! ⌊(s·3·2²⁹ + 2³¹)/2³²⌋ = ⌊(3s + 4)/8⌋.
 //!
 //! The kernel leaves to the scalar row the lanes where a check fails and the lanes whose q
 //! is outside [3/4, 5/4] (1/|d| from a square root, or coincident ends): it writes nothing
@@ -36,14 +42,15 @@
 use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_cmpge_epi64_mask, _mm512_cmple_epi64_mask, _mm512_mask_storeu_epi64,
-    _mm512_setzero_si512,
+    _mm512_mul_epi32, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
+    _mm512_srai_epi64,
 };
 
 use super::{DistanceFactors, Distances};
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::{
-    LANES, add, gather3, lane3, load, mul, out_of_bound, out_of_bound3, put3, splat, split, split3,
-    sub,
+    LANES, add, gather3, lane3, load, mul, mul_short, out_of_bound, out_of_bound3, out_of_short,
+    put3, splat, split, split3, sub,
 };
 
 /// Whether rows 8k..8k+8 (ends `a`, `b`) share no vertex, for each whole block k.
@@ -156,10 +163,16 @@ fn solve_block(
     let q = mul(split(scaled), previous);
     let series_lanes = _mm512_cmpge_epi64_mask(q, splat(Fx::from_ratio(3, 4)))
         & _mm512_cmple_epi64_mask(q, splat(Fx::from_ratio(5, 4)));
-    let delta = split(sub(q, splat(Fx::ONE)));
-    let half = mul(delta, split(splat(Fx::HALF)));
-    let square = mul(delta, delta);
-    let quadratic = mul(split(square), split(splat(Fx::from_ratio(3, 8))));
+    // In the series lanes |δ| ≤ 2³⁰ raw: the three products below take their short forms.
+    let delta = sub(q, splat(Fx::ONE));
+    let one = _mm512_set1_epi64(1);
+    let half = _mm512_srai_epi64::<1>(add(delta, one));
+    let square = _mm512_srai_epi64::<32>(add(
+        _mm512_mul_epi32(delta, delta),
+        _mm512_set1_epi64(1 << 31),
+    ));
+    let triple = add(_mm512_slli_epi64::<1>(square), square);
+    let quadratic = _mm512_srai_epi64::<3>(add(triple, _mm512_set1_epi64(4)));
     let linear = sub(splat(Fx::ONE), half);
     let series = add(linear, quadratic);
     let inv_length = mul(previous, split(series));
@@ -167,26 +180,23 @@ fn solve_block(
     let length = mul(length_squared, y);
     let shortfall = sub(rest, length);
     let residual = sub(shortfall, mu);
-    bad |= out_of_bound(residual);
-    let r = split(residual);
-    let new_mu = add(mu, mul(split(relax), r));
+    bad |= out_of_short(residual);
+    let new_mu = add(mu, mul_short(split(relax), residual));
     let direction = [mul(d[0], y), mul(d[1], y), mul(d[2], y)];
     bad |= out_of_bound3(direction);
-    let step_a = mul(split(share_a), r);
-    let step_b = mul(split(share_b), r);
-    bad |= out_of_bound(step_a) | out_of_bound(step_b);
-    let step_a = split(step_a);
-    let minus_b = split(sub(_mm512_setzero_si512(), step_b));
+    let step_a = mul_short(split(share_a), residual);
+    let minus_b = sub(_mm512_setzero_si512(), mul_short(split(share_b), residual));
+    bad |= out_of_short(step_a) | out_of_short(minus_b);
     let direction = split3(direction);
     let new_a = [
-        add(xa[0], mul(direction[0], step_a)),
-        add(xa[1], mul(direction[1], step_a)),
-        add(xa[2], mul(direction[2], step_a)),
+        add(xa[0], mul_short(direction[0], step_a)),
+        add(xa[1], mul_short(direction[1], step_a)),
+        add(xa[2], mul_short(direction[2], step_a)),
     ];
     let new_b = [
-        add(xb[0], mul(direction[0], minus_b)),
-        add(xb[1], mul(direction[1], minus_b)),
-        add(xb[2], mul(direction[2], minus_b)),
+        add(xb[0], mul_short(direction[0], minus_b)),
+        add(xb[1], mul_short(direction[1], minus_b)),
+        add(xb[2], mul_short(direction[2], minus_b)),
     ];
 
     let solved = series_lanes & !bad;
