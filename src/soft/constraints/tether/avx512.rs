@@ -100,10 +100,16 @@ unsafe fn solve_rows(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], independent
 #[target_feature(enable = "avx512f")]
 fn solve_block(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> __mmask8 {
     let block = start..start + LANES;
-    let (Some(x), Some(p)) = (
-        gather3(positions, &rows.vertex[block.clone()]),
-        gather3(positions, &rows.anchor[block.clone()]),
-    ) else {
+    let anchors = &rows.anchor[block.clone()];
+    // A round's rows to one pin share their anchor: one load instead of eight.
+    let p = if anchors.iter().all(|&a| a == anchors[0]) {
+        positions
+            .get(anchors[0] as usize)
+            .map(|p| [splat(p.x), splat(p.y), splat(p.z)])
+    } else {
+        gather3(positions, anchors)
+    };
+    let (Some(x), Some(p)) = (gather3(positions, &rows.vertex[block.clone()]), p) else {
         return 0;
     };
     let rest = load(&rows.rest[block]);
