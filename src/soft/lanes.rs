@@ -233,6 +233,14 @@ pub(crate) fn mul_short(a: Split, b: __m512i) -> __m512i {
     add(_mm512_mul_epi32(a.high, b), low)
 }
 
+/// [`mul`] of x by itself when |x| < 2³¹ ([`out_of_short`] clear): ⌊(x² + 2³¹)/2³²⌋, x
+/// being its own signed low half.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn square_short(x: __m512i) -> __m512i {
+    _mm512_srai_epi64::<32>(add(_mm512_mul_epi32(x, x), _mm512_set1_epi64(1 << 31)))
+}
+
 /// The lanes where x lies outside [−2³¹, 2³¹), the range of [`mul_short`]'s second factor.
 #[inline]
 #[target_feature(enable = "avx512f")]

@@ -27,7 +27,9 @@
 //! equal; and the scalar row, whether its guard stays clear or it reruns checked, gives the
 //! checked operators' values.
 //!
-//! Three products of the series have short exact forms there: with |δ| < 2³¹ raw, δ is its
+//! When every lane's |d| components are below 2³¹ raw (half a metre), the block takes
+//! the short forms [`square_short`] for d·d and [`mul_short`] for d·y. Three products of
+//! the series have short exact forms in the series lanes: with |δ| < 2³¹ raw, δ is its
 //! own signed low half, so δ·δ is one 32×32-bit multiply, ⌊(δ² + 2³¹)/2³²⌋; δ·½ is
 //! ⌊(δ·2³¹ + 2³¹)/2³²⌋ = ⌊(δ + 1)/2⌋; and s·3/8 (s = δ² ≥ 0, below 2²⁹) is
 //! ⌊(s·3·2²⁹ + 2³¹)/2³²⌋ = ⌊(3s + 4)/8⌋.
@@ -50,7 +52,7 @@ use super::{DistanceFactors, Distances};
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::{
     LANES, add, gather3, lane3, load, mul, mul_short, out_of_bound, out_of_bound3, out_of_short,
-    put3, splat, split, split3, sub,
+    put3, splat, split, split3, square_short, sub,
 };
 
 /// Whether rows 8k..8k+8 (ends `a`, `b`) share no vertex, for each whole block k.
@@ -154,8 +156,19 @@ fn solve_block(
 
     let d = [sub(xa[0], xb[0]), sub(xa[1], xb[1]), sub(xa[2], xb[2])];
     bad |= out_of_bound3(d);
+    // Edges shorter than half a metre in every lane (the usual case) take the short
+    // products.
+    let short = out_of_short(d[0]) | out_of_short(d[1]) | out_of_short(d[2]) == 0;
+    let ends = d;
     let d = split3(d);
-    let length_squared = add(add(mul(d[0], d[0]), mul(d[1], d[1])), mul(d[2], d[2]));
+    let length_squared = if short {
+        add(
+            add(square_short(ends[0]), square_short(ends[1])),
+            square_short(ends[2]),
+        )
+    } else {
+        add(add(mul(d[0], d[0]), mul(d[1], d[1])), mul(d[2], d[2]))
+    };
     bad |= out_of_bound(length_squared);
     let (length_squared, previous) = (split(length_squared), split(previous));
     let scaled = mul(length_squared, previous);
@@ -182,7 +195,15 @@ fn solve_block(
     let residual = sub(shortfall, mu);
     bad |= out_of_short(residual);
     let new_mu = add(mu, mul_short(split(relax), residual));
-    let direction = [mul(d[0], y), mul(d[1], y), mul(d[2], y)];
+    let direction = if short {
+        [
+            mul_short(y, ends[0]),
+            mul_short(y, ends[1]),
+            mul_short(y, ends[2]),
+        ]
+    } else {
+        [mul(d[0], y), mul(d[1], y), mul(d[2], y)]
+    };
     bad |= out_of_bound3(direction);
     let step_a = mul_short(split(share_a), residual);
     let minus_b = sub(_mm512_setzero_si512(), mul_short(split(share_b), residual));
