@@ -123,6 +123,32 @@ pub(crate) fn gather3(positions: &[Vec3<Fx>], indices: &[u32]) -> Option<[__m512
     ])
 }
 
+/// The positions of the eight consecutive vertices `first..first + 8` as x, y and z lanes,
+/// or `None` if they are out of bounds: three loads and a transpose.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(crate) fn load_run3(positions: &[Vec3<Fx>], first: usize) -> Option<[__m512i; 3]> {
+    let run = positions.get(first..first + LANES)?;
+    let words = run.as_ptr().cast::<i64>();
+    // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`.
+    let (v0, v1, v2) = unsafe {
+        (
+            _mm512_loadu_si512(words.cast()),
+            _mm512_loadu_si512(words.add(LANES).cast()),
+            _mm512_loadu_si512(words.add(2 * LANES).cast()),
+        )
+    };
+    // Word 3i + c is component c of vertex i: v0 holds words 0..8, v1 8..16, v2 16..24.
+    let x = _mm512_permutex2var_epi64(v0, _mm512_set_epi64(0, 0, 15, 12, 9, 6, 3, 0), v1);
+    let y = _mm512_permutex2var_epi64(v0, _mm512_set_epi64(0, 0, 0, 13, 10, 7, 4, 1), v1);
+    let z = _mm512_permutex2var_epi64(v0, _mm512_set_epi64(0, 0, 0, 14, 11, 8, 5, 2), v1);
+    Some([
+        _mm512_permutex2var_epi64(x, _mm512_set_epi64(13, 10, 5, 4, 3, 2, 1, 0), v2),
+        _mm512_permutex2var_epi64(y, _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0), v2),
+        _mm512_permutex2var_epi64(z, _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0), v2),
+    ])
+}
+
 /// Lane `l` of a vector.
 #[inline]
 #[target_feature(enable = "avx512f")]

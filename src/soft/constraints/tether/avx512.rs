@@ -26,8 +26,8 @@ use core::arch::x86_64::{
 use super::Tethers;
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::{
-    LANES, add, dot3, gather3, lane, lane3, load, mul, out_of_bound, out_of_bound3, put3, splat,
-    split, split3, sub,
+    LANES, add, dot3, gather3, lane, lane3, load, load_run3, mul, out_of_bound, out_of_bound3,
+    put3, splat, split, split3, sub,
 };
 
 impl<R: Real> Tethers<R> {
@@ -109,7 +109,15 @@ fn solve_block(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> 
     } else {
         gather3(positions, anchors)
     };
-    let (Some(x), Some(p)) = (gather3(positions, &rows.vertex[block.clone()]), p) else {
+    let vertices = &rows.vertex[block.clone()];
+    // A round's rows of consecutive vertices: three loads instead of eight.
+    let first = vertices[0];
+    let x = if (1..LANES).all(|l| vertices[l] == first.wrapping_add(l as u32)) {
+        load_run3(positions, first as usize)
+    } else {
+        gather3(positions, vertices)
+    };
+    let (Some(x), Some(p)) = (x, p) else {
         return 0;
     };
     let rest = load(&rows.rest[block]);
