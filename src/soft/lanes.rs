@@ -1,8 +1,11 @@
 //! I32F32 arithmetic on eight `i64` lanes in AVX-512F, shared by the soft-body kernels
-//! (the distance rows, the prediction and the velocity update): exact sums and differences
-//! modulo 2⁶⁴, the checked `*` and the fused dot product of values below 2⁶² from 32-bit
-//! halves, and the bound check
-//! that proves no operation of a kernel leaves the `i64` range.
+//! (the distance rows, the tethers, the prediction and the velocity update): exact sums and
+//! differences modulo 2⁶⁴, the checked `*` and the fused dot product of values below 2⁶²
+//! from 32-bit halves (with short forms when a factor is below 2³¹), the bound checks that
+//! prove no operation of a kernel leaves the `i64` range, and the moves of vertex
+//! positions between memory (x, y, z in a row) and x, y and z lanes, by plain loads and
+//! stores and transposes in registers (gathers, scatters and masked moves are much slower on
+//! some processors, Zen 4 among them).
 //!
 //! # Products
 //!
