@@ -1,22 +1,26 @@
-//! The tethers of I32F32 in AVX-512: eight rows side by side find which are slack, with
-//! the bits of the scalar row ([`Tethers::solve_row`]).
+//! The tethers of I32F32 in AVX-512: eight rows side by side, with the bits of the scalar
+//! row ([`Tethers::solve_row`]).
 //!
-//! A slack row (|d|² ≤ ℓ₀²) changes nothing; a taut one moves its vertex. The kernel tests
-//! eight rows at once and leaves the rows it does not prove slack to the scalar row, in
-//! order. That gives the bits of the rows one after another when the block's rows are
-//! independent: no two move the same vertex and none's anchor is another's vertex
-//! ([`Tethers::independent_blocks`]), so each row reads the same positions whether the
-//! taut rows before it in the block have moved their vertices or not. In the tethers'
-//! round order (see `tether_order` in the builder) nearly every block is independent.
+//! A slack row (|d|² ≤ ℓ₀²) changes nothing; a taut one moves its vertex by −(1 − ℓ₀/|d|) d.
+//! The kernel solves eight rows at once, 1/|d| of each taut one from the scalar square root
+//! (one call per taut lane; the lanes are independent, so the processor overlaps them), and
+//! leaves the lanes where a check fails to the scalar row, after the others. That gives the
+//! bits of the rows one after another when the block's rows are independent: no two move
+//! the same vertex and none's anchor is another's vertex
+//! ([`Tethers::independent_blocks`]), so each row reads the same positions whatever the
+//! other rows of the block have done. In the tethers' round order (see `tether_order` in the
+//! builder) nearly every block is independent.
 //!
 //! # Exactness
 //!
-//! The scalar test compares the fused |d|² = d·d (the exact sum rounded once) with the
-//! checked ℓ₀·ℓ₀. The kernel checks that both ends' positions, d and ℓ₀ lie in
-//! [−2⁴⁶, 2⁴⁶) as raw bits: then d·d is below 2⁹⁴ before rounding and ℓ₀² below 2⁶⁰ after,
-//! neither saturates, and the kernel's exact values
-//! ([`dot3`](crate::soft::lanes::dot3), [`mul`](crate::soft::lanes::mul)) are the scalar
-//! ones. A lane where a check fails is not proved slack and takes the scalar row.
+//! The scalar row compares the fused |d|² = d·d (the exact sum rounded once) with the
+//! checked ℓ₀·ℓ₀, then computes s = 1 − ℓ₀·(1/√|d|²) and x + d·(−s) per component, each a
+//! product rounded once and added. The kernel checks that both ends' positions, d, ℓ₀,
+//! 1/√|d|² and −s lie in [−2⁴⁶, 2⁴⁶) as raw bits: then d·d is below 2⁹⁴ before rounding,
+//! every product below 2⁶⁰ after, no sum leaves the range and nothing saturates, so the
+//! kernel's exact values ([`dot3`], [`mul`]) are the scalar ones. The square root of a taut
+//! row (|d|² > ℓ₀² ≥ 0) never saturates, so computing it in the kernel and again in the
+//! scalar row of a lane that then fails a check counts nothing twice.
 
 use core::any::Any;
 use core::arch::x86_64::{
