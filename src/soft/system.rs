@@ -117,6 +117,10 @@ pub(crate) struct Scratch<R: Real> {
     /// [`Tethers::independent_blocks`]).
     #[cfg(target_arch = "x86_64")]
     pub tether_blocks: Vec<bool>,
+    /// Whether hinges 8k..8k+8 share no vertex, for each k (see
+    /// [`Hinges::independent_blocks`]).
+    #[cfg(target_arch = "x86_64")]
+    pub hinge_blocks: Vec<bool>,
     /// wₖcₖ/D of each hinge, m.
     pub hinge_share: Vec<[R; 4]>,
     /// α̃/D of each hinge.

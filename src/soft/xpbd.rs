@@ -55,6 +55,7 @@ impl<R: Real> SoftSystem<R> {
         #[cfg(target_arch = "x86_64")]
         {
             scratch.tether_blocks = self.tethers.independent_blocks();
+            scratch.hinge_blocks = self.hinges.independent_blocks();
         }
         (scratch.hinge_share, scratch.hinge_relax) = self.hinges.factors(w, inv_h2);
         (scratch.attachment_share, scratch.attachment_relax) = self.attachments.factors(w, inv_h2);
@@ -80,7 +81,13 @@ impl<R: Real> SoftSystem<R> {
                 &s.tether_blocks,
             );
             self.distances.solve(x, &s.distance);
-            self.hinges.solve(x, &s.hinge_share, &s.hinge_relax);
+            self.hinges.solve(
+                x,
+                &s.hinge_share,
+                &s.hinge_relax,
+                #[cfg(target_arch = "x86_64")]
+                &s.hinge_blocks,
+            );
             self.tetrahedra.solve(x, w, s.inv_h2);
             self.attachments
                 .solve(x, &s.displacement, &s.attachment_share, &s.attachment_relax);
