@@ -58,7 +58,8 @@ impl<R: Real> SoftSystem<R> {
         Ok(system)
     }
 
-    /// Puts the distance and bending rows in colour order (see [`colour_order`]).
+    /// Puts the distance and bending rows in colour order (see [`colour_order`]) and the
+    /// tethers in rounds (see [`tether_order`]).
     fn colour_rows(&mut self) {
         let d = &mut self.distances;
         let ends: Vec<[u32; 2]> = d.a.iter().zip(&d.b).map(|(&a, &b)| [a, b]).collect();
@@ -73,6 +74,16 @@ impl<R: Real> SoftSystem<R> {
             &mut d.lambda,
         ] {
             permute(rows, &order);
+        }
+        if let Some(order) = tether_order(
+            &self.tethers.vertex,
+            &self.tethers.anchor,
+            self.vertices.len(),
+        ) {
+            let t = &mut self.tethers;
+            permute(&mut t.vertex, &order);
+            permute(&mut t.anchor, &order);
+            permute(&mut t.rest, &order);
         }
         let h = &mut self.hinges;
         let order = colour_order(&h.vertices, self.vertices.len());
@@ -551,6 +562,32 @@ fn colour_order<const K: usize>(rows: &[[u32; K]], vertices: usize) -> Vec<usize
     let mut order: Vec<usize> = (0..rows.len()).collect();
     order.sort_by_key(|&r| (colours[r], r));
     order
+}
+
+/// An order of the tethers (tethered vertex `vertex`, anchor `anchor`, both below
+/// `vertices`) in which
+/// consecutive rows rarely share a vertex, so that the processor can overlap them: each
+/// vertex's first tether, then each one's second, and so on, in build order within a round.
+/// `None` (keep the build order) unless no anchor is a tethered vertex. Then a pass reads
+/// each anchor unchanged and each tether moves only its own vertex, so any order that keeps
+/// every vertex's tethers in their build order gives the same positions, bit for bit, as the
+/// build order. (The anchors are pinned or attached vertices, which are never tethered, so
+/// this always holds for the built bodies.)
+fn tether_order(vertex: &[u32], anchor: &[u32], vertices: usize) -> Option<Vec<usize>> {
+    let mut tethers = vec![0u32; vertices];
+    let rounds: Vec<u32> = vertex
+        .iter()
+        .map(|&v| {
+            tethers[v as usize] += 1;
+            tethers[v as usize] - 1
+        })
+        .collect();
+    if anchor.iter().any(|&a| tethers[a as usize] != 0) {
+        return None;
+    }
+    let mut order: Vec<usize> = (0..vertex.len()).collect();
+    order.sort_by_key(|&t| (rounds[t], t));
+    Some(order)
 }
 
 /// `rows` rearranged so that entry k is the old entry `order[k]`.

@@ -16,7 +16,7 @@
 //! and compilation · `system` storage and the step · `constraints` the XPBD rows
 //! (distance, bending, volume, attachment) · [`xpbd`] the substep loop ·
 //! [`spring_mass`] Hooke springs and the stability bound · `collide` static colliders
-//! with friction · `commands` inputs · [`hashing`] canonical state · `metrics` reporting ·
+//! with friction · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting ·
 //! [`presets`] built-in scenes.
 //!
 //! [`Stage::Soft`]: crate::world::Stage::Soft
@@ -27,6 +27,8 @@ mod commands;
 mod constraints;
 pub mod desc;
 pub mod hashing;
+#[cfg(target_arch = "x86_64")]
+mod lanes;
 mod metrics;
 pub mod presets;
 pub mod spring_mass;

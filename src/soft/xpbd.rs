@@ -19,6 +19,11 @@ use super::collide::project_positions;
 use super::system::{Model, SoftSystem};
 use crate::math::{Real, Vec3};
 
+#[cfg(target_arch = "x86_64")]
+mod avx512;
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests;
+
 impl<R: Real> SoftSystem<R> {
     /// Advances the XPBD bodies by `dt` seconds: world substep `substep` of `substeps`.
     pub(crate) fn step_xpbd(&mut self, dt: R, gravity: Vec3<R>, substep: u32, substeps: u32) {
@@ -47,6 +52,11 @@ impl<R: Real> SoftSystem<R> {
         let inv_h2 = inv_h * inv_h;
         let w = &self.vertices.inv_mass;
         scratch.distance = self.distances.factors(w, inv_h2);
+        #[cfg(target_arch = "x86_64")]
+        {
+            scratch.tether_blocks = self.tethers.independent_blocks();
+            scratch.hinge_blocks = self.hinges.independent_blocks();
+        }
         (scratch.hinge_share, scratch.hinge_relax) = self.hinges.factors(w, inv_h2);
         (scratch.attachment_share, scratch.attachment_relax) = self.attachments.factors(w, inv_h2);
         scratch.inv_h2 = inv_h2;
@@ -65,9 +75,19 @@ impl<R: Real> SoftSystem<R> {
         let w = &self.vertices.inv_mass;
         let s = &self.scratch;
         for _ in 0..self.settings.iterations {
-            self.tethers.solve(x);
+            self.tethers.solve(
+                x,
+                #[cfg(target_arch = "x86_64")]
+                &s.tether_blocks,
+            );
             self.distances.solve(x, &s.distance);
-            self.hinges.solve(x, &s.hinge_share, &s.hinge_relax);
+            self.hinges.solve(
+                x,
+                &s.hinge_share,
+                &s.hinge_relax,
+                #[cfg(target_arch = "x86_64")]
+                &s.hinge_blocks,
+            );
             self.tetrahedra.solve(x, w, s.inv_h2);
             self.attachments
                 .solve(x, &s.displacement, &s.attachment_share, &s.attachment_relax);
@@ -90,10 +110,13 @@ impl<R: Real> SoftSystem<R> {
             if body.model != Model::Xpbd {
                 continue;
             }
+            let v = &mut self.vertices.velocity;
+            #[cfg(target_arch = "x86_64")]
+            if avx512::update_velocities(body.range(), x, &s.previous, w, v, inv_h) {
+                continue;
+            }
             for i in body.range() {
-                if w[i] != R::ZERO {
-                    self.vertices.velocity[i] = (x[i] - s.previous[i]) * inv_h;
-                }
+                update_velocity(i, x, &s.previous, w, v, inv_h);
             }
         }
     }
@@ -109,25 +132,92 @@ impl<R: Real> SoftSystem<R> {
             if body.model != Model::Xpbd {
                 continue;
             }
-            let retain = (R::ONE + h * body.damping).recip();
-            let windy = body.drag != R::ZERO;
+            let motion = Motion {
+                h,
+                gravity,
+                retain: (R::ONE + h * body.damping).recip(),
+                damped: body.damping != R::ZERO,
+                wind: body.wind,
+                drag: body.drag,
+            };
+            let mut vertices = Vertices {
+                x: &mut *x,
+                v: &mut *v,
+                previous: &mut *previous,
+                w,
+            };
+            #[cfg(target_arch = "x86_64")]
+            if avx512::predict(body.range(), &mut vertices, &motion) {
+                continue;
+            }
             for i in body.range() {
-                previous[i] = x[i];
-                if w[i] == R::ZERO {
-                    continue;
-                }
-                let mut acceleration = gravity;
-                if windy {
-                    acceleration = acceleration.add_scaled(body.wind - v[i], w[i] * body.drag);
-                }
-                let mut velocity = v[i];
-                if body.damping != R::ZERO {
-                    velocity *= retain;
-                }
-                velocity = velocity.add_scaled(acceleration, h);
-                v[i] = velocity;
-                x[i] = x[i].add_scaled(velocity, h);
+                predict_vertex(i, &mut vertices, &motion);
             }
         }
+    }
+}
+
+/// What the prediction of one body's vertices reads besides the vertices.
+struct Motion<R: Real> {
+    /// h, s.
+    h: R,
+    /// g, m/s².
+    gravity: Vec3<R>,
+    /// 1/(1 + h c) for the body's damping c.
+    retain: R,
+    /// Whether c ≠ 0 (the velocity is multiplied by `retain` only then).
+    damped: bool,
+    /// Air velocity, m/s.
+    wind: Vec3<R>,
+    /// Air drag per vertex, kg/s.
+    drag: R,
+}
+
+/// The vertex arrays the prediction reads and writes.
+struct Vertices<'a, R: Real> {
+    /// x, m.
+    x: &'a mut [Vec3<R>],
+    /// v, m/s.
+    v: &'a mut [Vec3<R>],
+    /// x at the start of the substep, m.
+    previous: &'a mut [Vec3<R>],
+    /// w, 1/kg.
+    w: &'a [R],
+}
+
+/// Step 1 for vertex `i`: x_prev ← x and, unless pinned,
+/// v ← v / (1 + h c) + h (g + w·drag·(wind − v)), x ← x + h v.
+#[inline(always)]
+fn predict_vertex<R: Real>(i: usize, vertices: &mut Vertices<'_, R>, m: &Motion<R>) {
+    let Vertices { x, v, previous, w } = vertices;
+    previous[i] = x[i];
+    if w[i] == R::ZERO {
+        return;
+    }
+    let mut acceleration = m.gravity;
+    if m.drag != R::ZERO {
+        acceleration = acceleration.add_scaled(m.wind - v[i], w[i] * m.drag);
+    }
+    let mut velocity = v[i];
+    if m.damped {
+        velocity *= m.retain;
+    }
+    velocity = velocity.add_scaled(acceleration, m.h);
+    v[i] = velocity;
+    x[i] = x[i].add_scaled(velocity, m.h);
+}
+
+/// Step 4 for vertex `i` unless pinned: v ← (x − x_prev)/h, with 1/h `inv_h` (1/s).
+#[inline(always)]
+fn update_velocity<R: Real>(
+    i: usize,
+    x: &[Vec3<R>],
+    previous: &[Vec3<R>],
+    w: &[R],
+    v: &mut [Vec3<R>],
+    inv_h: R,
+) {
+    if w[i] != R::ZERO {
+        v[i] = (x[i] - previous[i]) * inv_h;
     }
 }
