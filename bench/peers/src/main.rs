@@ -75,7 +75,7 @@ const SCENES: [Scene; 3] = [
     },
 ];
 
-/// One engine: builds a scene's world and returns a closure that steps it once.
+/// One engine: builds a scene afresh, runs its steps and returns the mean ms per step.
 struct Engine {
     name: &'static str,
     run: fn(Scene) -> f64,
