@@ -1,84 +1,40 @@
-//! fixstep beside Rapier 0.36 on identical rigid-body scenes, in one process: the engines
-//! take turns (A B A B …) for each scene, every run starts from a freshly built world, and
-//! the table gives each engine's median time per step over the rounds and its ratio to
-//! fixstep's. Built once per Rapier mode: `--features enhanced-determinism` for Rapier's
-//! cross-platform determinism mode. `scripts/peer-bench.sh` builds and runs both.
+//! fixstep beside Rapier 0.36 and salva3d 0.11 on identical scenes, in one process: the
+//! engines take turns (A B A B …) for each scene, every run starts from a freshly built
+//! world, and the table gives each engine's median time per step over the rounds, its
+//! ratio to fixstep's, and a quality figure computed from the engine's positions in the same
+//! way for every engine ([`quality`]). Built once per Rapier mode: `--features
+//! enhanced-determinism` for Rapier's cross-platform determinism mode.
+//! `scripts/peer-bench.sh` builds and runs both.
 //!
 //! Rigid bodies, the same for every engine: dt = 1/60 s, 4 solver substeps (Rapier's
 //! `num_solver_iterations`, its default; fixstep's default), one thread, gravity
-//! −9.81 m/s² along y, sleeping off.
+//! −9.81 m/s² along y, sleeping off, then `pyramid` and `balls` again with sleeping on.
+//! Rapier runs twice: with its default friction model (one friction constraint per
+//! manifold plus a twist row) and with Coulomb friction at every contact point, which is
+//! how fixstep solves friction: the like-for-like comparison.
 //!
 //! Fluid (`water`): salva3d 0.11 (DFSPH, f32) beside fixstep's DFSPH, a cube of 20³
 //! particles 1 cm apart settling on the floor of a tank of the same footprint lined with
 //! two layers of boundary particles, kernel support 2 cm, rest density 1000 kg/m³,
 //! dt = 0.005 s (each engine substeps as its own time-step control requires), timed after
-//! 20 steps.
+//! 20 steps. salva3d runs twice: with its default tolerance (mean predicted compression
+//! 5 %) and with fixstep's (0.05 %).
 //!
 //! Usage: `fixstep-peers [ROUNDS] [SCENE …]`.
 
 mod fixstep_side;
+mod quality;
 mod rapier_side;
 mod salva_side;
+mod scenes;
 
+use scenes::{FluidRun, RigidRun, SCENES, Scene, WATER};
 use std::time::Instant;
 
-/// A scene both engines build: its name and the steps one run takes.
-#[derive(Clone, Copy)]
-pub struct Scene {
-    pub name: &'static str,
-    pub steps: u32,
-}
-
-/// The fluid scene: a cube of `n`³ particles `spacing` (m) apart in a tank of the same
-/// footprint, 1.5 × as high; `steps` timed steps of `dt` (s) after `warm_steps`.
-pub struct FluidScene {
-    pub n: u32,
-    pub spacing: f32,
-    pub dt: f32,
-    pub warm_steps: u32,
-    pub steps: u32,
-}
-
-impl FluidScene {
-    /// Side of the cube and the tank, m.
-    pub fn side(&self) -> f32 {
-        self.spacing * self.n as f32
-    }
-
-    /// Height of the tank, m.
-    pub fn height(&self) -> f32 {
-        1.5 * self.side()
-    }
-}
-
-const WATER: FluidScene = FluidScene {
-    n: 20,
-    spacing: 0.01,
-    dt: 0.005,
-    warm_steps: 20,
-    steps: 10,
-};
-
-/// The scenes of issue #6's benchmark table.
-const SCENES: [Scene; 3] = [
-    Scene {
-        name: "pyramid",
-        steps: 500,
-    },
-    Scene {
-        name: "balls",
-        steps: 500,
-    },
-    Scene {
-        name: "falling",
-        steps: 1000,
-    },
-];
-
-/// One engine: builds a scene afresh, runs its steps and returns the mean ms per step.
+/// One rigid-body engine: builds a scene afresh and runs it.
 struct Engine {
-    name: &'static str,
-    run: fn(Scene) -> f64,
+    name: String,
+    run: fn(Scene) -> RigidRun,
 }
 
 /// Mean milliseconds per step of `steps` calls of `step` (building excluded).
@@ -93,6 +49,26 @@ pub fn time_steps(steps: u32, mut step: impl FnMut()) -> f64 {
 fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     values[values.len() / 2]
+}
+
+/// The scene's label in the table.
+fn label(scene: Scene) -> String {
+    if scene.sleeping {
+        format!("`{}`, sleeping on", scene.name)
+    } else {
+        format!("`{}`", scene.name)
+    }
+}
+
+/// The quality figure with its unit.
+fn quality_text(scene: Scene, value: Option<f64>) -> String {
+    let what = match scene.name {
+        "pyramid" => "max drift",
+        "balls" => "deepest overlap",
+        "falling" => "max free-fall error",
+        _ => "",
+    };
+    value.map_or_else(|| "—".into(), |v| format!("{what} {v:.4} m"))
 }
 
 fn main() {
@@ -125,36 +101,46 @@ fn main() {
     };
     let engines = [
         Engine {
-            name: "fixstep I32F32",
+            name: "fixstep I32F32".into(),
             run: fixstep_side::run_fixed,
         },
         Engine {
-            name: rapier,
-            run: rapier_side::run,
+            name: format!("{rapier}, its default friction (per manifold)"),
+            run: rapier_side::run_simplified,
         },
         Engine {
-            name: "fixstep f64 (same code)",
+            name: format!("{rapier}, Coulomb friction (per point, as fixstep)"),
+            run: rapier_side::run_coulomb,
+        },
+        Engine {
+            name: "fixstep f64 (same code)".into(),
             run: fixstep_side::run_f64,
         },
     ];
-    println!("| scene | steps | engine | ms/step (median of {rounds}) | vs fixstep I32F32 |");
-    println!("|---|---|---|---|---|");
+    println!(
+        "| scene | steps | engine | ms/step (median of {rounds}) | vs fixstep I32F32 | quality |"
+    );
+    println!("|---|---|---|---|---|---|");
     for scene in scenes {
         let mut times = vec![Vec::new(); engines.len()];
+        let mut qualities = vec![None; engines.len()];
         for _ in 0..rounds {
-            for (engine, times) in engines.iter().zip(&mut times) {
-                times.push((engine.run)(scene));
+            for ((engine, times), q) in engines.iter().zip(&mut times).zip(&mut qualities) {
+                let run = (engine.run)(scene);
+                times.push(run.ms);
+                *q = quality::rigid(scene, &run);
             }
         }
         let medians: Vec<f64> = times.iter_mut().map(|t| median(t)).collect();
-        for (engine, m) in engines.iter().zip(&medians) {
+        for ((engine, m), q) in engines.iter().zip(&medians).zip(&qualities) {
             println!(
-                "| `{}` | {} | {} | {:.3} | {:.2}× |",
-                scene.name,
+                "| {} | {} | {} | {:.3} | {:.2}× | {} |",
+                label(scene),
                 scene.steps,
                 engine.name,
                 m,
-                m / medians[0]
+                m / medians[0],
+                quality_text(scene, *q)
             );
         }
     }
@@ -163,33 +149,43 @@ fn main() {
     }
 }
 
-/// The fluid rows: fixstep I32F32, salva3d, fixstep `f64`, interleaved.
+/// The fluid rows: fixstep I32F32, salva3d at its tolerance and at fixstep's, fixstep
+/// `f64`, interleaved.
 fn water_table(rounds: usize) {
     let scene = &WATER;
-    let mut times = [Vec::new(), Vec::new(), Vec::new()];
+    let mut times = [Vec::new(), Vec::new(), Vec::new(), Vec::new()];
+    let mut compression = [0.0; 4];
     let mut counts = (0, 0);
+    let mut record = |k: usize, run: FluidRun, times: &mut [Vec<f64>; 4]| {
+        times[k].push(run.ms);
+        compression[k] = quality::mean_compression(scene, &run.positions);
+    };
     for _ in 0..rounds {
-        times[0].push(fixstep_side::run_fluid_fixed(scene));
-        let (ms, fluid, boundary) = salva_side::run(scene);
-        times[1].push(ms);
+        record(0, fixstep_side::run_fluid_fixed(scene), &mut times);
+        let (run, fluid, boundary) = salva_side::run(scene, None);
         counts = (fluid, boundary);
-        times[2].push(fixstep_side::run_fluid_f64(scene));
+        record(1, run, &mut times);
+        let (run, _, _) = salva_side::run(scene, Some(salva_side::FIXSTEP_TOLERANCE));
+        record(2, run, &mut times);
+        record(3, fixstep_side::run_fluid_f64(scene), &mut times);
     }
     let names = [
-        "fixstep I32F32 (DFSPH)",
-        "salva3d 0.11 (DFSPH, f32)",
-        "fixstep f64 (same code)",
+        "fixstep I32F32 (DFSPH, tolerance 0.05 %)".to_string(),
+        "salva3d 0.11 (DFSPH, f32, its default tolerance 5 %)".to_string(),
+        "salva3d 0.11 (DFSPH, f32, fixstep's tolerance 0.05 %)".to_string(),
+        "fixstep f64 (same code)".to_string(),
     ];
     let medians: Vec<f64> = times.iter_mut().map(|t| median(t)).collect();
-    for (name, m) in names.iter().zip(&medians) {
+    for ((name, m), c) in names.iter().zip(&medians).zip(compression) {
         println!(
-            "| `water` ({} fluid, {} boundary in salva3d) | {} | {} | {:.3} | {:.2}× |",
+            "| `water` ({} fluid, {} boundary) | {} | {} | {:.3} | {:.2}× | mean compression {:.3} % |",
             counts.0,
             counts.1,
             scene.steps,
             name,
             m,
-            m / medians[0]
+            m / medians[0],
+            100.0 * c
         );
     }
 }
