@@ -1,5 +1,5 @@
-//! fixstep's side: its built-in rigid scenes, and the cube of water of its fluid
-//! benchmark.
+//! fixstep's side: its built-in rigid scenes, and the fluid scenes built from their
+//! description.
 
 use crate::scenes::{FluidRun, FluidScene, RigidRun, Scene};
 use crate::time_steps;
@@ -53,29 +53,32 @@ pub fn run_f64(scene: Scene) -> RigidRun {
     run::<f64>(scene)
 }
 
-/// fixstep's DFSPH on `scene` in `R`, timed after its warm-up steps: the cube of
-/// `benches/fluid.rs` with the scene's step.
+/// fixstep's DFSPH on `scene` in `R`, timed after its warm-up steps.
 fn run_fluid<R: Real>(scene: &FluidScene) -> FluidRun {
     let dx = R::from_f64(f64::from(scene.spacing));
-    let side = dx * R::from_int(scene.n as i32);
+    let corner = |c: [f32; 3]| {
+        Vec3::new(
+            R::from_f64(f64::from(c[0])),
+            R::from_f64(f64::from(c[1])),
+            R::from_f64(f64::from(c[2])),
+        )
+    };
     let tank = FluidBox {
         min: Vec3::ZERO,
-        max: Vec3::new(side, side * R::from_ratio(3, 2), side),
+        max: corner(scene.tank),
     };
     let mut desc = FluidDesc::new(FluidSolver::Dfsph, dx, tank);
-    // fixstep takes a fixed substep count and refuses one above 0.2 H/u (u = 2 m/s, the
-    // fastest flow it is set for): 5 ms in 3 substeps of 1.67 ms.
-    desc.substeps = 3;
+    desc.substeps = scene.fixstep_substeps;
     desc.blocks.push(FluidBlock {
         region: FluidBox {
             min: Vec3::ZERO,
-            max: Vec3::splat(side),
+            max: corner(scene.block),
         },
         velocity: Vec3::ZERO,
     });
     let dt = R::from_f64(f64::from(scene.dt));
     let gravity = Vec3::new(R::ZERO, R::from_f64(-9.81), R::ZERO);
-    let mut fluid = FluidSystem::from_desc(&desc, dt).expect("the cube builds");
+    let mut fluid = FluidSystem::from_desc(&desc, dt).expect("the fluid scene builds");
     for _ in 0..scene.warm_steps {
         fluid.step(dt, gravity);
     }

@@ -13,12 +13,11 @@
 //! manifold plus a twist row) and with Coulomb friction at every contact point, which is
 //! how fixstep solves friction: the like-for-like comparison.
 //!
-//! Fluid (`water`): salva3d 0.11 (DFSPH, f32) beside fixstep's DFSPH, a cube of 20³
-//! particles 1 cm apart settling on the floor of a tank of the same footprint lined with
-//! two layers of boundary particles, kernel support 2 cm, rest density 1000 kg/m³,
-//! dt = 0.005 s (each engine substeps as its own time-step control requires), timed after
-//! 20 steps. salva3d runs twice: with its default tolerance (mean predicted compression
-//! 5 %) and with fixstep's (0.05 %).
+//! Fluids (`src/scenes.rs`): salva3d 0.11 (DFSPH, f32) beside fixstep's DFSPH, `water` (a
+//! cube of 20³ particles 1 cm apart settling in a tank) and `dam_break` (Martin & Moyce's
+//! column, 8000 particles), dt = 0.005 s, each engine substepping as its own time-step
+//! control requires. salva3d runs twice: with its default tolerance (mean predicted
+//! compression 5 %) and with fixstep's (0.05 %).
 //!
 //! Usage: `fixstep-peers [ROUNDS] [SCENE …]`.
 
@@ -28,7 +27,7 @@ mod rapier_side;
 mod salva_side;
 mod scenes;
 
-use scenes::{FluidRun, RigidRun, SCENES, Scene, WATER};
+use scenes::{FLUID_SCENES, FluidRun, FluidScene, RigidRun, SCENES, Scene};
 use std::time::Instant;
 
 /// One rigid-body engine: builds a scene afresh and runs it.
@@ -86,12 +85,17 @@ fn main() {
         .into_iter()
         .filter(|s| wanted.is_empty() || wanted.iter().any(|w| w == s.name))
         .collect();
-    let water = wanted.is_empty() || wanted.iter().any(|w| w == "water");
+    let fluids: Vec<&FluidScene> = FLUID_SCENES
+        .iter()
+        .filter(|s| wanted.is_empty() || wanted.iter().any(|w| w == s.name))
+        .collect();
     if let Some(unknown) = wanted
         .iter()
-        .find(|w| *w != "water" && SCENES.iter().all(|s| s.name != *w))
+        .find(|w| SCENES.iter().all(|s| s.name != *w) && FLUID_SCENES.iter().all(|s| s.name != *w))
     {
-        eprintln!("error: no scene `{unknown}`; the scenes are pyramid, balls, falling, water");
+        eprintln!(
+            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, water, dam_break"
+        );
         std::process::exit(2);
     }
     let rapier = if rapier_side::ENHANCED_DETERMINISM {
@@ -144,21 +148,31 @@ fn main() {
             );
         }
     }
-    if water {
-        water_table(rounds);
+    for scene in fluids {
+        fluid_table(scene, rounds);
     }
 }
 
-/// The fluid rows: fixstep I32F32, salva3d at its tolerance and at fixstep's, fixstep
-/// `f64`, interleaved.
-fn water_table(rounds: usize) {
-    let scene = &WATER;
+/// The rows of `scene`: fixstep I32F32, salva3d at its tolerance and at fixstep's,
+/// fixstep `f64`, interleaved.
+fn fluid_table(scene: &FluidScene, rounds: usize) {
     let mut times = [Vec::new(), Vec::new(), Vec::new(), Vec::new()];
-    let mut compression = [0.0; 4];
+    let mut quality = vec![String::new(); 4];
     let mut counts = (0, 0);
+    let elapsed = f64::from(scene.warm_steps + scene.steps) * f64::from(scene.dt);
     let mut record = |k: usize, run: FluidRun, times: &mut [Vec<f64>; 4]| {
         times[k].push(run.ms);
-        compression[k] = quality::mean_compression(scene, &run.positions);
+        let compression = 100.0 * quality::mean_compression(scene, &run.positions);
+        quality[k] = if scene.name == "dam_break" {
+            let (t, z, error, shifted) = quality::dam_front(scene, &run.positions, elapsed);
+            format!(
+                "front Z {z:.2} at T {t:.2}: {:+.1} % against Martin & Moyce ({:+.1} % shifted); mean compression {compression:.3} %",
+                100.0 * error,
+                100.0 * shifted
+            )
+        } else {
+            format!("mean compression {compression:.3} %")
+        };
     };
     for _ in 0..rounds {
         record(0, fixstep_side::run_fluid_fixed(scene), &mut times);
@@ -170,22 +184,26 @@ fn water_table(rounds: usize) {
         record(3, fixstep_side::run_fluid_f64(scene), &mut times);
     }
     let names = [
-        "fixstep I32F32 (DFSPH, tolerance 0.05 %)".to_string(),
+        format!(
+            "fixstep I32F32 (DFSPH, tolerance 0.05 %, {} substeps)",
+            scene.fixstep_substeps
+        ),
         "salva3d 0.11 (DFSPH, f32, its default tolerance 5 %)".to_string(),
         "salva3d 0.11 (DFSPH, f32, fixstep's tolerance 0.05 %)".to_string(),
         "fixstep f64 (same code)".to_string(),
     ];
     let medians: Vec<f64> = times.iter_mut().map(|t| median(t)).collect();
-    for ((name, m), c) in names.iter().zip(&medians).zip(compression) {
+    for ((name, m), q) in names.iter().zip(&medians).zip(&quality) {
         println!(
-            "| `water` ({} fluid, {} boundary) | {} | {} | {:.3} | {:.2}× | mean compression {:.3} % |",
+            "| `{}` ({} fluid, {} boundary) | {} | {} | {:.3} | {:.2}× | {} |",
+            scene.name,
             counts.0,
             counts.1,
             scene.steps,
             name,
             m,
             m / medians[0],
-            100.0 * c
+            q
         );
     }
 }

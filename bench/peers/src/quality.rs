@@ -6,13 +6,19 @@
 //!   sphere and the container's floor (y = 0) or walls (x, z = ±10 m).
 //! - `falling`: the largest distance of a sphere from free fall, |y − (y₀ − ½gt²)|, m (both
 //!   engines integrate with semi-implicit Euler, whose error here is ½g·dt·t).
-//! - `water`: the mean compression of the fluid, mean of max(ρᵢ/ρ₀ − 1, 0) over the fluid
-//!   particles, with ρᵢ the SPH sum over the fluid and the tank's boundary particles of a
-//!   cubic spline of support 2 spacings, and ρ₀ the same sum at a site inside the rest
-//!   lattice. Both solvers bound this quantity, each with its own kernel (fixstep a
-//!   Wendland C2, salva3d this cubic spline), so neither kernel is the reference.
+//! - `dam_break`: the surge front Z = x_front/a at T = t·√(2g/a) against Martin & Moyce's
+//!   (1952, table 2) at the same T, as a relative error, as is and with the customary
+//!   shift of +0.175 in T for the gate's opening; x_front is the furthest x (plus half a
+//!   spacing) of a fluid particle within one spacing of the floor, as fixstep's `front_x`.
+//! - `water` and `dam_break`: the mean compression of the fluid inside, mean of
+//!   max(ρᵢ/ρ₀ − 1, 0) over the fluid particles whose kernel support does not reach the
+//!   tank's floor or walls, with ρᵢ the SPH sum over the fluid particles of a cubic spline of
+//!   support 2 spacings, and ρ₀ the same sum at a site inside the rest lattice. Both
+//!   solvers bound this quantity, each with its own kernel (fixstep a Wendland C2, salva3d
+//!   this cubic spline, whose lattice sum is its rest density to 3·10⁻⁵), and each with its
+//!   own boundary model, which the figure leaves out.
 
-use crate::scenes::{FluidScene, RigidRun, Scene};
+use crate::scenes::{DAM_WIDTH, FluidScene, RigidRun, Scene};
 use std::collections::BTreeMap;
 
 /// The scene's quality figure for one run, m; `None` when the run has no bodies.
@@ -80,11 +86,18 @@ fn cubic_spline(q: f64) -> f64 {
     }
 }
 
-/// The mean compression of the fluid at `positions` in `scene`'s tank (module docs).
+/// The mean compression of the fluid at `positions` inside `scene`'s tank (module docs).
 pub fn mean_compression(scene: &FluidScene, positions: &[[f64; 3]]) -> f64 {
     let dx = f64::from(scene.spacing);
     let support = 2.0 * dx;
-    let walls: Vec<[f64; 3]> = scene.walls().iter().map(|p| p.map(f64::from)).collect();
+    let tank = scene.tank.map(f64::from);
+    let inside = |p: &[f64; 3]| {
+        p[1] >= support
+            && p[0] >= support
+            && p[0] <= tank[0] - support
+            && p[2] >= support
+            && p[2] <= tank[2] - support
+    };
     // ρ₀: the sum at a lattice site, over the sites within the support.
     let reach = 2;
     let mut rest = 0.0;
@@ -98,11 +111,12 @@ pub fn mean_compression(scene: &FluidScene, positions: &[[f64; 3]]) -> f64 {
     }
     let cell = |p: &[f64; 3]| p.map(|c| (c / support).floor() as i64);
     let mut grid: BTreeMap<[i64; 3], Vec<[f64; 3]>> = BTreeMap::new();
-    for p in positions.iter().chain(&walls) {
+    for p in positions {
         grid.entry(cell(p)).or_default().push(*p);
     }
     let mut total = 0.0;
-    for p in positions {
+    let mut count = 0;
+    for p in positions.iter().filter(|p| inside(p)) {
         let c = cell(p);
         let mut sum = 0.0;
         for i in -1..=1 {
@@ -118,6 +132,52 @@ pub fn mean_compression(scene: &FluidScene, positions: &[[f64; 3]]) -> f64 {
             }
         }
         total += (sum / rest - 1.0).max(0.0);
+        count += 1;
     }
-    total / positions.len().max(1) as f64
+    total / f64::from(count.max(1))
+}
+
+/// Martin & Moyce (1952), table 2, n² = 2: (T, Z) (`../shared/reference/`).
+const MARTIN_MOYCE: [(f64, f64); 16] = [
+    (0.0, 1.0),
+    (0.41, 1.11),
+    (0.84, 1.22),
+    (1.19, 1.44),
+    (1.43, 1.67),
+    (1.63, 1.89),
+    (1.83, 2.11),
+    (1.98, 2.33),
+    (2.2, 2.56),
+    (2.32, 2.78),
+    (2.51, 3.0),
+    (2.65, 3.22),
+    (2.83, 3.44),
+    (2.98, 3.67),
+    (3.11, 3.89),
+    (3.33, 4.11),
+];
+
+/// Martin & Moyce's Z at `t`, linearly interpolated.
+fn martin_moyce(t: f64) -> f64 {
+    let at = MARTIN_MOYCE
+        .partition_point(|&(tk, _)| tk <= t)
+        .clamp(1, MARTIN_MOYCE.len() - 1);
+    let ((t0, z0), (t1, z1)) = (MARTIN_MOYCE[at - 1], MARTIN_MOYCE[at]);
+    z0 + (z1 - z0) * (t - t0) / (t1 - t0)
+}
+
+/// The dam break's front after `time` seconds: (T, Z, relative error against Martin &
+/// Moyce, the same with T shifted by +0.175).
+pub fn dam_front(scene: &FluidScene, positions: &[[f64; 3]], time: f64) -> (f64, f64, f64, f64) {
+    let dx = f64::from(scene.spacing);
+    let a = f64::from(DAM_WIDTH);
+    let front = positions
+        .iter()
+        .filter(|p| p[1] <= dx)
+        .map(|p| p[0] + 0.5 * dx)
+        .fold(0.0, f64::max);
+    let z = front / a;
+    let t = time * (2.0 * 9.81 / a).sqrt();
+    let error = |reference: f64| z / reference - 1.0;
+    (t, z, error(martin_moyce(t)), error(martin_moyce(t + 0.175)))
 }

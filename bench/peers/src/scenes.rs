@@ -39,34 +39,63 @@ pub const SCENES: [Scene; 5] = [
     },
 ];
 
-/// The fluid scene: a cube of `n`³ particles `spacing` (m) apart in a tank of the same
-/// footprint, 1.5 × as high; `steps` timed steps of `dt` (s) after `warm_steps`.
+/// A fluid scene: a block of fluid on the lattice sites of `[0, block]` (m) resting in the
+/// corner of an open tank `[0, tank]` lined with two layers of boundary particles, particles
+/// `spacing` (m) apart; `steps` timed steps of `dt` (s) after `warm_steps`; fixstep takes
+/// `fixstep_substeps` substeps per step (the fewest its time-step limit 0.2 H/u allows, u =
+/// 2 m/s), salva3d chooses its own (CFL 0.4).
 pub struct FluidScene {
-    pub n: u32,
+    pub name: &'static str,
     pub spacing: f32,
+    pub block: [f32; 3],
+    pub tank: [f32; 3],
     pub dt: f32,
     pub warm_steps: u32,
     pub steps: u32,
+    pub fixstep_substeps: u32,
 }
 
+/// Martin & Moyce's column width a = 2.25 in, m.
+pub const DAM_WIDTH: f32 = 0.05715;
+
+/// The fluid scenes.
+pub const FLUID_SCENES: [FluidScene; 2] = [
+    // `water`: a cube of 20³ particles 1 cm apart settling on the floor of a tank of the
+    // same footprint, 1.5 × as high (salva3d's setup in issue #8); timed after 20 steps.
+    FluidScene {
+        name: "water",
+        spacing: 0.01,
+        block: [0.2, 0.2, 0.2],
+        tank: [0.2, 0.3, 0.2],
+        dt: 0.005,
+        warm_steps: 20,
+        steps: 10,
+        fixstep_substeps: 3,
+    },
+    // `dam_break`: Martin & Moyce's column, a wide and 2a high at the back wall of a tank
+    // 0.3 m long and 0.15 m high, 20 particles across a and 10 deep (8000 particles), as
+    // fixstep's built-in `dam_break` at a finer spacing; the whole collapse is timed, 22
+    // steps to T = t·√(2g/a) ≈ 2.
+    FluidScene {
+        name: "dam_break",
+        spacing: DAM_WIDTH / 20.0,
+        block: [DAM_WIDTH, 2.0 * DAM_WIDTH, 10.0 * DAM_WIDTH / 20.0],
+        tank: [0.3, 0.15, 10.0 * DAM_WIDTH / 20.0],
+        dt: 0.005,
+        warm_steps: 0,
+        steps: 22,
+        fixstep_substeps: 9,
+    },
+];
+
 impl FluidScene {
-    /// Side of the cube and the tank, m.
-    pub fn side(&self) -> f32 {
-        self.spacing * self.n as f32
-    }
-
-    /// Height of the tank, m.
-    pub fn height(&self) -> f32 {
-        1.5 * self.side()
-    }
-
-    /// The fluid at the start: the lattice sites of the cube, x fastest, then y, then z.
+    /// The fluid at the start: the lattice sites of the block, x fastest, then y, then z.
     pub fn fluid(&self) -> Vec<[f32; 3]> {
-        let inner = sites(0.0, self.side(), self.spacing);
+        let dx = self.spacing;
         let mut points = Vec::new();
-        for &z in &inner {
-            for &y in &inner {
-                for &x in &inner {
+        for &z in &sites(0.0, self.block[2], dx) {
+            for &y in &sites(0.0, self.block[1], dx) {
+                for &x in &sites(0.0, self.block[0], dx) {
                     points.push([x, y, z]);
                 }
             }
@@ -78,33 +107,35 @@ impl FluidScene {
     /// two layers one spacing apart outside the floor (under the walls too) and the four
     /// walls.
     pub fn walls(&self) -> Vec<[f32; 3]> {
-        let (dx, side, height) = (self.spacing, self.side(), self.height());
+        let dx = self.spacing;
+        let [length, height, depth] = self.tank;
         let thickness = 2.0 * dx;
-        let outer = sites(-thickness, side + thickness, dx);
-        let inner = sites(0.0, side, dx);
+        let outer_x = sites(-thickness, length + thickness, dx);
+        let outer_z = sites(-thickness, depth + thickness, dx);
+        let inner_x = sites(0.0, length, dx);
         let rise = sites(0.0, height, dx);
         let layers = sites(0.0, thickness, dx);
         let mut points = Vec::new();
-        for &z in &outer {
-            for &depth in &layers {
-                for &x in &outer {
-                    points.push([x, -depth, z]);
+        for &z in &outer_z {
+            for &layer in &layers {
+                for &x in &outer_x {
+                    points.push([x, -layer, z]);
                 }
             }
         }
-        for &z in &outer {
+        for &z in &outer_z {
             for &y in &rise {
-                for &depth in &layers {
-                    points.push([-depth, y, z]);
-                    points.push([side + depth, y, z]);
+                for &layer in &layers {
+                    points.push([-layer, y, z]);
+                    points.push([length + layer, y, z]);
                 }
             }
         }
-        for &depth in &layers {
+        for &layer in &layers {
             for &y in &rise {
-                for &x in &inner {
-                    points.push([x, y, -depth]);
-                    points.push([x, y, side + depth]);
+                for &x in &inner_x {
+                    points.push([x, y, -layer]);
+                    points.push([x, y, depth + layer]);
                 }
             }
         }
@@ -119,15 +150,6 @@ fn sites(lo: f32, hi: f32, spacing: f32) -> Vec<f32> {
         .map(|i| lo + (i as f32 + 0.5) * spacing)
         .collect()
 }
-
-/// `water`: 8000 particles 1 cm apart, steps of 5 ms (salva3d's setup in issue #8).
-pub const WATER: FluidScene = FluidScene {
-    n: 20,
-    spacing: 0.01,
-    dt: 0.005,
-    warm_steps: 20,
-    steps: 10,
-};
 
 /// One run of a rigid scene: mean ms per step, and the positions (m) of the dynamic bodies
 /// before the first step and after the last, in the order they were created.
