@@ -3,9 +3,12 @@
 //! The benchmark figures come from `cargo bench --bench fluid`, not from here.
 //!
 //! Usage: `cargo run --release --example fluid_steps [dfsph|wcsph] [N] [RATE] [SUBSTEPS]
-//! [WARM] [STEPS] [fx|f64]`: N³ particles, steps of 1/RATE s in SUBSTEPS fluid substeps,
-//! WARM steps untimed, then STEPS timed (default `dfsph 20 200 3 20 10 fx`: the DFSPH case
-//! of the benchmark, 8000 particles at Δt = 5 ms).
+//! [WARM] [STEPS] [fx|f64] [TOLERANCE] [SOUND]`: N³ particles, steps of 1/RATE s in
+//! SUBSTEPS fluid substeps, WARM steps untimed, then STEPS timed (default
+//! `dfsph 20 200 3 20 10 fx`: the DFSPH case of the benchmark, 8000 particles at
+//! Δt = 5 ms). TOLERANCE sets the DFSPH tolerance on the mean density error (default
+//! 0.0005) and SOUND the speed of sound, m/s (default 20; the time-step limit allows one
+//! DFSPH substep of 5 ms at 1 cm spacing from SOUND = 4 down).
 
 use std::time::{Duration, Instant};
 
@@ -20,12 +23,20 @@ struct Run {
     substeps: u32,
     warm: u32,
     steps: u32,
+    tolerance: Option<f64>,
+    sound: Option<f64>,
 }
 
 fn run<R: Real>(r: &Run) {
     let dt = R::from_ratio(1, r.rate);
     let gravity = Vec3::new(R::ZERO, R::from_f64(-9.81), R::ZERO);
-    let desc = presets::cube::<R>(r.n, r.solver, r.substeps);
+    let mut desc = presets::cube::<R>(r.n, r.solver, r.substeps);
+    if let Some(tolerance) = r.tolerance {
+        desc.max_density_error = R::from_f64(tolerance);
+    }
+    if let Some(sound) = r.sound {
+        desc.speed_of_sound = R::from_f64(sound);
+    }
     let mut fluid = match FluidSystem::from_desc(&desc, dt) {
         Ok(fluid) => fluid,
         Err(e) => {
@@ -71,6 +82,14 @@ fn main() {
             std::process::exit(2);
         })
     };
+    let decimal = |i: usize| -> Option<f64> {
+        args.get(i).map(|a| {
+            a.parse().unwrap_or_else(|_| {
+                eprintln!("error: argument {} must be a number", i + 1);
+                std::process::exit(2);
+            })
+        })
+    };
     let solver = match arg(0, "dfsph").as_str() {
         "wcsph" => FluidSolver::Wcsph,
         _ => FluidSolver::Dfsph,
@@ -82,6 +101,8 @@ fn main() {
         substeps: number(3, "3"),
         warm: number(4, "20"),
         steps: number(5, "10"),
+        tolerance: decimal(7),
+        sound: decimal(8),
     };
     match arg(6, "fx").as_str() {
         "f64" => run::<f64>(&r),
