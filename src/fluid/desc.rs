@@ -33,8 +33,9 @@ pub enum FluidSolver {
     /// Weakly compressible SPH: pressure from the Tait equation of state, explicit.
     #[default]
     Wcsph,
-    /// Divergence-free SPH's constant-density solver: velocities corrected by Jacobi
-    /// iterations until the mean predicted density error is below a tolerance.
+    /// Divergence-free SPH: each substep a divergence-free solve, then the constant-density
+    /// solve, velocities corrected by Jacobi iterations until the mean predicted density
+    /// error is below a tolerance (and no particle's above 10 %).
     Dfsph,
 }
 

@@ -17,7 +17,7 @@
 //! sort into cells · [`neighbours`] neighbour lists with kernel values.
 //!
 //! Dynamics: [`emitter`] nozzles · [`density`] kernel sums · [`wcsph`] Tait pressure ·
-//! [`dfsph`] the constant-density solver and [`row_sums`] its iterations' sums over the
+//! [`dfsph`] the divergence-free and constant-density solves and [`row_sums`] their sums over the
 //! neighbours · [`xsph`] velocity smoothing · [`boundary`] the
 //! tank's boundary particles and walls.
 //!
