@@ -14,6 +14,10 @@
 
 use crate::math::{Real, Vec3};
 
+/// The most cells [`CellGrid::for_each_within`] reaches from a point's cell along an axis:
+/// a radius of 3.5 supports (the searches use 1 and 1.25).
+pub const MAX_SPAN: u32 = 7;
+
 /// Cell edges and the points of each cell.
 #[derive(Clone, Debug, Default)]
 pub struct CellGrid<R: Real> {
@@ -95,7 +99,7 @@ impl<R: Real> CellGrid<R> {
 
     /// The fewest cells that span `radius` along an axis: the `span` for which
     /// [`CellGrid::for_each_within`] visits every point closer than `radius` (2 for one
-    /// kernel support, the cells being half as wide).
+    /// kernel support, the cells being half as wide), if at most [`MAX_SPAN`].
     pub fn span(&self, radius: R) -> u32 {
         let mut span = 1;
         let mut reach = self.size;
@@ -149,13 +153,14 @@ impl<R: Real> CellGrid<R> {
     }
 
     /// Calls `visit` with the points of every cell that may hold a point closer than a
-    /// radius ρ to `p` (`inv_radius` = 1/ρ, `span` = [`CellGrid::span`] of ρ: 2 for ρ = H):
-    /// of the cells within `span` of p's cell along each axis (125 for a span of 2), the
-    /// rows whose nearest y and z distances to p already reach ρ are skipped, and each
-    /// remaining row is trimmed at both ends the same way along x. Cells come in ascending
-    /// index, points in ascending index within each cell: one slice per row, whose cells
-    /// are contiguous. Distances are measured in radii (scaled before squaring) and
-    /// compared with 1 + 2⁻⁸, so rounding never skips a cell it must visit.
+    /// radius ρ to `p` (`inv_radius` = 1/ρ, `span` = [`CellGrid::span`] of ρ: 2 for ρ = H,
+    /// at most [`MAX_SPAN`]): of the cells within `span` of p's cell along each axis (125
+    /// for a span of 2), the rows whose nearest y and z distances to p already reach ρ are
+    /// skipped, and each remaining row is trimmed at both ends the same way along x. Cells
+    /// come in ascending index, points in ascending index within each cell: one slice per
+    /// row, whose cells are contiguous. Distances are measured in radii (scaled before
+    /// squaring, once per cell coordinate) and compared with 1 + 2⁻⁸, so rounding never
+    /// skips a cell it must visit.
     #[inline]
     pub fn for_each_within(
         &self,
@@ -164,25 +169,31 @@ impl<R: Real> CellGrid<R> {
         span: u32,
         mut visit: impl FnMut(&[u32]),
     ) {
+        let span = span.min(MAX_SPAN);
         let c = self.coords(p);
         let lo = c.map(|v| v.saturating_sub(span));
         let hi = [0, 1, 2].map(|a| c[a].saturating_add(span).min(self.dims[a] - 1));
         let reach = R::ONE + R::from_ratio(1, 256);
         let coordinate = [p.x, p.y, p.z];
-        // The squared distance, in radii, from p to cell `cell` along `axis` (0 inside).
-        let gap2 = |axis: usize, cell: u32| {
+        // The squared distance, in radii, from p to each cell from lo to hi along each
+        // axis (0 inside).
+        let mut gaps = [[R::ZERO; 2 * MAX_SPAN as usize + 1]; 3];
+        for (axis, gaps) in gaps.iter_mut().enumerate() {
             let edges = &self.edges[axis];
             let x = coordinate[axis];
-            let gap = if cell < c[axis] {
-                x - edges[cell as usize]
-            } else if cell > c[axis] {
-                edges[cell as usize - 1] - x
-            } else {
-                R::ZERO
-            };
-            let g = gap * inv_radius;
-            g * g
-        };
+            for (cell, g2) in (lo[axis]..=hi[axis]).zip(gaps.iter_mut()) {
+                let gap = if cell < c[axis] {
+                    x - edges[cell as usize]
+                } else if cell > c[axis] {
+                    edges[cell as usize - 1] - x
+                } else {
+                    continue;
+                };
+                let g = gap * inv_radius;
+                *g2 = g * g;
+            }
+        }
+        let gap2 = |axis: usize, cell: u32| gaps[axis][(cell - lo[axis]) as usize];
         for z in lo[2]..=hi[2] {
             let gz = gap2(2, z);
             if gz > reach {

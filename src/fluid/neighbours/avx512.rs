@@ -80,14 +80,10 @@ pub(super) fn build<R: Real>(
         return false;
     };
     let search = &admitted.search;
-    let within = Within {
-        grid,
-        inv_radius: search.inv_radius,
-        span: grid.span(search.radius),
-    };
+    let within = Within::new(grid, search.inv_radius, grid.span(search.radius));
     let (queries, points) = (admitted.queries, admitted.points);
     // SAFETY: `admit` detected AVX-512F and checked the bounds.
-    unsafe { build_kernel(lists, queries, points, &within, search) }
+    unsafe { build_kernel(lists, queries, points, within, search) }
 }
 
 /// [`NeighbourLists::evaluate`] with the kernel, on the conditions of [`build`]; returns
@@ -132,14 +128,10 @@ pub(super) fn select<R: Real>(
     ) else {
         return false;
     };
-    let within = Within {
-        grid,
-        inv_radius: admitted.search.inv_radius,
-        span: reach.span,
-    };
+    let within = Within::new(grid, admitted.search.inv_radius, reach.span);
     let (queries, points) = (admitted.queries, admitted.points);
     // SAFETY: `admit` detected AVX-512F and checked the bounds.
-    unsafe { select_kernel(rows, queries, points, &within, &admitted.search) }
+    unsafe { select_kernel(rows, queries, points, within, &admitted.search) }
 }
 
 /// The inputs in I32F32 and the constants of a search within a radius (`radius`: the
@@ -236,29 +228,47 @@ struct Search {
 
 /// Where the candidates of each query come from.
 trait Candidates {
-    /// Calls `visit` with the candidates of query `i` at `xi`, in order.
-    fn visit(&self, i: usize, xi: Vec3<Fx>, visit: impl FnMut(&[u32]));
+    /// The candidates of query `i` at `xi`, in order.
+    fn of(&mut self, i: usize, xi: Vec3<Fx>) -> &[u32];
 }
 
-/// The grid's points within a radius.
+/// The grid's points within a radius, the slices of the grid's rows copied end to end so
+/// that the blocks of eight are full but for the last.
 struct Within<'a> {
     grid: &'a CellGrid<Fx>,
     inv_radius: Fx,
     span: u32,
+    found: Vec<u32>,
+}
+
+impl<'a> Within<'a> {
+    fn new(grid: &'a CellGrid<Fx>, inv_radius: Fx, span: u32) -> Self {
+        Self {
+            grid,
+            inv_radius,
+            span,
+            found: Vec::new(),
+        }
+    }
 }
 
 impl Candidates for Within<'_> {
     #[inline(always)]
-    fn visit(&self, _: usize, xi: Vec3<Fx>, visit: impl FnMut(&[u32])) {
+    fn of(&mut self, _: usize, xi: Vec3<Fx>) -> &[u32] {
+        self.found.clear();
+        let found = &mut self.found;
         self.grid
-            .for_each_within(xi, self.inv_radius, self.span, visit);
+            .for_each_within(xi, self.inv_radius, self.span, |row| {
+                found.extend_from_slice(row)
+            });
+        &self.found
     }
 }
 
-impl Candidates for CandidateRows {
+impl Candidates for &CandidateRows {
     #[inline(always)]
-    fn visit(&self, i: usize, _: Vec3<Fx>, mut visit: impl FnMut(&[u32])) {
-        visit(self.row(i));
+    fn of(&mut self, i: usize, _: Vec3<Fx>) -> &[u32] {
+        self.row(i)
     }
 }
 
@@ -314,18 +324,15 @@ unsafe fn build_kernel(
     lists: &mut NeighbourLists<Fx>,
     queries: &[Vec3<Fx>],
     points: &[Vec3<Fx>],
-    candidates: &impl Candidates,
+    mut candidates: impl Candidates,
     search: &Search,
 ) -> bool {
     lists.clear();
     let mut survivors = Survivors::default();
-    let mut valid = true;
     for (i, &xi) in queries.iter().enumerate() {
-        candidates.visit(i, xi, |candidates| {
-            // SAFETY: the caller's conditions are this function's.
-            valid &= unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) };
-        });
-        if !valid {
+        let candidates = candidates.of(i, xi);
+        // SAFETY: the caller's conditions are this function's.
+        if !unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) } {
             return false;
         }
         // The survivors of several rows are evaluated together, in full blocks: the row
@@ -354,19 +361,16 @@ unsafe fn select_kernel(
     rows: &mut CandidateRows,
     queries: &[Vec3<Fx>],
     points: &[Vec3<Fx>],
-    candidates: &Within<'_>,
+    mut candidates: Within<'_>,
     search: &Search,
 ) -> bool {
     rows.clear();
     let mut survivors = Survivors::default();
-    let mut valid = true;
     for (i, &xi) in queries.iter().enumerate() {
         survivors.clear();
-        candidates.visit(i, xi, |candidates| {
-            // SAFETY: the caller's conditions are this function's.
-            valid &= unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) };
-        });
-        if !valid {
+        let candidates = candidates.of(i, xi);
+        // SAFETY: the caller's conditions are this function's.
+        if !unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) } {
             return false;
         }
         rows.extend(survivors.indices());
