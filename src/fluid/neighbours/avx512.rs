@@ -475,26 +475,33 @@ fn evaluate_blocks<const BLOCKS: usize>(
         _mm512_loadu_si512(lanes.as_ptr().add(first + 8 * block).cast())
     };
     let roots = sqrt::<BLOCKS>(core::array::from_fn(|b| load(q2, b)));
-    for (b, q) in roots.into_iter().enumerate() {
-        let (value, gradient) = kernel_values(q, [load(dx, b), load(dy, b), load(dz, b)], search);
-        let mut out = [[0i64; 8]; 4];
-        for (o, lanes) in out
-            .iter_mut()
-            .zip([value, gradient[0], gradient[1], gradient[2]])
-        {
-            // SAFETY: eight values into eight slots.
-            unsafe { _mm512_storeu_si512(o.as_mut_ptr().cast(), lanes) };
+    // All the blocks' values before any is stored, so that their chains of products
+    // overlap.
+    let values: [_; BLOCKS] = core::array::from_fn(|b| {
+        kernel_values(roots[b], [load(dx, b), load(dy, b), load(dz, b)], search)
+    });
+    let count = (survivors.len - first).min(8 * BLOCKS);
+    lists
+        .index
+        .extend(index[first..first + count].iter().map(|&j| j as u32));
+    let [gx, gy, gz] = &mut lists.gradients;
+    let outputs = [&mut lists.value, gx, gy, gz];
+    for (output, list) in outputs.into_iter().enumerate() {
+        let len = list.len();
+        list.reserve(8 * BLOCKS);
+        for (b, (value, gradient)) in values.iter().enumerate() {
+            let lanes = if output == 0 {
+                *value
+            } else {
+                gradient[output - 1]
+            };
+            // SAFETY: eight values into the capacity reserved just above, past the length;
+            // `Fx` is one `i64` (asserted above).
+            unsafe { _mm512_storeu_si512(list.as_mut_ptr().add(len + 8 * b).cast(), lanes) };
         }
-        let start = first + 8 * b;
-        let count = (survivors.len - start).min(8);
-        let [value, gx, gy, gz] = out.map(|lanes| lanes.map(Fx::from_bits));
-        lists
-            .index
-            .extend(index[start..start + count].iter().map(|&j| j as u32));
-        lists.value.extend_from_slice(&value[..count]);
-        for (list, lanes) in lists.gradients.iter_mut().zip([gx, gy, gz]) {
-            list.extend_from_slice(&lanes[..count]);
-        }
+        // SAFETY: the first `count` of the values stored are the survivors' (the blocks'
+        // other lanes, past them, are left out).
+        unsafe { list.set_len(len + count) };
     }
     (first + 8 * BLOCKS).min(survivors.len)
 }
