@@ -30,7 +30,9 @@
 //!
 //! So the survivors, their order (the candidates' order) and their values and gradients
 //! are the scalar form's bit for bit; lanes that fail the test hold meaningless values and
-//! are dropped. Other formats, targets and inputs beyond the bounds take
+//! are dropped. Every lane is computed on its own, so packing the survivors of several
+//! rows into the same blocks (to fill them) changes nothing but where the rows end, which
+//! the search records as it packs. Other formats, targets and inputs beyond the bounds take
 //! [`NeighbourLists::build_scalar`], [`NeighbourLists::evaluate_scalar`] and
 //! [`CandidateRows::select_scalar`].
 
