@@ -134,12 +134,22 @@ fn reused_candidates_give_the_fresh_lists_as_particles_move() {
         }
         fluid.evaluate(&skin.fluid, &pts, &pts, &kernel);
         walls.evaluate(&skin.walls, &pts, &boundary, &kernel);
+        // The scalar form, which targets without AVX-512 take.
+        let (mut fluid_scalar, mut walls_scalar) =
+            (NeighbourLists::default(), NeighbourLists::default());
+        fluid_scalar.evaluate_scalar(&skin.fluid, &pts, &pts, &kernel);
+        walls_scalar.evaluate_scalar(&skin.walls, &pts, &boundary, &kernel);
         let mut fresh_grid = new_grid();
         fresh_grid.fill(&pts);
         let (mut fresh, mut fresh_walls) = (NeighbourLists::default(), NeighbourLists::default());
         fresh.build(&pts, &pts, &fresh_grid, &kernel, true);
         fresh_walls.build(&pts, &boundary, &boundary_grid, &kernel, false);
-        for (found, expected) in [(&fluid, &fresh), (&walls, &fresh_walls)] {
+        for (found, expected) in [
+            (&fluid, &fresh),
+            (&walls, &fresh_walls),
+            (&fluid_scalar, &fresh),
+            (&walls_scalar, &fresh_walls),
+        ] {
             assert_eq!(found.start, expected.start, "substep {substep}");
             assert_eq!(found.index, expected.index, "substep {substep}");
             assert_eq!(found.value, expected.value, "substep {substep}");
