@@ -42,9 +42,10 @@ use crate::math::{Real, Vec3};
 /// (5 mm at H = 2 cm) measured fastest on the benchmark cube (docs/PERFORMANCE.md).
 pub const SKIN: (i64, i64) = (1, 4);
 
-// σ ≤ 1: ρ ≤ 2H spans at most 5 grid cells of H/2 (rounding included), within the grid's
-// [`MAX_SPAN`](crate::fluid::grid::MAX_SPAN).
-const _: () = assert!(0 < SKIN.0 && SKIN.0 <= SKIN.1);
+// 1/64 ≤ σ ≤ 1: δ = (σ/2 − 2⁻⁸) H is positive, the margin H + 2δ < ρ (1 − 2⁻¹⁰) − 2⁻¹⁰ H
+// of the module documentation holds, and ρ ≤ 2H spans at most 5 grid cells of H/2
+// (rounding included), within the grid's [`MAX_SPAN`](crate::fluid::grid::MAX_SPAN).
+const _: () = assert!(SKIN.1 <= 64 * SKIN.0 && SKIN.0 <= SKIN.1);
 
 /// Candidate neighbours of each query, as compressed rows: the candidates of query i are
 /// `index[start[i]..start[i + 1]]`.
