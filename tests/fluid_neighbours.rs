@@ -1,8 +1,10 @@
-//! The counting-sort grid and the neighbour lists against brute force.
+//! The counting-sort grid and the neighbour lists against brute force, and the lists found
+//! from candidates with a skin against a fresh search.
 
 use fixstep::fluid::grid::CellGrid;
 use fixstep::fluid::kernel::Kernel;
 use fixstep::fluid::neighbours::NeighbourLists;
+use fixstep::fluid::neighbours::skin::{Reach, SkinLists};
 use fixstep::math::{Fx, Pcg32, Real, Vec3};
 
 /// Random points in a 0.1 m cube and a few outside the grid.
@@ -74,4 +76,118 @@ fn rebuilding_gives_the_same_lists() {
     assert_eq!(a.index, b.index);
     assert_eq!(a.value, b.value);
     assert_eq!(a.gradients, b.gradients);
+}
+
+/// The lists the step finds from candidates with a skin ([`SkinLists`]) against a fresh
+/// search, in every substep of random motion: particles drifting up to 0.43 mm per
+/// substep (H = 1 cm, so the candidates last several substeps while particles change
+/// cells, which reorders rows), and one particle jumping 3 mm, which must force a new
+/// selection. Fluid and boundary lists alike, entry for entry and in order.
+#[test]
+fn reused_candidates_give_the_fresh_lists_as_particles_move() {
+    let kernel = Kernel::<Fx>::calibrated(Fx::from_ratio(5, 1000), Fx::TWO);
+    let new_grid = || {
+        CellGrid::new(
+            Vec3::ZERO,
+            Vec3::splat(Fx::from_ratio(1, 10)),
+            kernel.support,
+        )
+    };
+    let mut pts = points(1500, 3);
+    let boundary = points(600, 4);
+    let mut boundary_grid = new_grid();
+    boundary_grid.fill(&boundary);
+    let mut grid = new_grid();
+    let reach = Reach::new(&kernel, &grid);
+    let mut rng = Pcg32::new(5, 9);
+    let quarter_mm = Fx::from_ratio(1, 4000).to_bits() as u64;
+    let drift: Vec<Vec3<Fx>> = (0..pts.len())
+        .map(|_| {
+            let mut c = || {
+                Fx::from_bits((rng.next_u64() % (2 * quarter_mm)) as i64) - Fx::from_ratio(1, 4000)
+            };
+            Vec3::new(c(), c(), c())
+        })
+        .collect();
+    let mut skin = SkinLists::default();
+    let (mut fluid, mut walls) = (NeighbourLists::default(), NeighbourLists::default());
+    let (mut reused, mut reordered, mut jump_rebuilt) = (0, 0, false);
+    for substep in 0..40 {
+        for (p, &v) in pts.iter_mut().zip(&drift) {
+            *p += v;
+        }
+        if substep == 25 {
+            pts[700].x += Fx::from_ratio(3, 1000);
+        }
+        if skin.covers(&pts, &reach) {
+            reused += 1;
+            grid.locate(&pts);
+            let before = skin.fluid.clone();
+            skin.fluid.order_by_cells(grid.cells());
+            reordered += (0..pts.len())
+                .filter(|&i| before.row(i) != skin.fluid.row(i))
+                .count();
+        } else {
+            jump_rebuilt |= substep == 25;
+            grid.fill(&pts);
+            skin.build(&pts, &grid, &boundary, &boundary_grid, &reach);
+        }
+        fluid.evaluate(&skin.fluid, &pts, &pts, &kernel);
+        walls.evaluate(&skin.walls, &pts, &boundary, &kernel);
+        // The scalar form, which targets without AVX-512 take.
+        let (mut fluid_scalar, mut walls_scalar) =
+            (NeighbourLists::default(), NeighbourLists::default());
+        fluid_scalar.evaluate_scalar(&skin.fluid, &pts, &pts, &kernel);
+        walls_scalar.evaluate_scalar(&skin.walls, &pts, &boundary, &kernel);
+        let mut fresh_grid = new_grid();
+        fresh_grid.fill(&pts);
+        let (mut fresh, mut fresh_walls) = (NeighbourLists::default(), NeighbourLists::default());
+        fresh.build(&pts, &pts, &fresh_grid, &kernel, true);
+        fresh_walls.build(&pts, &boundary, &boundary_grid, &kernel, false);
+        for (found, expected) in [
+            (&fluid, &fresh),
+            (&walls, &fresh_walls),
+            (&fluid_scalar, &fresh),
+            (&walls_scalar, &fresh_walls),
+        ] {
+            assert_eq!(found.start, expected.start, "substep {substep}");
+            assert_eq!(found.index, expected.index, "substep {substep}");
+            assert_eq!(found.value, expected.value, "substep {substep}");
+            assert_eq!(found.gradients, expected.gradients, "substep {substep}");
+        }
+    }
+    assert!(reused >= 20, "reused in {reused} substeps of 40");
+    assert!(reordered > 0, "no row changed order");
+    assert!(jump_rebuilt, "the jump did not force a new selection");
+}
+
+/// The skin's reuse test: within the limit it holds, a particle beyond it, a particle
+/// more or less, or lists never built, and it does not.
+#[test]
+fn the_candidates_hold_only_near_their_anchors() {
+    let kernel = Kernel::<Fx>::calibrated(Fx::from_ratio(5, 1000), Fx::TWO);
+    let mut grid = CellGrid::new(
+        Vec3::ZERO,
+        Vec3::splat(Fx::from_ratio(1, 10)),
+        kernel.support,
+    );
+    let mut pts = points(300, 6);
+    grid.fill(&pts);
+    let reach = Reach::new(&kernel, &grid);
+    let mut no_boundary = grid.clone();
+    no_boundary.fill(&[]);
+    let mut skin = SkinLists::default();
+    assert!(!skin.covers(&pts, &reach), "never built");
+    skin.build(&pts, &grid, &[], &no_boundary, &reach);
+    assert!(skin.covers(&pts, &reach));
+    // δ = (σ/2 − 2⁻⁸) H = (1/8 − 1/256) cm = 1.21 mm.
+    pts[10].y += Fx::from_ratio(12, 10_000);
+    assert!(skin.covers(&pts, &reach), "1.2 mm");
+    pts[10].y += Fx::from_ratio(2, 100_000);
+    assert!(!skin.covers(&pts, &reach), "1.22 mm");
+    pts[10].y -= Fx::from_ratio(2, 100_000);
+    pts[20] = Vec3::new(Fx::MAX, Fx::MIN, Fx::MAX);
+    assert!(!skin.covers(&pts, &reach), "a saturated displacement");
+    pts.truncate(200);
+    assert!(!skin.covers(&pts, &reach), "fewer particles");
 }

@@ -9,12 +9,20 @@
 //! Cells are numbered x fastest, then y, then z; [`CellGrid::fill`] lists the points of
 //! each cell in ascending point index (the counting sort is stable), so the order of the
 //! entries is the total order (cell, index), the same on every machine.
+//! [`CellGrid::locate`] finds the points' cells without sorting them, for the substeps that
+//! reuse their candidate lists ([`skin`](super::skin)) and need only the order.
 
 use crate::math::{Real, Vec3};
+
+/// The most cells [`CellGrid::for_each_within`] reaches from a point's cell along an axis:
+/// a radius of 3.5 supports (the searches use 1 and 1.25).
+pub const MAX_SPAN: u32 = 7;
 
 /// Cell edges and the points of each cell.
 #[derive(Clone, Debug, Default)]
 pub struct CellGrid<R: Real> {
+    /// The width of a cell, m.
+    size: R,
     /// The inner cell edges along x, y and z, ascending: cell c spans
     /// `[edges[c − 1], edges[c])`.
     edges: [Vec<R>; 3],
@@ -51,6 +59,7 @@ impl<R: Real> CellGrid<R> {
         let dims = edges.each_ref().map(|e| e.len() as u32 + 1);
         let cells = dims.iter().map(|&d| d as usize).product::<usize>();
         Self {
+            size,
             edges,
             dims,
             start: vec![0; cells + 1],
@@ -88,13 +97,39 @@ impl<R: Real> CellGrid<R> {
         c[0] + self.dims[0] * (c[1] + self.dims[1] * c[2])
     }
 
-    /// Sorts `points` into their cells by counting sort: O(points + cells), no comparison.
-    pub fn fill(&mut self, points: &[Vec3<R>]) {
+    /// The fewest cells that span `radius` along an axis: the `span` for which
+    /// [`CellGrid::for_each_within`] visits every point closer than `radius` (2 for one
+    /// kernel support, the cells being half as wide), if at most [`MAX_SPAN`].
+    pub fn span(&self, radius: R) -> u32 {
+        let mut span = 1;
+        let mut reach = self.size;
+        while reach < radius {
+            span += 1;
+            reach += self.size;
+        }
+        span
+    }
+
+    /// The cell of each point of the last [`CellGrid::fill`] or [`CellGrid::locate`], by
+    /// point index.
+    #[inline]
+    pub fn cells(&self) -> &[u32] {
+        &self.cell_of
+    }
+
+    /// Finds the cell of each of `points` ([`CellGrid::cells`]) without sorting them: the
+    /// cell lists keep the points of the last [`CellGrid::fill`].
+    pub fn locate(&mut self, points: &[Vec3<R>]) {
         self.cell_of.clear();
         for &p in points {
             let c = self.coords(p);
             self.cell_of.push(self.cell_index(c));
         }
+    }
+
+    /// Sorts `points` into their cells by counting sort: O(points + cells), no comparison.
+    pub fn fill(&mut self, points: &[Vec3<R>]) {
+        self.locate(points);
         self.start.fill(0);
         for &cell in &self.cell_of {
             self.start[cell as usize + 1] += 1;
@@ -117,34 +152,48 @@ impl<R: Real> CellGrid<R> {
         self.start[0] = 0;
     }
 
-    /// Calls `visit` with the points of every cell that may hold a point closer than one
-    /// support to `p` (`inv_support` = 1/H): of the up to 125 cells within two of p's cell
-    /// along each axis, the rows whose nearest y and z distances to p already reach H are
+    /// Calls `visit` with the points of every cell that may hold a point closer than a
+    /// radius ρ to `p` (`inv_radius` = 1/ρ, `span` = [`CellGrid::span`] of ρ: 2 for ρ = H,
+    /// at most [`MAX_SPAN`]): of the cells within `span` of p's cell along each axis (125
+    /// for a span of 2), the rows whose nearest y and z distances to p already reach ρ are
     /// skipped, and each remaining row is trimmed at both ends the same way along x. Cells
     /// come in ascending index, points in ascending index within each cell: one slice per
-    /// row, whose cells are contiguous. Distances are measured in supports (scaled before
-    /// squaring) and compared with 1 + 2⁻⁸, so rounding never skips a cell it must visit.
+    /// row, whose cells are contiguous. Distances are measured in radii (scaled before
+    /// squaring, once per cell coordinate) and compared with 1 + 2⁻⁸, so rounding never
+    /// skips a cell it must visit.
     #[inline]
-    pub fn for_each_within(&self, p: Vec3<R>, inv_support: R, mut visit: impl FnMut(&[u32])) {
+    pub fn for_each_within(
+        &self,
+        p: Vec3<R>,
+        inv_radius: R,
+        span: u32,
+        mut visit: impl FnMut(&[u32]),
+    ) {
+        let span = span.min(MAX_SPAN);
         let c = self.coords(p);
-        let lo = c.map(|v| v.saturating_sub(2));
-        let hi = [0, 1, 2].map(|a| (c[a] + 2).min(self.dims[a] - 1));
+        let lo = c.map(|v| v.saturating_sub(span));
+        let hi = [0, 1, 2].map(|a| c[a].saturating_add(span).min(self.dims[a] - 1));
         let reach = R::ONE + R::from_ratio(1, 256);
         let coordinate = [p.x, p.y, p.z];
-        // The squared distance, in supports, from p to cell `cell` along `axis` (0 inside).
-        let gap2 = |axis: usize, cell: u32| {
+        // The squared distance, in radii, from p to each cell from lo to hi along each
+        // axis (0 inside).
+        let mut gaps = [[R::ZERO; 2 * MAX_SPAN as usize + 1]; 3];
+        for (axis, gaps) in gaps.iter_mut().enumerate() {
             let edges = &self.edges[axis];
             let x = coordinate[axis];
-            let gap = if cell < c[axis] {
-                x - edges[cell as usize]
-            } else if cell > c[axis] {
-                edges[cell as usize - 1] - x
-            } else {
-                R::ZERO
-            };
-            let g = gap * inv_support;
-            g * g
-        };
+            for (cell, g2) in (lo[axis]..=hi[axis]).zip(gaps.iter_mut()) {
+                let gap = if cell < c[axis] {
+                    x - edges[cell as usize]
+                } else if cell > c[axis] {
+                    edges[cell as usize - 1] - x
+                } else {
+                    continue;
+                };
+                let g = gap * inv_radius;
+                *g2 = g * g;
+            }
+        }
+        let gap2 = |axis: usize, cell: u32| gaps[axis][(cell - lo[axis]) as usize];
         for z in lo[2]..=hi[2] {
             let gz = gap2(2, z);
             if gz > reach {

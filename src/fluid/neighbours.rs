@@ -5,9 +5,14 @@
 //! `start[i]..start[i + 1]`, in the grid's order (cell, then index), which is the same on
 //! every machine. Each entry keeps the neighbour's index, V₀W and V₀∇ᵢW (see
 //! [`kernel`](super::kernel)), so the square root of a pair is taken once per substep.
+//!
+//! A fresh search of the grid ([`NeighbourLists::build`]) defines the lists. The step
+//! finds the same lists, bit for bit and in the same order, from candidate lists with a
+//! skin that several substeps reuse ([`skin`], [`NeighbourLists::evaluate`]).
 
 #[cfg(target_arch = "x86_64")]
 mod avx512;
+pub mod skin;
 #[cfg(test)]
 mod tests;
 
@@ -87,8 +92,9 @@ impl<R: Real> NeighbourLists<R> {
         skip_self: bool,
     ) {
         self.clear();
+        let span = grid.span(kernel.support);
         for (i, &xi) in queries.iter().enumerate() {
-            grid.for_each_within(xi, kernel.inv_support, |candidates| {
+            grid.for_each_within(xi, kernel.inv_support, span, |candidates| {
                 for &j in candidates {
                     if skip_self && j as usize == i {
                         continue;

@@ -8,6 +8,7 @@ use super::emitter::EmitterState;
 use super::grid::CellGrid;
 use super::kernel::{Kernel, lattice_reach};
 use super::neighbours::NeighbourLists;
+use super::neighbours::skin::{Reach, SkinLists};
 use crate::math::{Fx, Real, Vec3};
 
 /// The compiled settings of a fluid: the description's values and the constants derived
@@ -48,8 +49,10 @@ pub struct FluidSettings<R: Real = Fx> {
 ///
 /// A step ([`FluidSystem::step`]) runs, per fluid substep:
 /// 1. **emit** ([`emitter`](super::emitter)): nozzles add their due layers;
-/// 2. **neighbours** ([`grid`](super::grid), [`neighbours`](super::neighbours)): counting
-///    sort into cells, then the neighbour lists with kernel values, fluid and boundary;
+/// 2. **neighbours** ([`grid`](super::grid), [`neighbours`](super::neighbours)): the
+///    neighbour lists with kernel values, fluid and boundary, from candidate lists with a
+///    skin ([`skin`](super::neighbours::skin)) found by counting sort into cells whenever
+///    the particles have moved too far for the last ones;
 /// 3. **density** ([`density`](super::density)): ρ/ρ₀ by kernel sums;
 /// 4. **solve**: [`wcsph`](super::wcsph) (Tait pressure, explicit) or
 ///    [`dfsph`](super::dfsph) (iterated velocity corrections to the rest density), with
@@ -76,8 +79,14 @@ pub(crate) struct Scratch<R: Real> {
     pub boundary: Vec<Vec3<R>>,
     /// The boundary particles sorted into cells, once.
     pub boundary_grid: CellGrid<R>,
-    /// The fluid particles sorted into cells, each substep.
+    /// The fluid particles sorted into cells when the candidates are found, and their cells
+    /// located in the other substeps.
     pub grid: CellGrid<R>,
+    /// The candidate radius of the settings' kernel.
+    pub reach: Reach<R>,
+    /// Candidate neighbours of each fluid particle, reused across substeps while they hold
+    /// every neighbour.
+    pub skin: SkinLists<R>,
     /// Fluid neighbours of each fluid particle.
     pub fluid: NeighbourLists<R>,
     /// Boundary neighbours of each fluid particle.
@@ -197,23 +206,36 @@ impl<R: Real> FluidSystem<R> {
         self.scratch.boundary_grid = CellGrid::new(lower, upper, support);
         self.scratch.boundary_grid.fill(&self.scratch.boundary);
         self.scratch.grid = CellGrid::new(lower, upper, support);
+        self.scratch.reach = Reach::new(&s.kernel, &self.scratch.grid);
+        self.scratch.skin = SkinLists::default();
         self.scratch.ready = true;
     }
 
-    /// Stage 2: sorts the fluid into cells and lists every particle's fluid and boundary
-    /// neighbours with their kernel values.
+    /// Stage 2: lists every particle's fluid and boundary neighbours with their kernel
+    /// values, from the candidates of the last substep when they still hold every
+    /// neighbour (the fluid's cells located for the lists' order), else from new ones
+    /// (the fluid sorted into cells): the same lists either way.
     pub(crate) fn find_neighbours(&mut self) {
         let Scratch {
             boundary,
             boundary_grid,
             grid,
+            reach,
+            skin,
             fluid,
             walls,
             ..
         } = &mut self.scratch;
         let kernel = &self.settings.kernel;
-        grid.fill(&self.positions);
-        fluid.build(&self.positions, &self.positions, grid, kernel, true);
-        walls.build(&self.positions, boundary, boundary_grid, kernel, false);
+        let positions = &self.positions;
+        if skin.covers(positions, reach) {
+            grid.locate(positions);
+            skin.fluid.order_by_cells(grid.cells());
+        } else {
+            grid.fill(positions);
+            skin.build(positions, grid, boundary, boundary_grid, reach);
+        }
+        fluid.evaluate(&skin.fluid, positions, positions, kernel);
+        walls.evaluate(&skin.walls, positions, boundary, kernel);
     }
 }

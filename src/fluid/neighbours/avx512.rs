@@ -2,6 +2,12 @@
 //! the support test, the survivors packed in order, then eight survivors side by side
 //! through the kernel's value and gradient.
 //!
+//! Three searches share it: a fresh search of the grid ([`build`]), the evaluation of
+//! candidate rows ([`evaluate`], see [`skin`](super::skin)) and the selection of those
+//! candidates ([`select`]: the support test alone, at the candidate radius ρ in place of
+//! H, which the bounds below then concern; its rows are those of
+//! [`CandidateRows::select_scalar`]).
+//!
 //! # Same lists
 //!
 //! For each candidate j of query i the kernel computes, modulo 2⁶⁴, what
@@ -24,8 +30,11 @@
 //!
 //! So the survivors, their order (the candidates' order) and their values and gradients
 //! are the scalar form's bit for bit; lanes that fail the test hold meaningless values and
-//! are dropped. Other formats, targets and inputs beyond the bounds take
-//! [`NeighbourLists::build_scalar`].
+//! are dropped. Every lane is computed on its own, so packing the survivors of several
+//! rows into the same blocks (to fill them) changes nothing but where the rows end, which
+//! the search records as it packs. Other formats, targets and inputs beyond the bounds take
+//! [`NeighbourLists::build_scalar`], [`NeighbourLists::evaluate_scalar`] and
+//! [`CandidateRows::select_scalar`].
 
 use core::any::Any;
 use core::arch::x86_64::{
@@ -40,6 +49,7 @@ use core::arch::x86_64::{
 use core::mem::size_of;
 
 use super::NeighbourLists;
+use super::skin::{CandidateRows, Reach};
 use crate::fluid::grid::CellGrid;
 use crate::fluid::kernel::Kernel;
 use crate::fluid::lanes::{bit_length, magnitude_of, mul, product};
@@ -62,16 +72,87 @@ pub(super) fn build<R: Real>(
     kernel: &Kernel<R>,
     skip_self: bool,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
-        return false;
-    }
-    let (Some(lists), Some(grid), Some(kernel)) = (
+    let scales = [kernel.density_scale, kernel.gradient_scale];
+    let support = (kernel.support, kernel.inv_support);
+    let (Some(lists), Some(grid), Some(admitted)) = (
         (lists as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
         (grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
-        (kernel as &dyn Any).downcast_ref::<Kernel<Fx>>(),
+        admit(queries, points, support, scales, skip_self),
     ) else {
         return false;
     };
+    let search = &admitted.search;
+    let within = Within::new(grid, search.inv_radius, grid.span(search.radius));
+    let (queries, points) = (admitted.queries, admitted.points);
+    // SAFETY: `admit` detected AVX-512F and checked the bounds.
+    unsafe { build_kernel(lists, queries, points, within, search) }
+}
+
+/// [`NeighbourLists::evaluate`] with the kernel, on the conditions of [`build`]; returns
+/// whether it did (if not, the lists hold nothing of use).
+pub(super) fn evaluate<R: Real>(
+    lists: &mut NeighbourLists<R>,
+    candidates: &CandidateRows,
+    queries: &[Vec3<R>],
+    points: &[Vec3<R>],
+    kernel: &Kernel<R>,
+) -> bool {
+    let scales = [kernel.density_scale, kernel.gradient_scale];
+    let support = (kernel.support, kernel.inv_support);
+    let (Some(lists), Some(admitted)) = (
+        (lists as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
+        admit(queries, points, support, scales, false),
+    ) else {
+        return false;
+    };
+    let (queries, points) = (admitted.queries, admitted.points);
+    // SAFETY: `admit` detected AVX-512F and checked the bounds.
+    unsafe { build_kernel(lists, queries, points, candidates, &admitted.search) }
+}
+
+/// [`CandidateRows::select`] with the kernel's support test at the candidate radius ρ
+/// (no kernel value is computed), on the conditions of [`build`] with ρ and 1/ρ in place
+/// of H and 1/H; returns whether it did (if not, the rows hold nothing of use).
+pub(super) fn select<R: Real>(
+    rows: &mut CandidateRows,
+    queries: &[Vec3<R>],
+    points: &[Vec3<R>],
+    grid: &CellGrid<R>,
+    reach: &Reach<R>,
+    skip_self: bool,
+) -> bool {
+    // No kernel value is computed: any scales within the bounds will do.
+    let scales = [R::ONE, R::ONE];
+    let radius = (reach.radius, reach.inv_radius);
+    let (Some(grid), Some(admitted)) = (
+        (grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
+        admit(queries, points, radius, scales, skip_self),
+    ) else {
+        return false;
+    };
+    let within = Within::new(grid, admitted.search.inv_radius, reach.span);
+    let (queries, points) = (admitted.queries, admitted.points);
+    // SAFETY: `admit` detected AVX-512F and checked the bounds.
+    unsafe { select_kernel(rows, queries, points, within, &admitted.search) }
+}
+
+/// The inputs in I32F32 and the constants of a search within a radius (`radius`: the
+/// radius and its inverse) with the kernel scales `scales` (c_w, c_g), when `R` is I32F32,
+/// the processor has AVX-512F and the inputs are within the bounds of the module
+/// documentation.
+fn admit<'a, R: Real>(
+    queries: &'a [Vec3<R>],
+    points: &'a [Vec3<R>],
+    (radius, inv_radius): (R, R),
+    scales: [R; 2],
+    skip_self: bool,
+) -> Option<Admitted<'a>> {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return None;
+    }
+    let fx = |value: &R| (value as &dyn Any).downcast_ref::<Fx>().copied();
+    let (radius, inv_radius) = (fx(&radius)?, fx(&inv_radius)?);
+    let [density_scale, gradient_scale] = [fx(&scales[0])?, fx(&scales[1])?];
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slices' type is unchanged.
     let (queries, points) = unsafe {
         (
@@ -88,24 +169,53 @@ pub(super) fn build<R: Real>(
     };
     let within = |value: Fx, bits: u32| 0 < value.to_bits() && value.to_bits() < 1 << bits;
     if bit_length(coordinates(queries) | coordinates(points)) > 60
-        || !within(kernel.support, 31)
-        || !within(kernel.inv_support, 60)
-        || !within(kernel.density_scale, 55)
-        || !within(kernel.gradient_scale, 55)
+        || !within(radius, 31)
+        || !within(inv_radius, 60)
+        || !within(density_scale, 55)
+        || !within(gradient_scale, 55)
     {
-        return false;
+        return None;
     }
-    // SAFETY: AVX-512F was detected just above.
-    unsafe { build_kernel(lists, queries, points, grid, kernel, skip_self) }
+    // SAFETY: AVX-512F was detected above.
+    let lanes = |bits: i64| unsafe { _mm512_set1_epi64(bits) };
+    let search = Search {
+        radius,
+        inv_radius,
+        support: lanes(radius.to_bits()),
+        neg_support: lanes(-radius.to_bits()),
+        inv_support: lanes(inv_radius.to_bits()),
+        one: lanes(Fx::ONE.to_bits()),
+        density_scale: lanes(density_scale.to_bits()),
+        gradient_scale: lanes(gradient_scale.to_bits()),
+        points: lanes(points.len() as i64),
+        skip_self,
+    };
+    Some(Admitted {
+        queries,
+        points,
+        search,
+    })
 }
 
-/// The constants of a search, in lanes.
+/// What [`admit`] returns: the queries and points in I32F32 and the search's constants.
+struct Admitted<'a> {
+    queries: &'a [Vec3<Fx>],
+    points: &'a [Vec3<Fx>],
+    search: Search,
+}
+
+/// The constants of a search: its radius (H, or ρ for a selection), then everything in
+/// lanes.
 struct Search {
-    /// H.
+    /// The radius, m.
+    radius: Fx,
+    /// Its inverse, 1/m.
+    inv_radius: Fx,
+    /// The radius.
     support: __m512i,
-    /// −H.
+    /// The radius negated.
     neg_support: __m512i,
-    /// 1/H.
+    /// The radius's inverse.
     inv_support: __m512i,
     /// 1.
     one: __m512i,
@@ -118,8 +228,54 @@ struct Search {
     skip_self: bool,
 }
 
-/// The survivors of one query's candidates, in order: index, d and q², packed eight at a
-/// time with room for eight more.
+/// Where the candidates of each query come from.
+trait Candidates {
+    /// The candidates of query `i` at `xi`, in order.
+    fn of(&mut self, i: usize, xi: Vec3<Fx>) -> &[u32];
+}
+
+/// The grid's points within a radius, the slices of the grid's rows copied end to end so
+/// that the blocks of eight are full but for the last.
+struct Within<'a> {
+    grid: &'a CellGrid<Fx>,
+    inv_radius: Fx,
+    span: u32,
+    found: Vec<u32>,
+}
+
+impl<'a> Within<'a> {
+    fn new(grid: &'a CellGrid<Fx>, inv_radius: Fx, span: u32) -> Self {
+        Self {
+            grid,
+            inv_radius,
+            span,
+            found: Vec::new(),
+        }
+    }
+}
+
+impl Candidates for Within<'_> {
+    #[inline(always)]
+    fn of(&mut self, _: usize, xi: Vec3<Fx>) -> &[u32] {
+        self.found.clear();
+        let found = &mut self.found;
+        self.grid
+            .for_each_within(xi, self.inv_radius, self.span, |row| {
+                found.extend_from_slice(row)
+            });
+        &self.found
+    }
+}
+
+impl Candidates for &CandidateRows {
+    #[inline(always)]
+    fn of(&mut self, i: usize, _: Vec3<Fx>) -> &[u32] {
+        self.row(i)
+    }
+}
+
+/// The survivors of the candidates of one query or more, in order: index, d and q², packed
+/// eight at a time with room for eight more.
 #[derive(Default)]
 struct Survivors {
     len: usize,
@@ -153,10 +309,15 @@ impl Survivors {
         }
         self.len += keep.count_ones() as usize;
     }
+
+    /// The survivors' indices.
+    fn indices(&self) -> impl Iterator<Item = u32> + '_ {
+        self.lanes[0][..self.len].iter().map(|&j| j as u32)
+    }
 }
 
-/// The search: returns false when a grid entry is not a point's index (the lists then hold
-/// nothing of use).
+/// The search: the survivors of each query's candidates with their kernel values; returns
+/// false when a candidate is not a point's index (the lists then hold nothing of use).
 ///
 /// # Safety
 /// The processor must have AVX-512F; the bounds of [`build`] must hold.
@@ -165,34 +326,57 @@ unsafe fn build_kernel(
     lists: &mut NeighbourLists<Fx>,
     queries: &[Vec3<Fx>],
     points: &[Vec3<Fx>],
-    grid: &CellGrid<Fx>,
-    kernel: &Kernel<Fx>,
-    skip_self: bool,
+    mut candidates: impl Candidates,
+    search: &Search,
 ) -> bool {
     lists.clear();
-    let search = Search {
-        support: _mm512_set1_epi64(kernel.support.to_bits()),
-        neg_support: _mm512_set1_epi64(-kernel.support.to_bits()),
-        inv_support: _mm512_set1_epi64(kernel.inv_support.to_bits()),
-        one: _mm512_set1_epi64(Fx::ONE.to_bits()),
-        density_scale: _mm512_set1_epi64(kernel.density_scale.to_bits()),
-        gradient_scale: _mm512_set1_epi64(kernel.gradient_scale.to_bits()),
-        points: _mm512_set1_epi64(points.len() as i64),
-        skip_self,
-    };
     let mut survivors = Survivors::default();
-    let mut valid = true;
     for (i, &xi) in queries.iter().enumerate() {
-        survivors.clear();
-        grid.for_each_within(xi, kernel.inv_support, |candidates| {
-            // SAFETY: the caller's conditions are this function's.
-            valid &= unsafe { test_candidates(&mut survivors, candidates, i, xi, points, &search) };
-        });
-        if !valid {
+        let candidates = candidates.of(i, xi);
+        // SAFETY: the caller's conditions are this function's.
+        if !unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) } {
             return false;
         }
-        evaluate_survivors(lists, &survivors, &search);
-        lists.start.push(lists.index.len() as u32);
+        // The survivors of several rows are evaluated together, in full blocks: the row
+        // ends where its survivors will have been appended.
+        lists.start.push((lists.index.len() + survivors.len) as u32);
+        if survivors.len >= PENDING {
+            evaluate_survivors(lists, &survivors, search);
+            survivors.clear();
+        }
+    }
+    evaluate_survivors(lists, &survivors, search);
+    true
+}
+
+/// How many survivors wait before they are evaluated: enough for many groups of four full
+/// blocks, few enough to stay in the first-level cache.
+const PENDING: usize = 256;
+
+/// The selection: the survivors of each query's candidates, indices only; returns false
+/// when a candidate is not a point's index (the rows then hold nothing of use).
+///
+/// # Safety
+/// The processor must have AVX-512F; the bounds of [`build`] must hold.
+#[target_feature(enable = "avx512f")]
+unsafe fn select_kernel(
+    rows: &mut CandidateRows,
+    queries: &[Vec3<Fx>],
+    points: &[Vec3<Fx>],
+    mut candidates: Within<'_>,
+    search: &Search,
+) -> bool {
+    rows.clear();
+    let mut survivors = Survivors::default();
+    for (i, &xi) in queries.iter().enumerate() {
+        survivors.clear();
+        let candidates = candidates.of(i, xi);
+        // SAFETY: the caller's conditions are this function's.
+        if !unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) } {
+            return false;
+        }
+        rows.extend(survivors.indices());
+        rows.end_row();
     }
     true
 }
@@ -202,6 +386,7 @@ unsafe fn build_kernel(
 ///
 /// # Safety
 /// The processor must have AVX-512F; the bounds of [`build`] must hold.
+#[inline]
 #[target_feature(enable = "avx512f")]
 unsafe fn test_candidates(
     survivors: &mut Survivors,
@@ -233,14 +418,17 @@ unsafe fn test_candidates(
             keep = _mm512_mask_cmpneq_epi64_mask(keep, j, me);
         }
         let words = _mm512_add_epi64(_mm512_slli_epi64::<1>(j), j);
-        let mut offset = [zero; 3];
-        for (c, o) in offset.iter_mut().enumerate() {
+        // The three gathers first, under the same mask, so that none waits for another's
+        // test.
+        let offset: [__m512i; 3] = core::array::from_fn(|c| {
             let at = _mm512_add_epi64(words, _mm512_set1_epi64(c as i64));
             // SAFETY: every index in use is below `points.len()` (checked above).
             let xj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, keep, at, base) };
-            *o = _mm512_sub_epi64(x[c], xj);
-            keep = _mm512_mask_cmplt_epi64_mask(keep, *o, search.support);
-            keep = _mm512_mask_cmpgt_epi64_mask(keep, *o, search.neg_support);
+            _mm512_sub_epi64(x[c], xj)
+        });
+        for o in offset {
+            keep = _mm512_mask_cmplt_epi64_mask(keep, o, search.support);
+            keep = _mm512_mask_cmpgt_epi64_mask(keep, o, search.neg_support);
         }
         if keep == 0 {
             continue;
@@ -256,9 +444,9 @@ unsafe fn test_candidates(
     true
 }
 
-/// Appends the survivors to the current row with V₀W and V₀∇ᵢW, eight at a time, up to
-/// four blocks of eight side by side (so that their square roots, each a chain of
-/// dependent steps, overlap).
+/// Appends the survivors to the lists' entries with V₀W and V₀∇ᵢW (the caller closes the
+/// rows), eight at a time, up to four blocks of eight side by side (so that their square
+/// roots, each a chain of dependent steps, overlap).
 #[target_feature(enable = "avx512f")]
 fn evaluate_survivors(lists: &mut NeighbourLists<Fx>, survivors: &Survivors, search: &Search) {
     let mut first = 0;
@@ -289,26 +477,33 @@ fn evaluate_blocks<const BLOCKS: usize>(
         _mm512_loadu_si512(lanes.as_ptr().add(first + 8 * block).cast())
     };
     let roots = sqrt::<BLOCKS>(core::array::from_fn(|b| load(q2, b)));
-    for (b, q) in roots.into_iter().enumerate() {
-        let (value, gradient) = evaluate(q, [load(dx, b), load(dy, b), load(dz, b)], search);
-        let mut out = [[0i64; 8]; 4];
-        for (o, lanes) in out
-            .iter_mut()
-            .zip([value, gradient[0], gradient[1], gradient[2]])
-        {
-            // SAFETY: eight values into eight slots.
-            unsafe { _mm512_storeu_si512(o.as_mut_ptr().cast(), lanes) };
+    // All the blocks' values before any is stored, so that their chains of products
+    // overlap.
+    let values: [_; BLOCKS] = core::array::from_fn(|b| {
+        kernel_values(roots[b], [load(dx, b), load(dy, b), load(dz, b)], search)
+    });
+    let count = (survivors.len - first).min(8 * BLOCKS);
+    lists
+        .index
+        .extend(index[first..first + count].iter().map(|&j| j as u32));
+    let [gx, gy, gz] = &mut lists.gradients;
+    let outputs = [&mut lists.value, gx, gy, gz];
+    for (output, list) in outputs.into_iter().enumerate() {
+        let len = list.len();
+        list.reserve(8 * BLOCKS);
+        for (b, (value, gradient)) in values.iter().enumerate() {
+            let lanes = if output == 0 {
+                *value
+            } else {
+                gradient[output - 1]
+            };
+            // SAFETY: eight values into the capacity reserved just above, past the length;
+            // `Fx` is one `i64` (asserted above).
+            unsafe { _mm512_storeu_si512(list.as_mut_ptr().add(len + 8 * b).cast(), lanes) };
         }
-        let start = first + 8 * b;
-        let count = (survivors.len - start).min(8);
-        let [value, gx, gy, gz] = out.map(|lanes| lanes.map(Fx::from_bits));
-        lists
-            .index
-            .extend(index[start..start + count].iter().map(|&j| j as u32));
-        lists.value.extend_from_slice(&value[..count]);
-        for (list, lanes) in lists.gradients.iter_mut().zip([gx, gy, gz]) {
-            list.extend_from_slice(&lanes[..count]);
-        }
+        // SAFETY: the first `count` of the values stored are the survivors' (the blocks'
+        // other lanes, past them, are left out).
+        unsafe { list.set_len(len + count) };
     }
     (first + 8 * BLOCKS).min(survivors.len)
 }
@@ -317,7 +512,7 @@ fn evaluate_blocks<const BLOCKS: usize>(
 /// computes them (see the module documentation).
 #[inline]
 #[target_feature(enable = "avx512f")]
-fn evaluate(q: __m512i, d: [__m512i; 3], search: &Search) -> (__m512i, [__m512i; 3]) {
+fn kernel_values(q: __m512i, d: [__m512i; 3], search: &Search) -> (__m512i, [__m512i; 3]) {
     let t = _mm512_sub_epi64(search.one, q);
     let t3 = mul(mul(t, t), t);
     let grow = _mm512_add_epi64(search.one, _mm512_slli_epi64::<2>(q));

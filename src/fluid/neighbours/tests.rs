@@ -1,8 +1,11 @@
 //! The neighbour search's dispatch (the AVX-512 candidate test where it runs) against the
 //! scalar form, entry for entry, on random points, a lattice (pairs exactly one spacing
-//! apart, ties of the support) and points far outside the grid.
+//! apart, ties of the support) and points far outside the grid: the fresh search, the
+//! selection of candidates with a skin and the lists evaluated from them (which must be
+//! the fresh search's).
 
 use super::NeighbourLists;
+use super::skin::{CandidateRows, Reach};
 use crate::fluid::grid::CellGrid;
 use crate::fluid::kernel::Kernel;
 use crate::math::{Fx, Pcg32, Real, Vec3};
@@ -20,11 +23,66 @@ fn compare(queries: &[Vec3<Fx>], points: &[Vec3<Fx>], spacing: Fx, skip_self: bo
     let (mut fast, mut slow) = (NeighbourLists::default(), NeighbourLists::default());
     fast.build(queries, points, &grid, &kernel, skip_self);
     slow.build_scalar(queries, points, &grid, &kernel, skip_self);
-    assert_eq!(fast.start, slow.start);
-    assert_eq!(fast.index, slow.index);
-    assert_eq!(fast.value, slow.value);
-    assert_eq!(fast.gradients, slow.gradients);
-    kernel_takes(queries, points, &grid, &kernel, skip_self)
+    assert_same(&fast, &slow);
+    let reach = Reach::new(&kernel, &grid);
+    let (mut rows, mut rows_scalar) = (CandidateRows::default(), CandidateRows::default());
+    rows.select(queries, points, &grid, &reach, skip_self);
+    rows_scalar.select_scalar(queries, points, &grid, &reach, skip_self);
+    assert_eq!(rows.len(), queries.len());
+    for i in 0..queries.len() {
+        assert_eq!(rows.row(i), rows_scalar.row(i), "candidates of {i}");
+    }
+    let (mut from_rows, mut from_rows_scalar) =
+        (NeighbourLists::default(), NeighbourLists::default());
+    from_rows.evaluate(&rows, queries, points, &kernel);
+    from_rows_scalar.evaluate_scalar(&rows, queries, points, &kernel);
+    assert_same(&from_rows, &slow);
+    assert_same(&from_rows_scalar, &slow);
+    let taken = kernel_takes(queries, points, &grid, &kernel, skip_self);
+    assert_eq!(
+        taken,
+        kernel_takes_rows(&rows, queries, points, &grid, &kernel, skip_self)
+    );
+    taken
+}
+
+/// The lists `a` and `b`, entry for entry.
+fn assert_same(a: &NeighbourLists<Fx>, b: &NeighbourLists<Fx>) {
+    assert_eq!(a.start, b.start);
+    assert_eq!(a.index, b.index);
+    assert_eq!(a.value, b.value);
+    assert_eq!(a.gradients, b.gradients);
+}
+
+/// Whether the kernels took both the selection and the evaluation from `rows`.
+#[cfg(target_arch = "x86_64")]
+fn kernel_takes_rows(
+    rows: &CandidateRows,
+    queries: &[Vec3<Fx>],
+    points: &[Vec3<Fx>],
+    grid: &CellGrid<Fx>,
+    kernel: &Kernel<Fx>,
+    skip_self: bool,
+) -> bool {
+    let reach = Reach::new(kernel, grid);
+    let mut selected = CandidateRows::default();
+    let selects = super::avx512::select(&mut selected, queries, points, grid, &reach, skip_self);
+    let mut lists = NeighbourLists::default();
+    let evaluates = super::avx512::evaluate(&mut lists, rows, queries, points, kernel);
+    assert_eq!(selects, evaluates);
+    selects
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn kernel_takes_rows(
+    _: &CandidateRows,
+    _: &[Vec3<Fx>],
+    _: &[Vec3<Fx>],
+    _: &CellGrid<Fx>,
+    _: &Kernel<Fx>,
+    _: bool,
+) -> bool {
+    false
 }
 
 #[cfg(target_arch = "x86_64")]

@@ -1,0 +1,288 @@
+//! Candidate lists with a skin (Verlet lists), from which the neighbour lists of several
+//! substeps are evaluated without searching the grid again.
+//!
+//! # What is reused, and why the lists are the same
+//!
+//! A build records, for every fluid particle i, the candidates j of its fluid and boundary
+//! neighbours closer than ρ = (1 + σ) H (σ = [`SKIN`] of the support H) at the particles'
+//! positions aᵢ then (the anchors). A later substep reuses the candidates while every
+//! fluid particle is within δ = (σ/2 − 2⁻⁸) H of its anchor, its particle count unchanged
+//! (boundary particles never move), and evaluates each candidate with the same test and
+//! the same kernel values as a fresh search ([`NeighbourLists::evaluate`]). Then:
+//!
+//! - **the same pairs.** A pair the kernel accepts now lies within H(1 + 2⁻¹⁰) (the
+//!   test compares rounded values; every rounding is far below 2⁻¹⁰ of H in each format),
+//!   so at the anchors it lay within H(1 + 2⁻¹⁰) + 2δ < ρ (1 − 2⁻¹⁰), where the rounded
+//!   candidate test, measured in radii ρ like the kernel's in supports, accepted it. Every
+//!   pair the kernel accepts is a candidate, and the candidates it rejects are dropped, as
+//!   a fresh search drops the grid's other points;
+//! - **the same order.** A fresh search lists a row's neighbours by (cell, index) of the
+//!   current positions ([`CellGrid::for_each_within`]). A build lists the candidates in
+//!   that order; each reusing substep locates the fluid particles' cells
+//!   ([`CellGrid::locate`]) and re-sorts the fluid rows whose order the motion changed
+//!   ([`CandidateRows::order_by_cells`]), a pass over each row when nothing moved to
+//!   another cell. The boundary rows keep their order, as the boundary never moves;
+//! - **the same values.** Each pair's V₀W and V₀∇W come from the same offset through the
+//!   same operations.
+//!
+//! Nothing here is state: validity is a property of the current positions against the
+//! anchors, whatever happened in between (a restore, a clone, a jump), and a skipped reuse
+//! only costs a search. The lists equal a fresh search's in every substep, so no result
+//! depends on when the candidates were built.
+
+#[cfg(test)]
+mod tests;
+
+use super::NeighbourLists;
+use crate::fluid::grid::CellGrid;
+use crate::fluid::kernel::Kernel;
+use crate::math::{Real, Vec3};
+
+/// The skin σ, in supports: candidates are sought within (1 + σ) H. A quarter support
+/// (5 mm at H = 2 cm) measured fastest on the benchmark cube (docs/PERFORMANCE.md).
+pub const SKIN: (i64, i64) = (1, 4);
+
+// 1/64 ≤ σ ≤ 1: δ = (σ/2 − 2⁻⁸) H is positive, the margin H + 2δ < ρ (1 − 2⁻¹⁰) − 2⁻¹⁰ H
+// of the module documentation holds, and ρ ≤ 2H spans at most 5 grid cells of H/2
+// (rounding included), within the grid's [`MAX_SPAN`](crate::fluid::grid::MAX_SPAN).
+const _: () = assert!(SKIN.1 <= 64 * SKIN.0 && SKIN.0 <= SKIN.1);
+
+/// Candidate neighbours of each query, as compressed rows: the candidates of query i are
+/// `index[start[i]..start[i + 1]]`.
+#[derive(Clone, Debug, Default)]
+pub struct CandidateRows {
+    /// Row starts, one per query plus one.
+    start: Vec<u32>,
+    /// Candidate indices into the searched points.
+    index: Vec<u32>,
+}
+
+impl CandidateRows {
+    /// The number of rows (queries).
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.start.len().saturating_sub(1)
+    }
+
+    /// Whether there is no row.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The candidates of query `i`.
+    #[inline(always)]
+    pub fn row(&self, i: usize) -> &[u32] {
+        &self.index[self.start[i] as usize..self.start[i + 1] as usize]
+    }
+
+    /// Finds, for each of `queries`, every point of `points` (sorted into `grid`) that
+    /// passes [`Reach::contains`], except the query itself when `skip_self`, in the grid's
+    /// order (cell, index).
+    pub fn select<R: Real>(
+        &mut self,
+        queries: &[Vec3<R>],
+        points: &[Vec3<R>],
+        grid: &CellGrid<R>,
+        reach: &Reach<R>,
+        skip_self: bool,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if super::avx512::select(self, queries, points, grid, reach, skip_self) {
+            return;
+        }
+        self.select_scalar(queries, points, grid, reach, skip_self);
+    }
+
+    /// [`CandidateRows::select`], one candidate after another.
+    pub fn select_scalar<R: Real>(
+        &mut self,
+        queries: &[Vec3<R>],
+        points: &[Vec3<R>],
+        grid: &CellGrid<R>,
+        reach: &Reach<R>,
+        skip_self: bool,
+    ) {
+        self.clear();
+        for (i, &xi) in queries.iter().enumerate() {
+            grid.for_each_within(xi, reach.inv_radius, reach.span, |candidates| {
+                for &j in candidates {
+                    if !(skip_self && j as usize == i) && reach.contains(xi - points[j as usize]) {
+                        self.index.push(j);
+                    }
+                }
+            });
+            self.end_row();
+        }
+    }
+
+    /// Sorts every row by (`cells[j]`, j), the order of a fresh search over a grid whose
+    /// points lie in `cells`; a row already in that order (one pass to check) is left.
+    pub fn order_by_cells(&mut self, cells: &[u32]) {
+        let key = |&j: &u32| (cells[j as usize], j);
+        for i in 0..self.len() {
+            let row = &mut self.index[self.start[i] as usize..self.start[i + 1] as usize];
+            if !row.is_sorted_by_key(key) {
+                row.sort_unstable_by_key(key);
+            }
+        }
+    }
+
+    /// Empties the rows, leaving the start of the first.
+    pub(super) fn clear(&mut self) {
+        self.start.clear();
+        self.index.clear();
+        self.start.push(0);
+    }
+
+    /// Appends the candidates `candidates` to the current row.
+    #[inline(always)]
+    pub(super) fn extend(&mut self, candidates: impl IntoIterator<Item = u32>) {
+        self.index.extend(candidates);
+    }
+
+    /// Closes the current row.
+    #[inline(always)]
+    pub(super) fn end_row(&mut self) {
+        self.start.push(self.index.len() as u32);
+    }
+}
+
+/// The candidate radius ρ = (1 + σ) H and what the search and the reuse test derive from
+/// it. The default reaches nothing and holds no particle.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Reach<R: Real> {
+    /// ρ, m.
+    pub radius: R,
+    /// 1/ρ, 1/m.
+    pub inv_radius: R,
+    /// The grid cells ρ spans along an axis ([`CellGrid::span`]).
+    pub span: u32,
+    /// 1/H, 1/m.
+    inv_support: R,
+    /// (δ/H)² = (σ/2 − 2⁻⁸)²: the squared displacement from the anchor, in supports, at
+    /// which the candidates may miss a pair.
+    limit: R,
+}
+
+impl<R: Real> Reach<R> {
+    /// The reach of `kernel` with the skin [`SKIN`], over the cells of `grid`.
+    pub fn new(kernel: &Kernel<R>, grid: &CellGrid<R>) -> Self {
+        let (num, den) = SKIN;
+        let radius = kernel.support + kernel.support * R::from_ratio(num, den);
+        let half_skin = R::from_ratio(num, 2 * den) - R::from_ratio(1, 256);
+        Self {
+            radius,
+            inv_radius: radius.recip(),
+            span: grid.span(radius),
+            inv_support: kernel.inv_support,
+            limit: half_skin * half_skin,
+        }
+    }
+
+    /// Whether `offset` = xᵢ − xⱼ is within ρ, tested as [`Kernel::evaluate`] tests the
+    /// support: every component below ρ, then |offset/ρ|² < 1.
+    #[inline(always)]
+    pub fn contains(&self, offset: Vec3<R>) -> bool {
+        let r = self.radius;
+        if offset.x.abs() >= r || offset.y.abs() >= r || offset.z.abs() >= r {
+            return false;
+        }
+        (offset * self.inv_radius).length_squared() < R::ONE
+    }
+
+    /// Whether a particle at `position` is still close enough to its anchor `anchor`:
+    /// |(x − a)/H|² below the limit (false for anything that does not compare below it).
+    #[inline(always)]
+    fn holds(&self, position: Vec3<R>, anchor: Vec3<R>) -> bool {
+        ((position - anchor) * self.inv_support).length_squared() < self.limit
+    }
+}
+
+/// The candidates of a fluid's neighbour lists, fluid and boundary, with the positions
+/// they were found at: see the [module documentation](self).
+#[derive(Clone, Debug, Default)]
+pub struct SkinLists<R: Real> {
+    /// Fluid candidates of each fluid particle.
+    pub fluid: CandidateRows,
+    /// Boundary candidates of each fluid particle.
+    pub walls: CandidateRows,
+    /// The fluid particles' positions at the build (m); empty before the first.
+    anchors: Vec<Vec3<R>>,
+    /// Whether the rows were built for these anchors.
+    built: bool,
+}
+
+impl<R: Real> SkinLists<R> {
+    /// Whether the candidates hold every pair a fresh search would find for fluid
+    /// particles at `positions`: built, with as many particles, each within δ of its
+    /// anchor.
+    pub fn covers(&self, positions: &[Vec3<R>], reach: &Reach<R>) -> bool {
+        self.built
+            && self.anchors.len() == positions.len()
+            && positions
+                .iter()
+                .zip(&self.anchors)
+                .all(|(&x, &a)| reach.holds(x, a))
+    }
+
+    /// Finds the candidates of the fluid particles at `positions` (sorted into `grid`)
+    /// among themselves and among the boundary particles `boundary` (sorted into
+    /// `boundary_grid`), and anchors them there.
+    pub fn build(
+        &mut self,
+        positions: &[Vec3<R>],
+        grid: &CellGrid<R>,
+        boundary: &[Vec3<R>],
+        boundary_grid: &CellGrid<R>,
+        reach: &Reach<R>,
+    ) {
+        self.fluid.select(positions, positions, grid, reach, true);
+        self.walls
+            .select(positions, boundary, boundary_grid, reach, false);
+        self.anchors.clear();
+        self.anchors.extend_from_slice(positions);
+        self.built = true;
+    }
+}
+
+impl<R: Real> NeighbourLists<R> {
+    /// The lists [`NeighbourLists::build`] would find for `queries` among `points`, from
+    /// `candidates` that hold every pair the kernel accepts, in the order it would list
+    /// them: the candidates that pass [`Kernel::evaluate`], in order, with its values.
+    ///
+    /// In I32F32 on x86-64 with AVX-512F eight candidates at a time, with the same lists
+    /// as [`NeighbourLists::evaluate_scalar`] bit for bit.
+    pub fn evaluate(
+        &mut self,
+        candidates: &CandidateRows,
+        queries: &[Vec3<R>],
+        points: &[Vec3<R>],
+        kernel: &Kernel<R>,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if super::avx512::evaluate(self, candidates, queries, points, kernel) {
+            return;
+        }
+        self.evaluate_scalar(candidates, queries, points, kernel);
+    }
+
+    /// [`NeighbourLists::evaluate`], one candidate after another.
+    pub fn evaluate_scalar(
+        &mut self,
+        candidates: &CandidateRows,
+        queries: &[Vec3<R>],
+        points: &[Vec3<R>],
+        kernel: &Kernel<R>,
+    ) {
+        self.clear();
+        for (i, &xi) in queries.iter().enumerate() {
+            for &j in candidates.row(i) {
+                if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
+                    self.push(j, value, gradient);
+                }
+            }
+            self.start.push(self.index.len() as u32);
+        }
+    }
+}

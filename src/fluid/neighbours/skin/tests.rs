@@ -1,0 +1,95 @@
+//! The step's reuse of candidates, seen from the fluid: the lists of every substep are a
+//! fresh search's, and no result depends on the scratch (a clone starts without
+//! candidates, a restore keeps candidates anchored elsewhere).
+
+use crate::fluid::neighbours::NeighbourLists;
+use crate::fluid::{FluidSolver, FluidSystem, presets};
+use crate::math::{Fx, Real, Vec3};
+
+/// The benchmark's cube at 8³ particles, DFSPH at Δt = 5 ms in 3 substeps.
+fn cube() -> (FluidSystem<Fx>, Fx, Vec3<Fx>) {
+    let dt = Fx::from_ratio(1, 200);
+    let desc = presets::cube::<Fx>(8, FluidSolver::Dfsph, 3);
+    let fluid = FluidSystem::from_desc(&desc, dt).expect("the cube builds");
+    (
+        fluid,
+        dt,
+        Vec3::new(Fx::ZERO, Fx::from_ratio(-981, 100), Fx::ZERO),
+    )
+}
+
+/// Whether the next substep of `fluid` reuses its candidates.
+fn reuses(fluid: &FluidSystem<Fx>) -> bool {
+    fluid
+        .scratch
+        .skin
+        .covers(&fluid.positions, &fluid.scratch.reach)
+}
+
+#[test]
+fn the_step_finds_the_fresh_searchs_lists() {
+    let (mut fluid, dt, gravity) = cube();
+    let mut reused = 0;
+    for step in 0..15 {
+        fluid.step(dt, gravity);
+        reused += usize::from(reuses(&fluid));
+        fluid.find_neighbours();
+        let s = &fluid.scratch;
+        let mut grid = s.grid.clone();
+        grid.fill(&fluid.positions);
+        let kernel = &fluid.settings.kernel;
+        let (mut fresh, mut walls) = (NeighbourLists::default(), NeighbourLists::default());
+        fresh.build(&fluid.positions, &fluid.positions, &grid, kernel, true);
+        walls.build(
+            &fluid.positions,
+            &s.boundary,
+            &s.boundary_grid,
+            kernel,
+            false,
+        );
+        for (found, expected) in [(&s.fluid, &fresh), (&s.walls, &walls)] {
+            assert_eq!(found.start, expected.start, "step {step}");
+            assert_eq!(found.index, expected.index, "step {step}");
+            assert_eq!(found.value, expected.value, "step {step}");
+            assert_eq!(found.gradients, expected.gradients, "step {step}");
+        }
+    }
+    assert!(reused >= 5, "reused after {reused} steps of 15");
+}
+
+#[test]
+fn a_clone_and_a_restore_step_as_the_uninterrupted_run() {
+    let (mut straight, dt, gravity) = cube();
+    for _ in 0..4 {
+        straight.step(dt, gravity);
+    }
+    // A moment at which the uninterrupted run goes on with its candidates.
+    let mut waited = 0;
+    while !reuses(&straight) {
+        straight.step(dt, gravity);
+        waited += 1;
+        assert!(waited < 10, "the run never reuses its candidates");
+    }
+    let clone = straight.clone();
+    // A system whose candidates were found at other positions, then restored.
+    let (mut restored, _, _) = cube();
+    for _ in 0..3 {
+        restored.step(dt, gravity);
+    }
+    restored.restore_from(straight.clone());
+    let mut clone_run = clone;
+    for _ in 0..6 {
+        straight.step(dt, gravity);
+        clone_run.step(dt, gravity);
+        restored.step(dt, gravity);
+    }
+    let bits = |f: &FluidSystem<Fx>| {
+        f.positions
+            .iter()
+            .chain(&f.velocities)
+            .flat_map(|v| [v.x, v.y, v.z].map(Fx::to_bits))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(bits(&clone_run), bits(&straight));
+    assert_eq!(bits(&restored), bits(&straight));
+}
