@@ -24,7 +24,11 @@ use crate::soft::SoftSystem;
 ///
 /// 2: the rigid solver visits its contacts in batches of eight that share no moving body
 /// (so that a batch can be solved side by side) rather than one by one in contact order.
-pub const STATE_VERSION: u32 = 2;
+///
+/// 3: DFSPH runs a divergence-free solve before its constant-density solve, and both iterate
+/// until no particle is predicted more than 10 % compressed (stable at the time-step limit
+/// and at a loose tolerance).
+pub const STATE_VERSION: u32 = 3;
 
 /// The RNG stream of the world's generator (the seed comes from the scene).
 const RNG_STREAM: u64 = 0x6669_7873_7465_7021; // "fixstep!"
