@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# fixstep beside Rapier 0.36 on identical rigid-body scenes, in one run per Rapier mode
+# fixstep beside Rapier 0.36 and salva3d 0.11 on identical scenes, in one run per Rapier mode
 # (bench/peers, a package outside the fixstep workspace: the test command never builds
-# Rapier). Builds the comparison twice, with Rapier's default mode and with its
+# the peers). Builds the comparison twice, with Rapier's default mode and with its
 # enhanced-determinism mode, and prints one table for each: per scene and engine the
-# median ms per step over ROUNDS interleaved runs and the ratio to fixstep I32F32.
+# median ms per step over ROUNDS interleaved runs, the ratio to fixstep I32F32 and a
+# quality figure computed the same way for every engine.
 #   ./scripts/peer-bench.sh [ROUNDS] [SCENE ...]     (default 5 rounds, every scene)
 # The first build downloads and compiles Rapier (a few minutes on two cores).
 set -euo pipefail
