@@ -231,11 +231,20 @@ impl<R: Real> FluidSystem<R> {
         if skin.covers(positions, reach) {
             grid.locate(positions);
             skin.fluid.order_by_cells(grid.cells());
+            fluid.evaluate(&skin.fluid, positions, positions, kernel);
+            walls.evaluate(&skin.walls, positions, boundary, kernel);
         } else {
             grid.fill(positions);
-            skin.build(positions, grid, boundary, boundary_grid, reach);
+            let lists = [fluid, walls];
+            skin.build(
+                positions,
+                grid,
+                boundary,
+                boundary_grid,
+                reach,
+                kernel,
+                lists,
+            );
         }
-        fluid.evaluate(&skin.fluid, positions, positions, kernel);
-        walls.evaluate(&skin.walls, positions, boundary, kernel);
     }
 }
