@@ -229,3 +229,39 @@ fn the_candidates_hold_only_near_their_anchors() {
     pts.truncate(200);
     assert!(!skin.covers(&pts, &reach), "fewer particles");
 }
+
+/// The `f64` baseline takes the scalar forms everywhere: a new selection's lists (one pass
+/// of the grid) are the fresh search's, entry for entry, and its candidates evaluate to
+/// them again.
+#[test]
+fn a_new_selection_in_f64_finds_the_fresh_lists() {
+    let kernel = Kernel::<f64>::calibrated(0.005, 2.0);
+    let mut grid = CellGrid::new(Vec3::ZERO, Vec3::splat(0.1), kernel.support);
+    let pts: Vec<Vec3<f64>> = points(1500, 8)
+        .iter()
+        .map(|p| Vec3::new(p.x.to_f64(), p.y.to_f64(), p.z.to_f64()))
+        .collect();
+    grid.fill(&pts);
+    let reach = Reach::new(&kernel, &grid);
+    let mut rows = CandidateRows::default();
+    let (mut built, mut fresh, mut evaluated) = (
+        NeighbourLists::default(),
+        NeighbourLists::default(),
+        NeighbourLists::default(),
+    );
+    built.build_keeping_candidates(&mut rows, &pts, (&pts, &grid), &reach, &kernel, true);
+    fresh.build(&pts, &pts, &grid, &kernel, true);
+    evaluated.evaluate(&rows, &pts, &pts, &kernel);
+    assert!(
+        fresh.index.len() > 4 * pts.len(),
+        "about six neighbours each"
+    );
+    for lists in [&built, &evaluated] {
+        assert_eq!(lists.start, fresh.start);
+        assert_eq!(lists.index, fresh.index);
+        assert_eq!(lists.value, fresh.value);
+        assert_eq!(lists.gradients, fresh.gradients);
+    }
+    let candidates: usize = (0..rows.len()).map(|i| rows.row(i).len()).sum();
+    assert!(candidates > fresh.index.len(), "the skin adds candidates");
+}

@@ -214,7 +214,8 @@ impl<R: Real> FluidSystem<R> {
     /// Stage 2: lists every particle's fluid and boundary neighbours with their kernel
     /// values, from the candidates of the last substep when they still hold every
     /// neighbour (the fluid's cells located for the lists' order), else from new ones
-    /// (the fluid sorted into cells): the same lists either way.
+    /// (the fluid sorted into cells), selected and evaluated in one pass of the grid: the
+    /// same lists either way.
     pub(crate) fn find_neighbours(&mut self) {
         let Scratch {
             boundary,
