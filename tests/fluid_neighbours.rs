@@ -4,7 +4,7 @@
 use fixstep::fluid::grid::CellGrid;
 use fixstep::fluid::kernel::Kernel;
 use fixstep::fluid::neighbours::NeighbourLists;
-use fixstep::fluid::neighbours::skin::{Reach, SkinLists};
+use fixstep::fluid::neighbours::skin::{CandidateRows, Reach, SkinLists};
 use fixstep::math::{Fx, Pcg32, Real, Vec3};
 
 /// Random points in a 0.1 m cube and a few outside the grid.
@@ -112,6 +112,7 @@ fn reused_candidates_give_the_fresh_lists_as_particles_move() {
     let mut skin = SkinLists::default();
     let (mut fluid, mut walls) = (NeighbourLists::default(), NeighbourLists::default());
     let (mut reused, mut reordered, mut jump_rebuilt) = (0, 0, false);
+    let mut built_scalar = None;
     for substep in 0..40 {
         for (p, &v) in pts.iter_mut().zip(&drift) {
             *p += v;
@@ -127,18 +128,53 @@ fn reused_candidates_give_the_fresh_lists_as_particles_move() {
             reordered += (0..pts.len())
                 .filter(|&i| before.row(i) != skin.fluid.row(i))
                 .count();
+            fluid.evaluate(&skin.fluid, &pts, &pts, &kernel);
+            walls.evaluate(&skin.walls, &pts, &boundary, &kernel);
         } else {
             jump_rebuilt |= substep == 25;
             grid.fill(&pts);
-            skin.build(&pts, &grid, &boundary, &boundary_grid, &reach);
+            let lists = [&mut fluid, &mut walls];
+            skin.build(
+                &pts,
+                &grid,
+                &boundary,
+                &boundary_grid,
+                &reach,
+                &kernel,
+                lists,
+            );
+            // The scalar form of the build's single pass, which targets without AVX-512
+            // take: the same candidates.
+            let (mut rows, mut wall_rows) = (CandidateRows::default(), CandidateRows::default());
+            let (mut built, mut built_walls) =
+                (NeighbourLists::default(), NeighbourLists::default());
+            let (fluid_set, wall_set) = ((&pts[..], &grid), (&boundary[..], &boundary_grid));
+            built
+                .build_keeping_candidates_scalar(&mut rows, &pts, fluid_set, &reach, &kernel, true);
+            built_walls.build_keeping_candidates_scalar(
+                &mut wall_rows,
+                &pts,
+                wall_set,
+                &reach,
+                &kernel,
+                false,
+            );
+            for i in 0..pts.len() {
+                assert_eq!(rows.row(i), skin.fluid.row(i), "substep {substep}");
+                assert_eq!(wall_rows.row(i), skin.walls.row(i), "substep {substep}");
+            }
+            assert_eq!(rows.len(), pts.len());
+            assert_eq!(wall_rows.len(), pts.len());
+            built_scalar = Some((built, built_walls));
         }
-        fluid.evaluate(&skin.fluid, &pts, &pts, &kernel);
-        walls.evaluate(&skin.walls, &pts, &boundary, &kernel);
-        // The scalar form, which targets without AVX-512 take.
-        let (mut fluid_scalar, mut walls_scalar) =
-            (NeighbourLists::default(), NeighbourLists::default());
-        fluid_scalar.evaluate_scalar(&skin.fluid, &pts, &pts, &kernel);
-        walls_scalar.evaluate_scalar(&skin.walls, &pts, &boundary, &kernel);
+        // The scalar forms, which targets without AVX-512 take.
+        let (fluid_scalar, walls_scalar) = built_scalar.take().unwrap_or_else(|| {
+            let (mut fluid_scalar, mut walls_scalar) =
+                (NeighbourLists::default(), NeighbourLists::default());
+            fluid_scalar.evaluate_scalar(&skin.fluid, &pts, &pts, &kernel);
+            walls_scalar.evaluate_scalar(&skin.walls, &pts, &boundary, &kernel);
+            (fluid_scalar, walls_scalar)
+        });
         let mut fresh_grid = new_grid();
         fresh_grid.fill(&pts);
         let (mut fresh, mut fresh_walls) = (NeighbourLists::default(), NeighbourLists::default());
@@ -178,7 +214,9 @@ fn the_candidates_hold_only_near_their_anchors() {
     no_boundary.fill(&[]);
     let mut skin = SkinLists::default();
     assert!(!skin.covers(&pts, &reach), "never built");
-    skin.build(&pts, &grid, &[], &no_boundary, &reach);
+    let (mut fluid, mut walls) = (NeighbourLists::default(), NeighbourLists::default());
+    let lists = [&mut fluid, &mut walls];
+    skin.build(&pts, &grid, &[], &no_boundary, &reach, &kernel, lists);
     assert!(skin.covers(&pts, &reach));
     // δ = (σ/2 − 2⁻⁸) H = (1/8 − 1/256) cm = 1.21 mm.
     pts[10].y += Fx::from_ratio(12, 10_000);
@@ -190,4 +228,40 @@ fn the_candidates_hold_only_near_their_anchors() {
     assert!(!skin.covers(&pts, &reach), "a saturated displacement");
     pts.truncate(200);
     assert!(!skin.covers(&pts, &reach), "fewer particles");
+}
+
+/// The `f64` baseline takes the scalar forms everywhere: a new selection's lists (one pass
+/// of the grid) are the fresh search's, entry for entry, and its candidates evaluate to
+/// them again.
+#[test]
+fn a_new_selection_in_f64_finds_the_fresh_lists() {
+    let kernel = Kernel::<f64>::calibrated(0.005, 2.0);
+    let mut grid = CellGrid::new(Vec3::ZERO, Vec3::splat(0.1), kernel.support);
+    let pts: Vec<Vec3<f64>> = points(1500, 8)
+        .iter()
+        .map(|p| Vec3::new(p.x.to_f64(), p.y.to_f64(), p.z.to_f64()))
+        .collect();
+    grid.fill(&pts);
+    let reach = Reach::new(&kernel, &grid);
+    let mut rows = CandidateRows::default();
+    let (mut built, mut fresh, mut evaluated) = (
+        NeighbourLists::default(),
+        NeighbourLists::default(),
+        NeighbourLists::default(),
+    );
+    built.build_keeping_candidates(&mut rows, &pts, (&pts, &grid), &reach, &kernel, true);
+    fresh.build(&pts, &pts, &grid, &kernel, true);
+    evaluated.evaluate(&rows, &pts, &pts, &kernel);
+    assert!(
+        fresh.index.len() > 4 * pts.len(),
+        "about six neighbours each"
+    );
+    for lists in [&built, &evaluated] {
+        assert_eq!(lists.start, fresh.start);
+        assert_eq!(lists.index, fresh.index);
+        assert_eq!(lists.value, fresh.value);
+        assert_eq!(lists.gradients, fresh.gradients);
+    }
+    let candidates: usize = (0..rows.len()).map(|i| rows.row(i).len()).sum();
+    assert!(candidates > fresh.index.len(), "the skin adds candidates");
 }

@@ -8,7 +8,9 @@
 //!
 //! A fresh search of the grid ([`NeighbourLists::build`]) defines the lists. The step
 //! finds the same lists, bit for bit and in the same order, from candidate lists with a
-//! skin that several substeps reuse ([`skin`], [`NeighbourLists::evaluate`]).
+//! skin that several substeps reuse ([`skin`], [`NeighbourLists::evaluate`]); the substep
+//! that finds new candidates evaluates them in the same pass of the grid
+//! ([`NeighbourLists::build_keeping_candidates`]).
 
 #[cfg(target_arch = "x86_64")]
 mod avx512;

@@ -214,7 +214,8 @@ impl<R: Real> FluidSystem<R> {
     /// Stage 2: lists every particle's fluid and boundary neighbours with their kernel
     /// values, from the candidates of the last substep when they still hold every
     /// neighbour (the fluid's cells located for the lists' order), else from new ones
-    /// (the fluid sorted into cells): the same lists either way.
+    /// (the fluid sorted into cells), selected and evaluated in one pass of the grid: the
+    /// same lists either way.
     pub(crate) fn find_neighbours(&mut self) {
         let Scratch {
             boundary,
@@ -231,11 +232,20 @@ impl<R: Real> FluidSystem<R> {
         if skin.covers(positions, reach) {
             grid.locate(positions);
             skin.fluid.order_by_cells(grid.cells());
+            fluid.evaluate(&skin.fluid, positions, positions, kernel);
+            walls.evaluate(&skin.walls, positions, boundary, kernel);
         } else {
             grid.fill(positions);
-            skin.build(positions, grid, boundary, boundary_grid, reach);
+            let lists = [fluid, walls];
+            skin.build(
+                positions,
+                grid,
+                boundary,
+                boundary_grid,
+                reach,
+                kernel,
+                lists,
+            );
         }
-        fluid.evaluate(&skin.fluid, positions, positions, kernel);
-        walls.evaluate(&skin.walls, positions, boundary, kernel);
     }
 }

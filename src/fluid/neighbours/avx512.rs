@@ -5,8 +5,8 @@
 //! Three searches share it: a fresh search of the grid ([`build`]), the evaluation of
 //! candidate rows ([`evaluate`], see [`skin`](super::skin)) and the selection of those
 //! candidates ([`select`]: the support test alone, at the candidate radius ρ in place of
-//! H, which the bounds below then concern; its rows are those of
-//! [`CandidateRows::select_scalar`]).
+//! H, which the bounds below then concern; its rows are the candidates of
+//! [`NeighbourLists::build_keeping_candidates_scalar`]).
 //!
 //! # Same lists
 //!
@@ -34,7 +34,7 @@
 //! rows into the same blocks (to fill them) changes nothing but where the rows end, which
 //! the search records as it packs. Other formats, targets and inputs beyond the bounds take
 //! [`NeighbourLists::build_scalar`], [`NeighbourLists::evaluate_scalar`] and
-//! [`CandidateRows::select_scalar`].
+//! [`NeighbourLists::build_keeping_candidates_scalar`].
 
 use core::any::Any;
 use core::arch::x86_64::{
@@ -110,9 +110,10 @@ pub(super) fn evaluate<R: Real>(
     unsafe { build_kernel(lists, queries, points, candidates, &admitted.search) }
 }
 
-/// [`CandidateRows::select`] with the kernel's support test at the candidate radius ρ
-/// (no kernel value is computed), on the conditions of [`build`] with ρ and 1/ρ in place
-/// of H and 1/H; returns whether it did (if not, the rows hold nothing of use).
+/// The candidates of [`NeighbourLists::build_keeping_candidates`]: the kernel's support
+/// test at the candidate radius ρ (no kernel value is computed), on the conditions of
+/// [`build`] with ρ and 1/ρ in place of H and 1/H; returns whether it did (if not, the
+/// rows hold nothing of use).
 pub(super) fn select<R: Real>(
     rows: &mut CandidateRows,
     queries: &[Vec3<R>],

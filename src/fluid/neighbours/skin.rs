@@ -8,7 +8,9 @@
 //! positions aᵢ then (the anchors). A later substep reuses the candidates while every
 //! fluid particle is within δ = (σ/2 − 2⁻⁸) H of its anchor, its particle count unchanged
 //! (boundary particles never move), and evaluates each candidate with the same test and
-//! the same kernel values as a fresh search ([`NeighbourLists::evaluate`]). Then:
+//! the same kernel values as a fresh search ([`NeighbourLists::evaluate`]); the build
+//! evaluates each candidate as it finds it, in the same order, with the same values
+//! ([`NeighbourLists::build_keeping_candidates`]: one pass of the grid). Then:
 //!
 //! - **the same pairs.** A pair the kernel accepts now lies within H(1 + 2⁻¹⁰) (the
 //!   test compares rounded values; every rounding is far below 2⁻¹⁰ of H in each format),
@@ -74,46 +76,6 @@ impl CandidateRows {
     #[inline(always)]
     pub fn row(&self, i: usize) -> &[u32] {
         &self.index[self.start[i] as usize..self.start[i + 1] as usize]
-    }
-
-    /// Finds, for each of `queries`, every point of `points` (sorted into `grid`) that
-    /// passes [`Reach::contains`], except the query itself when `skip_self`, in the grid's
-    /// order (cell, index).
-    pub fn select<R: Real>(
-        &mut self,
-        queries: &[Vec3<R>],
-        points: &[Vec3<R>],
-        grid: &CellGrid<R>,
-        reach: &Reach<R>,
-        skip_self: bool,
-    ) {
-        #[cfg(target_arch = "x86_64")]
-        if super::avx512::select(self, queries, points, grid, reach, skip_self) {
-            return;
-        }
-        self.select_scalar(queries, points, grid, reach, skip_self);
-    }
-
-    /// [`CandidateRows::select`], one candidate after another.
-    pub fn select_scalar<R: Real>(
-        &mut self,
-        queries: &[Vec3<R>],
-        points: &[Vec3<R>],
-        grid: &CellGrid<R>,
-        reach: &Reach<R>,
-        skip_self: bool,
-    ) {
-        self.clear();
-        for (i, &xi) in queries.iter().enumerate() {
-            grid.for_each_within(xi, reach.inv_radius, reach.span, |candidates| {
-                for &j in candidates {
-                    if !(skip_self && j as usize == i) && reach.contains(xi - points[j as usize]) {
-                        self.index.push(j);
-                    }
-                }
-            });
-            self.end_row();
-        }
     }
 
     /// Sorts every row by (`cells[j]`, j), the order of a fresh search over a grid whose
@@ -228,7 +190,10 @@ impl<R: Real> SkinLists<R> {
 
     /// Finds the candidates of the fluid particles at `positions` (sorted into `grid`)
     /// among themselves and among the boundary particles `boundary` (sorted into
-    /// `boundary_grid`), and anchors them there.
+    /// `boundary_grid`), anchors them there, and finds from the same pass of the grid the
+    /// neighbour lists `fluid_lists` and `wall_lists` of these positions
+    /// ([`NeighbourLists::build_keeping_candidates`]).
+    #[allow(clippy::too_many_arguments)]
     pub fn build(
         &mut self,
         positions: &[Vec3<R>],
@@ -236,10 +201,27 @@ impl<R: Real> SkinLists<R> {
         boundary: &[Vec3<R>],
         boundary_grid: &CellGrid<R>,
         reach: &Reach<R>,
+        kernel: &Kernel<R>,
+        [fluid_lists, wall_lists]: [&mut NeighbourLists<R>; 2],
     ) {
-        self.fluid.select(positions, positions, grid, reach, true);
-        self.walls
-            .select(positions, boundary, boundary_grid, reach, false);
+        let fluid = (positions, grid);
+        fluid_lists.build_keeping_candidates(
+            &mut self.fluid,
+            positions,
+            fluid,
+            reach,
+            kernel,
+            true,
+        );
+        let walls = (boundary, boundary_grid);
+        wall_lists.build_keeping_candidates(
+            &mut self.walls,
+            positions,
+            walls,
+            reach,
+            kernel,
+            false,
+        );
         self.anchors.clear();
         self.anchors.extend_from_slice(positions);
         self.built = true;
@@ -277,6 +259,81 @@ impl<R: Real> NeighbourLists<R> {
     ) {
         self.clear();
         for (i, &xi) in queries.iter().enumerate() {
+            for &j in candidates.row(i) {
+                if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
+                    self.push(j, value, gradient);
+                }
+            }
+            self.start.push(self.index.len() as u32);
+        }
+    }
+
+    /// The lists [`NeighbourLists::build`] finds for `queries` among `points` (sorted into
+    /// `grid`: the pair `searched`), and in `candidates` every point within the candidate
+    /// radius ρ of each query ([`Reach::contains`], the query itself left out when
+    /// `skip_self`), in the grid's order (cell, index): the rows a later substep evaluates.
+    ///
+    /// One pass over the grid within ρ: each query's candidates are selected, then
+    /// evaluated with [`Kernel::evaluate`] while the row is fresh in cache, so the lists are
+    /// those [`NeighbourLists::evaluate`] finds from the candidates (the same candidates in
+    /// the same order, the same offsets through the same operations), which are the fresh
+    /// search's (module documentation). In I32F32 on x86-64 with AVX-512F the candidates
+    /// are selected, then evaluated, eight at a time, with the same rows and lists as
+    /// [`NeighbourLists::build_keeping_candidates_scalar`] bit for bit.
+    pub fn build_keeping_candidates(
+        &mut self,
+        candidates: &mut CandidateRows,
+        queries: &[Vec3<R>],
+        searched: (&[Vec3<R>], &CellGrid<R>),
+        reach: &Reach<R>,
+        kernel: &Kernel<R>,
+        skip_self: bool,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            let (points, grid) = searched;
+            if super::avx512::select(candidates, queries, points, grid, reach, skip_self) {
+                self.evaluate(candidates, queries, points, kernel);
+                return;
+            }
+        }
+        self.build_keeping_candidates_scalar(
+            candidates, queries, searched, reach, kernel, skip_self,
+        );
+    }
+
+    /// [`NeighbourLists::build_keeping_candidates`], one point after another. The test at
+    /// ρ stores every point in the row and keeps it by advancing the row's end, with no
+    /// branch on the outcome (which is a coin toss: about half the points of the cells
+    /// visited are candidates); the kernel then evaluates the query's row. A candidate's
+    /// offset is below ρ along each axis, so computing it a second time saturates nothing
+    /// and the saturation counter reads as after a selection and an evaluation.
+    pub fn build_keeping_candidates_scalar(
+        &mut self,
+        candidates: &mut CandidateRows,
+        queries: &[Vec3<R>],
+        (points, grid): (&[Vec3<R>], &CellGrid<R>),
+        reach: &Reach<R>,
+        kernel: &Kernel<R>,
+        skip_self: bool,
+    ) {
+        self.clear();
+        candidates.clear();
+        for (i, &xi) in queries.iter().enumerate() {
+            grid.for_each_within(xi, reach.inv_radius, reach.span, |near| {
+                let row = &mut candidates.index;
+                let first = row.len();
+                row.resize(first + near.len(), 0);
+                let mut end = first;
+                for &j in near {
+                    row[end] = j;
+                    let selected =
+                        !(skip_self && j as usize == i) && reach.contains(xi - points[j as usize]);
+                    end += usize::from(selected);
+                }
+                row.truncate(end);
+            });
+            candidates.end_row();
             for &j in candidates.row(i) {
                 if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
                     self.push(j, value, gradient);

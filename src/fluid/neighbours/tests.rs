@@ -26,9 +26,21 @@ fn compare(queries: &[Vec3<Fx>], points: &[Vec3<Fx>], spacing: Fx, skip_self: bo
     assert_same(&fast, &slow);
     let reach = Reach::new(&kernel, &grid);
     let (mut rows, mut rows_scalar) = (CandidateRows::default(), CandidateRows::default());
-    rows.select(queries, points, &grid, &reach, skip_self);
-    rows_scalar.select_scalar(queries, points, &grid, &reach, skip_self);
+    let (mut built, mut built_scalar) = (NeighbourLists::default(), NeighbourLists::default());
+    let searched = (points, &grid);
+    built.build_keeping_candidates(&mut rows, queries, searched, &reach, &kernel, skip_self);
+    built_scalar.build_keeping_candidates_scalar(
+        &mut rows_scalar,
+        queries,
+        searched,
+        &reach,
+        &kernel,
+        skip_self,
+    );
+    assert_same(&built, &slow);
+    assert_same(&built_scalar, &slow);
     assert_eq!(rows.len(), queries.len());
+    assert_eq!(rows_scalar.len(), queries.len());
     for i in 0..queries.len() {
         assert_eq!(rows.row(i), rows_scalar.row(i), "candidates of {i}");
     }
