@@ -70,7 +70,7 @@ impl<R: Real> FluidSystem<R> {
         // ok-det: reporting
         let mut copy = self.clone();
         copy.prepare();
-        copy.find_neighbours();
+        copy.search_neighbours();
         copy.compute_density();
         copy.scratch
             .density

@@ -52,7 +52,9 @@ pub struct FluidSettings<R: Real = Fx> {
 /// 2. **neighbours** ([`grid`](super::grid), [`neighbours`](super::neighbours)): the
 ///    neighbour lists with kernel values, fluid and boundary, from candidate lists with a
 ///    skin ([`skin`](super::neighbours::skin)) found by counting sort into cells whenever
-///    the particles have moved too far for the last ones;
+///    the particles have moved too far for the last ones, or by a search within the
+///    support alone when the flow is too fast (or an emitter too busy) for new candidates
+///    to serve the next substep;
 /// 3. **density** ([`density`](super::density)): ρ/ρ₀ by kernel sums;
 /// 4. **solve**: [`wcsph`](super::wcsph) (Tait pressure, explicit) or
 ///    [`dfsph`](super::dfsph) (iterated velocity corrections to the rest density), with
@@ -182,7 +184,7 @@ impl<R: Real> FluidSystem<R> {
             if self.positions.is_empty() {
                 continue;
             }
-            self.find_neighbours();
+            self.find_neighbours(h);
             self.compute_density();
             match self.settings.solver {
                 FluidSolver::Wcsph => self.wcsph_velocities(h, gravity),
@@ -213,10 +215,14 @@ impl<R: Real> FluidSystem<R> {
 
     /// Stage 2: lists every particle's fluid and boundary neighbours with their kernel
     /// values, from the candidates of the last substep when they still hold every
-    /// neighbour (the fluid's cells located for the lists' order), else from new ones
-    /// (the fluid sorted into cells), selected and evaluated in one pass of the grid: the
-    /// same lists either way.
-    pub(crate) fn find_neighbours(&mut self) {
+    /// neighbour (the fluid's cells located for the lists' order); else, with the fluid
+    /// sorted into cells, from new candidates selected and evaluated in one pass of the
+    /// grid when the next substep (of `h` seconds) can reuse them
+    /// ([`SkinLists::may_last`], and no emitter adds particles), and otherwise by a search
+    /// within the support alone ([`FluidSystem::search_neighbours`]), which costs less than
+    /// one within the candidate radius. The same lists in every case; only the cost
+    /// differs.
+    pub(crate) fn find_neighbours(&mut self, h: R) {
         let Scratch {
             boundary,
             boundary_grid,
@@ -234,7 +240,9 @@ impl<R: Real> FluidSystem<R> {
             skin.fluid.order_by_cells(grid.cells());
             fluid.evaluate(&skin.fluid, positions, positions, kernel);
             walls.evaluate(&skin.walls, positions, boundary, kernel);
-        } else {
+        } else if skin.may_last(&self.velocities, h, reach)
+            && !adds_particles(&self.emitters, self.settings.spacing, h)
+        {
             grid.fill(positions);
             let lists = [fluid, walls];
             skin.build(
@@ -246,6 +254,31 @@ impl<R: Real> FluidSystem<R> {
                 kernel,
                 lists,
             );
+        } else {
+            skin.discard();
+            self.search_neighbours();
         }
     }
+
+    /// The neighbour lists of stage 2 by a search of the grid within the support, the
+    /// fluid sorted into cells anew, keeping no candidates.
+    pub(crate) fn search_neighbours(&mut self) {
+        let s = &mut self.scratch;
+        let (positions, kernel) = (&self.positions, &self.settings.kernel);
+        s.grid.fill(positions);
+        s.fluid.build(positions, positions, &s.grid, kernel, true);
+        s.walls
+            .build(positions, &s.boundary, &s.boundary_grid, kernel, false);
+    }
+}
+
+/// Whether an emitter adds particles in the next substep (of `h` seconds): one with
+/// particles left whose travel then reaches the `spacing` (m), as [`emit`] finds it. The
+/// particle count changes, so no candidate list outlives that.
+///
+/// [`emit`]: FluidSystem::emit
+fn adds_particles<R: Real>(emitters: &[EmitterState<R>], spacing: R, h: R) -> bool {
+    emitters
+        .iter()
+        .any(|e| e.remaining > 0 && e.travelled.add_product(e.speed, h) >= spacing)
 }

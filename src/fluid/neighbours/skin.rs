@@ -188,6 +188,28 @@ impl<R: Real> SkinLists<R> {
                 .all(|(&x, &a)| reach.holds(x, a))
     }
 
+    /// Whether candidates built now can serve the next substep too, for fluid particles
+    /// moving at `velocities` (m/s) over substeps of `h` seconds: every particle would stay
+    /// within δ of its anchor even if it moved 2|v|h, twice its current speed's
+    /// displacement (the margin covers a substep's acceleration). Otherwise the next
+    /// substep would search again anyway, and a search within the support alone is
+    /// cheaper than one within the candidate radius.
+    ///
+    /// (2 h |v|_max / H)² < (δ/H)², with |v|²_max the largest squared speed.
+    pub fn may_last(&self, velocities: &[Vec3<R>], h: R, reach: &Reach<R>) -> bool {
+        let fastest = velocities
+            .iter()
+            .map(|v| v.length_squared())
+            .fold(R::ZERO, R::max);
+        let reach_per_speed = (h + h) * reach.inv_support;
+        fastest * (reach_per_speed * reach_per_speed) < reach.limit
+    }
+
+    /// Forgets the candidates (after the lists were found without them).
+    pub fn discard(&mut self) {
+        self.built = false;
+    }
+
     /// Finds the candidates of the fluid particles at `positions` (sorted into `grid`)
     /// among themselves and among the boundary particles `boundary` (sorted into
     /// `boundary_grid`), anchors them there, and finds from the same pass of the grid the

@@ -26,35 +26,83 @@ fn reuses(fluid: &FluidSystem<Fx>) -> bool {
         .covers(&fluid.positions, &fluid.scratch.reach)
 }
 
+/// Asserts that the lists of `fluid`'s scratch are those of a fresh search at its
+/// positions.
+fn assert_fresh_lists(fluid: &FluidSystem<Fx>, step: usize) {
+    let s = &fluid.scratch;
+    let mut grid = s.grid.clone();
+    grid.fill(&fluid.positions);
+    let kernel = &fluid.settings.kernel;
+    let (mut fresh, mut walls) = (NeighbourLists::default(), NeighbourLists::default());
+    fresh.build(&fluid.positions, &fluid.positions, &grid, kernel, true);
+    walls.build(
+        &fluid.positions,
+        &s.boundary,
+        &s.boundary_grid,
+        kernel,
+        false,
+    );
+    for (found, expected) in [(&s.fluid, &fresh), (&s.walls, &walls)] {
+        assert_eq!(found.start, expected.start, "step {step}");
+        assert_eq!(found.index, expected.index, "step {step}");
+        assert_eq!(found.value, expected.value, "step {step}");
+        assert_eq!(found.gradients, expected.gradients, "step {step}");
+    }
+}
+
 #[test]
 fn the_step_finds_the_fresh_searchs_lists() {
     let (mut fluid, dt, gravity) = cube();
+    let h = dt * Fx::from_ratio(1, 3);
     let mut reused = 0;
     for step in 0..15 {
         fluid.step(dt, gravity);
         reused += usize::from(reuses(&fluid));
-        fluid.find_neighbours();
-        let s = &fluid.scratch;
-        let mut grid = s.grid.clone();
-        grid.fill(&fluid.positions);
-        let kernel = &fluid.settings.kernel;
-        let (mut fresh, mut walls) = (NeighbourLists::default(), NeighbourLists::default());
-        fresh.build(&fluid.positions, &fluid.positions, &grid, kernel, true);
-        walls.build(
-            &fluid.positions,
-            &s.boundary,
-            &s.boundary_grid,
-            kernel,
-            false,
-        );
-        for (found, expected) in [(&s.fluid, &fresh), (&s.walls, &walls)] {
-            assert_eq!(found.start, expected.start, "step {step}");
-            assert_eq!(found.index, expected.index, "step {step}");
-            assert_eq!(found.value, expected.value, "step {step}");
-            assert_eq!(found.gradients, expected.gradients, "step {step}");
-        }
+        fluid.find_neighbours(h);
+        assert_fresh_lists(&fluid, step);
     }
     assert!(reused >= 5, "reused after {reused} steps of 15");
+}
+
+/// A cube thrown at 1.5 m/s moves 2.5 mm per substep of 5/3 ms: twice that is more than
+/// the 2.4 mm (δ at H = 2 cm) its candidates allow, so the step searches within the
+/// support and keeps no candidates, with the same lists; once the cube has stopped against
+/// the wall the candidates come back.
+#[test]
+fn a_fast_flow_searches_within_the_support_alone() {
+    let dt = Fx::from_ratio(1, 200);
+    let h = dt * Fx::from_ratio(1, 3);
+    let mut desc = presets::cube::<Fx>(8, FluidSolver::Dfsph, 3);
+    desc.blocks[0].velocity = Vec3::new(Fx::from_ratio(3, 2), Fx::ZERO, Fx::ZERO);
+    let mut fluid = FluidSystem::from_desc(&desc, dt).expect("the cube builds");
+    let gravity = Vec3::new(Fx::ZERO, Fx::from_ratio(-981, 100), Fx::ZERO);
+    fluid.prepare();
+    let s = &fluid.scratch;
+    assert!(!s.skin.may_last(&fluid.velocities, h, &s.reach));
+    let slower: Vec<_> = fluid
+        .velocities
+        .iter()
+        .map(|&v| v * Fx::from_ratio(1, 4))
+        .collect();
+    assert!(
+        s.skin.may_last(&slower, h, &s.reach),
+        "at 0.375 m/s, 2|v|h = 1.25 mm"
+    );
+    fluid.step(dt, gravity);
+    assert!(!reuses(&fluid), "a fast flow keeps no candidates");
+    fluid.find_neighbours(h);
+    assert_fresh_lists(&fluid, 0);
+    let mut slow = false;
+    for step in 1..200 {
+        fluid.step(dt, gravity);
+        fluid.find_neighbours(h);
+        assert_fresh_lists(&fluid, step);
+        if reuses(&fluid) {
+            slow = true;
+            break;
+        }
+    }
+    assert!(slow, "the settled cube never reused its candidates again");
 }
 
 #[test]
