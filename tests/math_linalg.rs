@@ -9,6 +9,7 @@
 //! the ignored test `measure_max_errors` prints the measured worst cases quoted in the
 //! comments: `cargo test --release --test math_linalg -- --ignored --nocapture`.
 
+use fixed::types::extra::{U16, U32};
 use fixstep::math::saturation::count_saturations;
 use fixstep::math::{Fixed, FracBits, Fx, FxI48F16, Mat3, Quat, Real, Vec3};
 use proptest::prelude::*;
@@ -466,6 +467,33 @@ proptest! {
     }
 }
 
+/// One step of integrate renormalises as well as normalize does: each component within
+/// 2 ulp of q'/|q'| for the quaternion q' = q + ½ dt (0, ω) ⊗ q before renormalisation
+/// (computed here with the same rounded operations), and |q|² within 4 ulp of 1 — on both
+/// sides of the 2⁻¹⁰ threshold on |q'|² − 1 = |½ ω dt|² where integrate switches from two
+/// Newton steps to a square root and divisions.
+fn check_integrate_renormalises<F: FracBits>(omega: [f64; 3], c: [i32; 4]) {
+    let q = unit_quat::<Fixed<F>>(c);
+    let omega = vec3::<Fixed<F>>(omega);
+    let dt = Fixed::<F>::from_ratio(1, 240);
+    let a = omega * (dt * Fixed::<F>::HALF);
+    let u = q.vector();
+    let du = a * q.w + a.cross(u);
+    let raw = Quat::new(q.w - a.dot(u), u.x + du.x, u.y + du.y, u.z + du.z);
+    let stepped = q.integrate(omega, dt);
+    assert_quat_near(
+        stepped,
+        ref_normalize(raw.to_f64()),
+        2.0,
+        "integrate's renormalisation",
+    );
+    let excess = norm_excess_ulp(stepped);
+    assert!(
+        excess.abs() <= 4.0,
+        "|q|² − 1 = {excess} ulp after integrate"
+    );
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
@@ -476,6 +504,12 @@ proptest! {
     ) {
         check_integrate(omega, unit_quat::<Fx>(c), 120);
         check_integrate(omega, unit_quat::<f64>(c), 120);
+    }
+
+    #[test]
+    fn integrate_renormalises_to_a_few_ulp(omega in vec_in(20.0), c in int_components()) {
+        check_integrate_renormalises::<U32>(omega, c);
+        check_integrate_renormalises::<U16>(omega, c);
     }
 }
 

@@ -1,5 +1,9 @@
 //! Persistent contacts: the manifolds of touching shape pairs and the impulses the solver
 //! found for them, carried from step to step for warm starting.
+//!
+//! Each point keeps its normal impulse; friction is one constraint per contact (at the
+//! centre of its points, with a twist about the normal), so the contact keeps one
+//! friction impulse along the two tangents and one twist impulse.
 
 use serde::{Deserialize, Serialize};
 
@@ -17,7 +21,7 @@ pub(crate) struct ContactKey {
     pub part_b: u16,
 }
 
-/// One contact point and its accumulated impulses.
+/// One contact point and its accumulated normal impulse.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub(crate) struct ContactPoint<R: Real> {
@@ -29,8 +33,6 @@ pub(crate) struct ContactPoint<R: Real> {
     pub id: u32,
     /// Accumulated normal impulse, N·s (≥ 0).
     pub normal_impulse: R,
-    /// Accumulated friction impulse along the two tangents, N·s.
-    pub tangent_impulse: [R; 2],
 }
 
 /// A touching pair of shapes.
@@ -43,31 +45,45 @@ pub(crate) struct Contact<R: Real> {
     /// Number of points in use.
     pub count: u8,
     pub points: [ContactPoint<R>; MAX_MANIFOLD_POINTS],
+    /// Accumulated friction impulse at the centre of the points, along the two tangents
+    /// of the normal, N·s.
+    pub friction_impulse: [R; 2],
+    /// Accumulated twist friction impulse about the normal, N·m·s.
+    pub twist_impulse: R,
 }
 
 impl<R: Real> Contact<R> {
-    /// A contact from a fresh manifold, taking the accumulated impulses of points with the
-    /// same feature id from `previous` (warm starting).
+    /// A contact from a fresh manifold, with impulses carried from `previous` (the same
+    /// pair's contact last step) for warm starting: each point takes the normal impulse of
+    /// the previous point with the same feature id, and the contact takes the previous
+    /// friction and twist impulses when at least one point id matched (the same features
+    /// still touch, so the friction centre has not jumped).
     pub fn from_manifold(key: ContactKey, manifold: &Manifold<R>, previous: Option<&Self>) -> Self {
         let mut points = [ContactPoint::default(); MAX_MANIFOLD_POINTS];
+        let mut matched = false;
         for (slot, mp) in points.iter_mut().zip(manifold.points()) {
             *slot = ContactPoint {
                 point: mp.point,
                 separation: mp.separation,
                 id: mp.id,
                 normal_impulse: R::ZERO,
-                tangent_impulse: [R::ZERO; 2],
             };
             if let Some(old) = previous.and_then(|c| c.points().iter().find(|p| p.id == mp.id)) {
                 slot.normal_impulse = old.normal_impulse;
-                slot.tangent_impulse = old.tangent_impulse;
+                matched = true;
             }
         }
+        let (friction_impulse, twist_impulse) = match previous {
+            Some(old) if matched => (old.friction_impulse, old.twist_impulse),
+            _ => ([R::ZERO; 2], R::ZERO),
+        };
         Self {
             key,
             normal: manifold.normal,
             count: manifold.count as u8,
             points,
+            friction_impulse,
+            twist_impulse,
         }
     }
 

@@ -12,8 +12,9 @@
 //!    and angular velocity, force, torque, inverse mass, mass, inertia, linear and angular
 //!    damping, friction, restitution, sleep time, asleep flag, island (`u32`);
 //! 3. the contact count (`u64`), then each contact in key order: body A, body B (`u32`),
-//!    part A, part B (`u32`), normal, point count (`u8`), and each point's position,
-//!    separation, feature id (`u32`), normal impulse and the two tangent impulses.
+//!    part A, part B (`u32`), normal, point count (`u8`), each point's position,
+//!    separation, feature id (`u32`) and normal impulse, then the contact's two friction
+//!    impulses and its twist impulse.
 //!
 //! Shapes do not change during a run and are part of the scene, which replays check by
 //! its own hash; they are not hashed here.
@@ -73,9 +74,10 @@ impl<R: Real> RigidSystem<R> {
                 h.write_real(p.separation);
                 h.write_u32(p.id);
                 h.write_real(p.normal_impulse);
-                h.write_real(p.tangent_impulse[0]);
-                h.write_real(p.tangent_impulse[1]);
             }
+            h.write_real(c.friction_impulse[0]);
+            h.write_real(c.friction_impulse[1]);
+            h.write_real(c.twist_impulse);
         }
     }
 

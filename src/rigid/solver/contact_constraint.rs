@@ -1,5 +1,7 @@
-//! Contact constraints: non-penetration with a soft bias, Coulomb friction on two tangents,
-//! and restitution, solved by sequential impulses with accumulated clamping.
+//! Contact constraints: non-penetration with a soft bias at each point, Coulomb friction
+//! per contact (two tangent rows at the centre of the points and a twist row about the
+//! normal, the model Rapier and PhysX use by default), and restitution, solved by
+//! sequential impulses with accumulated clamping.
 //!
 //! For a point with anchors r_a, r_b (from each centre of mass, m) and unit normal n (from A
 //! to B), the relative normal velocity is
@@ -9,9 +11,26 @@
 //! ```
 //!
 //! and the effective mass along n is 1/k with
-//! k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × n))·(r_a × n) + (I_b⁻¹(r_b × n))·(r_b × n). The same holds
-//! along each tangent. The products r × n and I⁻¹(r × n) are computed once per step in
-//! [`ContactBlock::prepare_products`], so an iteration costs a few dot products per point.
+//! k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × n))·(r_a × n) + (I_b⁻¹(r_b × n))·(r_b × n) (1/kg).
+//!
+//! Friction acts once per contact, at the centre c of its points (the mean, m), with the
+//! anchors c − x_a and c − x_b: the same velocity and effective mass along each tangent t₁,
+//! t₂, and a twist row about n with relative angular velocity ω_n = (ω_b − ω_a)·n (rad/s)
+//! and effective mass 1/k_twist, k_twist = n·I_a⁻¹n + n·I_b⁻¹n (1/(kg·m²)). With Λ = Σ λ_n,k
+//! the contact's total normal impulse (N·s) and d_k = |p_k − c| (m) each point's distance
+//! from the centre, the limits are
+//!
+//! ```text
+//! |λ_t| ≤ μ Λ            (N·s, a disc on the 2D tangent impulse)
+//! |λ_twist| ≤ μ Σ λ_n,k d_k   (N·m·s)
+//! ```
+//!
+//! the twist limit being Rapier's: the torque the points' own friction discs could resist
+//! about the centre if they all slid around it. Five rows per contact instead of two
+//! per point.
+//!
+//! The products r × n, I⁻¹(r × n), r × t, I⁻¹(r × t) and I⁻¹n are computed once per step
+//! in [`ContactBlock::prepare_products`], so an iteration costs a few dot products per row.
 //!
 //! Constraints are stored [`LANES`] to a [`ContactBlock`], field by field (structure of
 //! arrays); a lane is one contact. The solver visits the lanes of a block in order and the
@@ -34,19 +53,15 @@ struct PointLanes<R: Real> {
     /// I_a⁻¹(r_a × n) and I_b⁻¹(r_b × n): the angular velocity change per unit impulse.
     in_a: Lanes3<R>,
     in_b: Lanes3<R>,
-    /// r × t and I⁻¹(r × t) for the two tangents.
-    rt_a: [Lanes3<R>; 2],
-    rt_b: [Lanes3<R>; 2],
-    it_a: [Lanes3<R>; 2],
-    it_b: [Lanes3<R>; 2],
     /// Separation at the start of the step, m.
     base_separation: Lanes<R>,
-    /// 1/k along the normal and the tangents, kg.
+    /// Distance from the lane's friction centre, m: the point's lever arm in the twist
+    /// limit.
+    twist_arm: Lanes<R>,
+    /// 1/k along the normal, kg.
     normal_mass: Lanes<R>,
-    tangent_mass: [Lanes<R>; 2],
-    /// Accumulated impulses, N·s.
+    /// Accumulated impulse, N·s.
     normal_impulse: Lanes<R>,
-    tangent_impulse: [Lanes<R>; 2],
     /// The largest normal impulse of one iteration this step: zero means the point never
     /// pushed, so it does not bounce.
     max_normal_impulse: Lanes<R>,
@@ -60,17 +75,49 @@ impl<R: Real> PointLanes<R> {
         rn_b: Lanes3::ZERO,
         in_a: Lanes3::ZERO,
         in_b: Lanes3::ZERO,
+        base_separation: [R::ZERO; LANES],
+        twist_arm: [R::ZERO; LANES],
+        normal_mass: [R::ZERO; LANES],
+        normal_impulse: [R::ZERO; LANES],
+        max_normal_impulse: [R::ZERO; LANES],
+        relative_velocity: [R::ZERO; LANES],
+    };
+}
+
+/// What the solver keeps for the friction of each lane during a step: the two tangent rows
+/// at the friction centre and the twist row about the normal.
+#[derive(Clone, Copy, Debug)]
+#[cfg_attr(test, derive(PartialEq))]
+struct FrictionLanes<R: Real> {
+    /// r_a × t and r_b × t for the two tangents, with the anchors of the centre, m.
+    rt_a: [Lanes3<R>; 2],
+    rt_b: [Lanes3<R>; 2],
+    /// I_a⁻¹(r_a × t) and I_b⁻¹(r_b × t).
+    it_a: [Lanes3<R>; 2],
+    it_b: [Lanes3<R>; 2],
+    /// I_a⁻¹n and I_b⁻¹n: the angular velocity change per unit twist impulse, 1/(kg·m²).
+    twist_a: Lanes3<R>,
+    twist_b: Lanes3<R>,
+    /// 1/k along the tangents (kg) and about the normal (kg·m²).
+    tangent_mass: [Lanes<R>; 2],
+    twist_mass: Lanes<R>,
+    /// Accumulated impulses: along the tangents (N·s) and about the normal (N·m·s).
+    tangent_impulse: [Lanes<R>; 2],
+    twist_impulse: Lanes<R>,
+}
+
+impl<R: Real> FrictionLanes<R> {
+    const ZERO: Self = Self {
         rt_a: [Lanes3::ZERO; 2],
         rt_b: [Lanes3::ZERO; 2],
         it_a: [Lanes3::ZERO; 2],
         it_b: [Lanes3::ZERO; 2],
-        base_separation: [R::ZERO; LANES],
-        normal_mass: [R::ZERO; LANES],
+        twist_a: Lanes3::ZERO,
+        twist_b: Lanes3::ZERO,
         tangent_mass: [[R::ZERO; LANES]; 2],
-        normal_impulse: [R::ZERO; LANES],
+        twist_mass: [R::ZERO; LANES],
         tangent_impulse: [[R::ZERO; LANES]; 2],
-        max_normal_impulse: [R::ZERO; LANES],
-        relative_velocity: [R::ZERO; LANES],
+        twist_impulse: [R::ZERO; LANES],
     };
 }
 
@@ -109,6 +156,7 @@ pub(crate) struct ContactBlock<R: Real> {
     /// Points in use per lane.
     count: [u8; LANES],
     points: [PointLanes<R>; MAX_MANIFOLD_POINTS],
+    friction_rows: FrictionLanes<R>,
 }
 
 /// The coefficients a lane's solve uses: the step's softness for contacts between two
@@ -165,6 +213,7 @@ impl<R: Real> ContactBlock<R> {
             rigid_partner: [false; LANES],
             count: [0; LANES],
             points: [PointLanes::ZERO; MAX_MANIFOLD_POINTS],
+            friction_rows: FrictionLanes::ZERO,
         }
     }
 
@@ -175,8 +224,10 @@ impl<R: Real> ContactBlock<R> {
         self.independent = independent;
     }
 
-    /// Applies the impulses carried from the last step, lane by lane: v_a −= P/m_a,
-    /// ω_a −= I_a⁻¹(r_a × P), and the opposite on B, with P = λ_n n + λ₁ t₁ + λ₂ t₂.
+    /// Applies the impulses carried from the last step, lane by lane: per point
+    /// v_a −= λ_n n/m_a, ω_a −= λ_n I_a⁻¹(r_a × n), then the friction at the centre
+    /// v_a −= λ₁ t₁/m_a + λ₂ t₂/m_a, ω_a −= λ₁ I_a⁻¹(r_a × t₁) + λ₂ I_a⁻¹(r_a × t₂) +
+    /// λ_twist I_a⁻¹n, and the opposite on B.
     ///
     /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
     /// processor has it ([`avx512`]), which gives the same bits.
@@ -190,27 +241,34 @@ impl<R: Real> ContactBlock<R> {
 
     /// [`warm_start`](Self::warm_start), one lane after another.
     pub fn warm_start_lanes(&self, bodies: &mut [SolverBody<R>]) {
+        let f = &self.friction_rows;
         for l in 0..self.len {
             let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
             let (normal_a, normal_b) = (self.normal_a.get(l), self.normal_b.get(l));
-            let tangents_a = [self.tangents_a[0].get(l), self.tangents_a[1].get(l)];
-            let tangents_b = [self.tangents_b[0].get(l), self.tangents_b[1].get(l)];
             for cp in &self.points[..usize::from(self.count[l])] {
-                let [t0, t1] = [cp.tangent_impulse[0][l], cp.tangent_impulse[1][l]];
                 let n = cp.normal_impulse[l];
-                if n == R::ZERO && t0 == R::ZERO && t1 == R::ZERO {
+                if n == R::ZERO {
                     continue;
                 }
-                ba.v -= normal_a * n + tangents_a[0] * t0 + tangents_a[1] * t1;
-                ba.w -= cp.in_a.get(l) * n + cp.it_a[0].get(l) * t0 + cp.it_a[1].get(l) * t1;
-                bb.v += normal_b * n + tangents_b[0] * t0 + tangents_b[1] * t1;
-                bb.w += cp.in_b.get(l) * n + cp.it_b[0].get(l) * t0 + cp.it_b[1].get(l) * t1;
+                ba.v -= normal_a * n;
+                ba.w -= cp.in_a.get(l) * n;
+                bb.v += normal_b * n;
+                bb.w += cp.in_b.get(l) * n;
             }
+            let [t0, t1] = [f.tangent_impulse[0][l], f.tangent_impulse[1][l]];
+            let twist = f.twist_impulse[l];
+            if t0 == R::ZERO && t1 == R::ZERO && twist == R::ZERO {
+                continue;
+            }
+            ba.v -= self.tangents_a[0].get(l) * t0 + self.tangents_a[1].get(l) * t1;
+            ba.w -= f.it_a[0].get(l) * t0 + f.it_a[1].get(l) * t1 + f.twist_a.get(l) * twist;
+            bb.v += self.tangents_b[0].get(l) * t0 + self.tangents_b[1].get(l) * t1;
+            bb.w += f.it_b[0].get(l) * t0 + f.it_b[1].get(l) * t1 + f.twist_b.get(l) * twist;
         }
     }
 
     /// One Gauss–Seidel pass over the block, lane by lane: for each lane the normal
-    /// impulses of its points, then friction.
+    /// impulses of its points, then its friction rows.
     ///
     /// Normal: with the current separation s = s₀ + (Δp_b − Δp_a)·n + Δθ_b·(r_b × n) −
     /// Δθ_a·(r_a × n), a point still apart (s > 0) only stops the approach that would close
@@ -218,10 +276,13 @@ impl<R: Real> ContactBlock<R> {
     /// gets the soft bias max(bias_rate·s, −max_push) when `use_bias`, and no bias in the
     /// relax pass. The accumulated impulse stays ≥ 0.
     ///
-    /// Friction: each tangent's impulse −m_t v_t is added, then the accumulated tangent
-    /// impulse is clamped to the disc |λ_t| ≤ μ λ_n (Coulomb's cone, not a box, so sliding
-    /// speed does not depend on the direction). A point with no normal and no tangent
-    /// impulse is skipped: its cone has radius 0, so nothing would change.
+    /// Friction, at the lane's centre: each tangent's impulse −m_t v_t is added, then the
+    /// accumulated tangent impulse is clamped to the disc |λ_t| ≤ μ Λ, Λ = Σ λ_n,k (Coulomb's
+    /// cone, not a box, so sliding speed does not depend on the direction); then the twist
+    /// impulse −m_twist ω_n is added and the accumulated twist impulse clamped to
+    /// |λ_twist| ≤ μ Σ λ_n,k d_k; a lane of one point has no twist row (its limit is 0). A
+    /// lane with no normal and no friction impulse is skipped: both limits are 0, so
+    /// nothing would change.
     ///
     /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
     /// processor has it ([`avx512`]), which gives the same bits.
@@ -280,40 +341,62 @@ impl<R: Real> ContactBlock<R> {
             cp.normal_impulse[l] = new_impulse;
             cp.max_normal_impulse[l] = cp.max_normal_impulse[l].max(applied);
         }
+        self.solve_friction(l, ba, bb);
+    }
+
+    /// The friction rows of lane `l` between its bodies `ba` and `bb`
+    /// ([`solve`](Self::solve)).
+    fn solve_friction(&mut self, l: usize, ba: &mut SolverBody<R>, bb: &mut SolverBody<R>) {
+        let count = usize::from(self.count[l]);
+        let mut normal_sum = R::ZERO;
+        let mut twist_sum = R::ZERO;
+        for cp in &self.points[..count] {
+            normal_sum += cp.normal_impulse[l];
+            twist_sum += cp.normal_impulse[l] * cp.twist_arm[l];
+        }
+        let f = &mut self.friction_rows;
+        let old_impulse = [f.tangent_impulse[0][l], f.tangent_impulse[1][l]];
+        let old_twist = f.twist_impulse[l];
+        if normal_sum == R::ZERO && old_impulse == [R::ZERO; 2] && old_twist == R::ZERO {
+            return;
+        }
         let friction = self.friction[l];
         let tangents = [self.tangents[0].get(l), self.tangents[1].get(l)];
-        let tangents_a = [self.tangents_a[0].get(l), self.tangents_a[1].get(l)];
-        let tangents_b = [self.tangents_b[0].get(l), self.tangents_b[1].get(l)];
-        for cp in &mut self.points[..count] {
-            let old_impulse = [cp.tangent_impulse[0][l], cp.tangent_impulse[1][l]];
-            let normal_impulse = cp.normal_impulse[l];
-            if normal_impulse == R::ZERO && old_impulse == [R::ZERO; 2] {
-                continue;
-            }
-            let dv = bb.v - ba.v;
-            let mut new_impulse = old_impulse;
-            for (j, impulse) in new_impulse.iter_mut().enumerate() {
-                let vt = dv.dot_fused(tangents[j]) + bb.w.dot_fused(cp.rt_b[j].get(l))
-                    - ba.w.dot_fused(cp.rt_a[j].get(l));
-                *impulse -= cp.tangent_mass[j][l] * vt;
-            }
-            let limit = friction * normal_impulse;
-            let length_squared = new_impulse[0] * new_impulse[0] + new_impulse[1] * new_impulse[1];
-            if length_squared > limit * limit {
-                let scale = limit * length_squared.rsqrt();
-                new_impulse = [new_impulse[0] * scale, new_impulse[1] * scale];
-            }
-            let [a0, a1] = [
-                new_impulse[0] - old_impulse[0],
-                new_impulse[1] - old_impulse[1],
-            ];
-            cp.tangent_impulse[0][l] = new_impulse[0];
-            cp.tangent_impulse[1][l] = new_impulse[1];
-            ba.v -= tangents_a[0] * a0 + tangents_a[1] * a1;
-            ba.w -= cp.it_a[0].get(l) * a0 + cp.it_a[1].get(l) * a1;
-            bb.v += tangents_b[0] * a0 + tangents_b[1] * a1;
-            bb.w += cp.it_b[0].get(l) * a0 + cp.it_b[1].get(l) * a1;
+        let dv = bb.v - ba.v;
+        let mut new_impulse = old_impulse;
+        for (j, impulse) in new_impulse.iter_mut().enumerate() {
+            let vt = dv.dot_fused(tangents[j]) + bb.w.dot_fused(f.rt_b[j].get(l))
+                - ba.w.dot_fused(f.rt_a[j].get(l));
+            *impulse -= f.tangent_mass[j][l] * vt;
         }
+        let limit = friction * normal_sum;
+        let length_squared = new_impulse[0] * new_impulse[0] + new_impulse[1] * new_impulse[1];
+        if length_squared > limit * limit {
+            let scale = limit * length_squared.rsqrt();
+            new_impulse = [new_impulse[0] * scale, new_impulse[1] * scale];
+        }
+        let [a0, a1] = [
+            new_impulse[0] - old_impulse[0],
+            new_impulse[1] - old_impulse[1],
+        ];
+        f.tangent_impulse[0][l] = new_impulse[0];
+        f.tangent_impulse[1][l] = new_impulse[1];
+        ba.v -= self.tangents_a[0].get(l) * a0 + self.tangents_a[1].get(l) * a1;
+        ba.w -= f.it_a[0].get(l) * a0 + f.it_a[1].get(l) * a1;
+        bb.v += self.tangents_b[0].get(l) * a0 + self.tangents_b[1].get(l) * a1;
+        bb.w += f.it_b[0].get(l) * a0 + f.it_b[1].get(l) * a1;
+
+        if count < 2 {
+            // One point has no lever arm: no twist friction (its impulse stays zero).
+            return;
+        }
+        let twist_limit = friction * twist_sum;
+        let spin = (bb.w - ba.w).dot_fused(self.normal.get(l));
+        let new_twist = (old_twist - f.twist_mass[l] * spin).clamp(-twist_limit, twist_limit);
+        let applied = new_twist - old_twist;
+        f.twist_impulse[l] = new_twist;
+        ba.w -= f.twist_a.get(l) * applied;
+        bb.w += f.twist_b.get(l) * applied;
     }
 
     /// Restitution, after the substeps, lane by lane: a point that approached faster than
@@ -356,8 +439,10 @@ impl<R: Real> ContactBlock<R> {
             let contact = &mut contacts[self.contact[l] as usize];
             for (p, cp) in contact.points_mut().iter_mut().zip(&self.points) {
                 p.normal_impulse = cp.normal_impulse[l];
-                p.tangent_impulse = [cp.tangent_impulse[0][l], cp.tangent_impulse[1][l]];
             }
+            let f = &self.friction_rows;
+            contact.friction_impulse = [f.tangent_impulse[0][l], f.tangent_impulse[1][l]];
+            contact.twist_impulse = f.twist_impulse[l];
         }
     }
 }

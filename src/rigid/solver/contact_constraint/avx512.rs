@@ -45,8 +45,10 @@
 //! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
 //! Σ r + 2³¹ < 2³⁴ cannot overflow.
 //!
-//! The friction clamp, which needs 1/√x, runs per lane in scalar code with the checked
-//! operators, in the few lanes where it applies.
+//! The friction rows are one set per lane (two tangents at the friction centre and a twist
+//! about the normal), after the lane's normal rows. The clamp of the tangent impulse to its
+//! disc, which needs 1/√x, runs per lane in scalar code with the checked operators, in the
+//! few lanes where it applies; the twist clamp is a min and a max.
 
 mod prepare;
 
@@ -56,9 +58,9 @@ use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
     _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
-    _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64, _mm512_max_epi64, _mm512_mul_epi32,
-    _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64,
-    _mm512_storeu_si512, _mm512_sub_epi64,
+    _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64, _mm512_max_epi64, _mm512_min_epi64,
+    _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
+    _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -127,10 +129,12 @@ pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverB
     unsafe { warm_start_block(block, bodies) }
 }
 
-/// The warm start kernel: per point, v_a −= n/m_a λ_n + t₁/m_a λ₁ + t₂/m_a λ₂, and so on
-/// for ω_a, v_b, ω_b, as in [`ContactBlock::warm_start`] (a point whose impulses are all
-/// zero adds zero, the same as skipping it). Returns false, having written nothing, when a
-/// value leaves the checked bound in a lane in use.
+/// The warm start kernel: per point, v_a −= λ_n n/m_a, ω_a −= λ_n I_a⁻¹(r_a × n), and the
+/// opposite on B; then per lane the friction impulses, v_a −= λ₁ t₁/m_a + λ₂ t₂/m_a,
+/// ω_a −= λ₁ I_a⁻¹(r_a × t₁) + λ₂ I_a⁻¹(r_a × t₂) + λ_twist I_a⁻¹n, and the opposite on B,
+/// as in [`ContactBlock::warm_start`] (zero impulses add zero, the same as skipping them).
+/// Returns false, having written nothing, when a value leaves the checked bound in a lane
+/// in use.
 ///
 /// # Safety
 /// The processor must have AVX-512F and AVX-512DQ.
@@ -146,15 +150,7 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
     let zero = _mm512_setzero_si512();
     let normal_a = load3(&block.normal_a);
     let normal_b = load3(&block.normal_b);
-    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
-    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
-    bad |= (out_of_bound3(normal_a)
-        | out_of_bound3(normal_b)
-        | out_of_bound3(tangents_a[0])
-        | out_of_bound3(tangents_a[1])
-        | out_of_bound3(tangents_b[0])
-        | out_of_bound3(tangents_b[1]))
-        & active;
+    bad |= (out_of_bound3(normal_a) | out_of_bound3(normal_b)) & active;
     // SAFETY: 64 readable bytes.
     let counts = unsafe { _mm512_loadu_si512(block.count.map(i64::from).as_ptr().cast()) };
     for (k, cp) in block.points.iter().enumerate() {
@@ -163,38 +159,56 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
             continue;
         }
         let n = select(in_use, load(&cp.normal_impulse), zero);
-        let t0 = select(in_use, load(&cp.tangent_impulse[0]), zero);
-        let t1 = select(in_use, load(&cp.tangent_impulse[1]), zero);
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
-        let it_a = [load3(&cp.it_a[0]), load3(&cp.it_a[1])];
-        let it_b = [load3(&cp.it_b[0]), load3(&cp.it_b[1])];
-        bad |= (out_of_bound(n) | out_of_bound(t0) | out_of_bound(t1)) & active;
-        bad |= (out_of_bound3(in_a)
-            | out_of_bound3(in_b)
-            | out_of_bound3(it_a[0])
-            | out_of_bound3(it_a[1])
-            | out_of_bound3(it_b[0])
-            | out_of_bound3(it_b[1]))
-            & in_use;
-        let push = |normal: [__m512i; 3], tangents: [[__m512i; 3]; 2]| {
-            add3(
-                add3(mul3(normal, n), mul3(tangents[0], t0)),
-                mul3(tangents[1], t1),
-            )
-        };
+        bad |= (out_of_bound(n) | out_of_bound3(in_a) | out_of_bound3(in_b)) & in_use;
         bad |= Side::exchange(
             (&mut side_a, &mut side_b),
             [
-                push(normal_a, tangents_a),
-                push(in_a, it_a),
-                push(normal_b, tangents_b),
-                push(in_b, it_b),
+                mul3(normal_a, n),
+                mul3(in_a, n),
+                mul3(normal_b, n),
+                mul3(in_b, n),
             ],
         ) & active;
         if bad != 0 {
             return false;
         }
     }
+    let f = &block.friction_rows;
+    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
+    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
+    let it_a = [load3(&f.it_a[0]), load3(&f.it_a[1])];
+    let it_b = [load3(&f.it_b[0]), load3(&f.it_b[1])];
+    let (twist_a, twist_b) = (load3(&f.twist_a), load3(&f.twist_b));
+    let t = [
+        select(active, load(&f.tangent_impulse[0]), zero),
+        select(active, load(&f.tangent_impulse[1]), zero),
+    ];
+    let twist = select(active, load(&f.twist_impulse), zero);
+    bad |= (out_of_bound3(tangents_a[0])
+        | out_of_bound3(tangents_a[1])
+        | out_of_bound3(tangents_b[0])
+        | out_of_bound3(tangents_b[1])
+        | out_of_bound3(it_a[0])
+        | out_of_bound3(it_a[1])
+        | out_of_bound3(it_b[0])
+        | out_of_bound3(it_b[1])
+        | out_of_bound3(twist_a)
+        | out_of_bound3(twist_b)
+        | out_of_bound(t[0])
+        | out_of_bound(t[1])
+        | out_of_bound(twist))
+        & active;
+    let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], t[0]), mul3(a[1], t[1]));
+    bad |= Side::exchange(
+        (&mut side_a, &mut side_b),
+        [
+            along(tangents_a),
+            add3(along(it_a), mul3(twist_a, twist)),
+            along(tangents_b),
+            add3(along(it_b), mul3(twist_b, twist)),
+        ],
+    ) & active;
     if bad != 0 {
         return false;
     }
@@ -630,38 +644,55 @@ unsafe fn solve_block(
         }
     }
 
-    // Friction.
+    // Friction: the lane's total normal impulse Λ = Σ λ_n,k and Σ λ_n,k d_k, then the two
+    // tangent rows and the twist row.
+    let f = &block.friction_rows;
+    // Lanes of one point have no twist row.
+    let twisting = points_in_use(1);
+    let mut normal_sum = zero;
+    let mut twist_sum = zero;
+    for (k, cp) in block.points.iter().enumerate() {
+        let in_use = points_in_use(k);
+        if in_use == 0 {
+            continue;
+        }
+        let impulse = select(in_use, normal_impulses[k], zero);
+        bad |= out_of_bound(impulse) & in_use;
+        normal_sum = add(normal_sum, impulse);
+        if twisting != 0 {
+            let arm = select(in_use, load(&cp.twist_arm), zero);
+            bad |= out_of_bound(arm) & in_use;
+            twist_sum = add(twist_sum, mul(impulse, arm));
+        }
+    }
     let tangents = [load3(&block.tangents[0]), load3(&block.tangents[1])];
     let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
     let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
     let friction = load(&block.friction);
-    bad |= (out_of_bound3(tangents[0])
-        | out_of_bound3(tangents[1])
-        | out_of_bound3(tangents_a[0])
-        | out_of_bound3(tangents_a[1])
-        | out_of_bound3(tangents_b[0])
-        | out_of_bound3(tangents_b[1])
-        | out_of_bound(friction))
-        & active;
-    let mut tangent_impulses = [[zero; 2]; 4];
-    for (k, cp) in block.points.iter().enumerate() {
-        let in_use = points_in_use(k);
-        let normal_impulse = normal_impulses[k];
-        let old = [load(&cp.tangent_impulse[0]), load(&cp.tangent_impulse[1])];
-        tangent_impulses[k] = old;
-        let pushing = _mm512_cmpneq_epi64_mask(normal_impulse, zero)
-            | _mm512_cmpneq_epi64_mask(old[0], zero)
-            | _mm512_cmpneq_epi64_mask(old[1], zero);
-        let in_use = in_use & pushing;
-        if in_use == 0 {
-            continue;
-        }
-        let rt_a = [load3(&cp.rt_a[0]), load3(&cp.rt_a[1])];
-        let rt_b = [load3(&cp.rt_b[0]), load3(&cp.rt_b[1])];
-        let it_a = [load3(&cp.it_a[0]), load3(&cp.it_a[1])];
-        let it_b = [load3(&cp.it_b[0]), load3(&cp.it_b[1])];
-        let tangent_mass = [load(&cp.tangent_mass[0]), load(&cp.tangent_mass[1])];
-        bad |= (out_of_bound3(rt_a[0])
+    let old = [load(&f.tangent_impulse[0]), load(&f.tangent_impulse[1])];
+    let old_twist = load(&f.twist_impulse);
+    let pushing = _mm512_cmpneq_epi64_mask(normal_sum, zero)
+        | _mm512_cmpneq_epi64_mask(old[0], zero)
+        | _mm512_cmpneq_epi64_mask(old[1], zero)
+        | _mm512_cmpneq_epi64_mask(old_twist, zero);
+    let in_use = active & pushing;
+    let mut tangent_impulses = old;
+    let mut twist_impulses = old_twist;
+    if in_use != 0 {
+        let rt_a = [load3(&f.rt_a[0]), load3(&f.rt_a[1])];
+        let rt_b = [load3(&f.rt_b[0]), load3(&f.rt_b[1])];
+        let it_a = [load3(&f.it_a[0]), load3(&f.it_a[1])];
+        let it_b = [load3(&f.it_b[0]), load3(&f.it_b[1])];
+        let (twist_a, twist_b) = (load3(&f.twist_a), load3(&f.twist_b));
+        let tangent_mass = [load(&f.tangent_mass[0]), load(&f.tangent_mass[1])];
+        let twist_mass = load(&f.twist_mass);
+        bad |= (out_of_bound3(tangents[0])
+            | out_of_bound3(tangents[1])
+            | out_of_bound3(tangents_a[0])
+            | out_of_bound3(tangents_a[1])
+            | out_of_bound3(tangents_b[0])
+            | out_of_bound3(tangents_b[1])
+            | out_of_bound3(rt_a[0])
             | out_of_bound3(rt_a[1])
             | out_of_bound3(rt_b[0])
             | out_of_bound3(rt_b[1])
@@ -669,10 +700,17 @@ unsafe fn solve_block(
             | out_of_bound3(it_a[1])
             | out_of_bound3(it_b[0])
             | out_of_bound3(it_b[1])
+            | out_of_bound3(twist_a)
+            | out_of_bound3(twist_b)
             | out_of_bound(tangent_mass[0])
             | out_of_bound(tangent_mass[1])
+            | out_of_bound(twist_mass)
+            | out_of_bound(friction)
+            | out_of_bound(normal_sum)
+            | out_of_bound(twist_sum)
             | out_of_bound(old[0])
-            | out_of_bound(old[1]))
+            | out_of_bound(old[1])
+            | out_of_bound(old_twist))
             & in_use;
         let dv = sub3(side_b.v, side_a.v);
         bad |= out_of_bound3(dv) & in_use;
@@ -685,7 +723,7 @@ unsafe fn solve_block(
             bad |= out_of_bound(vt) & in_use;
             new[j] = sub(old[j], mul(tangent_mass[j], vt));
         }
-        let limit = mul(friction, normal_impulse);
+        let limit = mul(friction, normal_sum);
         bad |= (out_of_bound(new[0]) | out_of_bound(new[1]) | out_of_bound(limit)) & in_use;
         if bad != 0 {
             return false;
@@ -710,13 +748,42 @@ unsafe fn solve_block(
                 along(it_b),
             ],
         ) & active;
-        if bad != 0 {
-            return false;
-        }
-        tangent_impulses[k] = [
+        tangent_impulses = [
             select(in_use, new[0], old[0]),
             select(in_use, new[1], old[1]),
         ];
+
+        let in_use = in_use & twisting;
+        if in_use != 0 {
+            let twist_limit = mul(friction, twist_sum);
+            let spin_rate = sub3(side_b.w, side_a.w);
+            bad |= (out_of_bound(twist_limit) | out_of_bound3(spin_rate)) & in_use;
+            let spin = dot3(spin_rate, normal);
+            bad |= out_of_bound(spin) & in_use;
+            let unclamped = sub(old_twist, mul(twist_mass, spin));
+            let new_twist = _mm512_min_epi64(
+                _mm512_max_epi64(unclamped, sub(zero, twist_limit)),
+                twist_limit,
+            );
+            let applied = select(in_use, sub(new_twist, old_twist), zero);
+            bad |= out_of_bound(applied) & in_use;
+            bad |= Side::exchange(
+                (&mut side_a, &mut side_b),
+                [
+                    [zero; 3],
+                    mul3(twist_a, applied),
+                    [zero; 3],
+                    mul3(twist_b, applied),
+                ],
+            ) & active;
+            if bad != 0 {
+                return false;
+            }
+            twist_impulses = select(in_use, new_twist, old_twist);
+        }
+    }
+    if bad != 0 {
+        return false;
     }
 
     for (k, cp) in block.points.iter_mut().enumerate() {
@@ -725,9 +792,11 @@ unsafe fn solve_block(
         }
         store(&mut cp.normal_impulse, normal_impulses[k]);
         store(&mut cp.max_normal_impulse, max_normal_impulses[k]);
-        store(&mut cp.tangent_impulse[0], tangent_impulses[k][0]);
-        store(&mut cp.tangent_impulse[1], tangent_impulses[k][1]);
     }
+    let f = &mut block.friction_rows;
+    store(&mut f.tangent_impulse[0], tangent_impulses[0]);
+    store(&mut f.tangent_impulse[1], tangent_impulses[1]);
+    store(&mut f.twist_impulse, twist_impulses);
     // SAFETY: `BodyLanes::new` checked every active lane's index.
     unsafe { lanes.scatter(&side_a, &side_b) };
     true

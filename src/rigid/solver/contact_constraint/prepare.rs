@@ -1,10 +1,12 @@
 //! Stage 1 of the solver for one block: each lane's contact data
 //! ([`ContactBlock::prepare_lane`]), then the products every iteration reuses
-//! ([`ContactBlock::prepare_products`]): r × n, I⁻¹(r × n), r × t, I⁻¹(r × t), the effective
-//! masses and the approach velocities.
+//! ([`ContactBlock::prepare_products`]): per point r × n, I⁻¹(r × n), the normal effective
+//! mass and the approach velocity; per contact, at the friction centre, r × t, I⁻¹(r × t),
+//! I⁻¹n and the tangent and twist effective masses.
 //!
-//! The products are the costly part (about a hundred multiplies per point); on I32F32 they
-//! go to the AVX-512 kernel when the processor has it, which gives the same bits.
+//! The products are the costly part (about forty multiplies per point and a hundred per
+//! contact); on I32F32 they go to the AVX-512 kernel when the processor has it, which gives
+//! the same bits.
 
 use super::ContactBlock;
 use crate::math::{Real, Vec3};
@@ -14,12 +16,15 @@ use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::Lanes3;
 
 /// The anchors of each point of each lane from the bodies' centres of mass,
-/// r_a = p − c_a and r_b = p − c_b (m): what [`ContactBlock::prepare_lane`] leaves for
+/// r_a = p − x_a and r_b = p − x_b (m), and those of each lane's friction centre c,
+/// c − x_a and c − x_b: what [`ContactBlock::prepare_lane`] leaves for
 /// [`ContactBlock::prepare_products`]. Points a lane does not use hold stale values, unread.
 #[derive(Clone, Debug)]
 pub(crate) struct ContactArms<R: Real> {
     pub r_a: [Lanes3<R>; MAX_MANIFOLD_POINTS],
     pub r_b: [Lanes3<R>; MAX_MANIFOLD_POINTS],
+    pub centre_a: Lanes3<R>,
+    pub centre_b: Lanes3<R>,
 }
 
 impl<R: Real> ContactArms<R> {
@@ -27,7 +32,33 @@ impl<R: Real> ContactArms<R> {
     pub const ZERO: Self = Self {
         r_a: [Lanes3::ZERO; MAX_MANIFOLD_POINTS],
         r_b: [Lanes3::ZERO; MAX_MANIFOLD_POINTS],
+        centre_a: Lanes3::ZERO,
+        centre_b: Lanes3::ZERO,
     };
+}
+
+/// The friction centre of a contact's points, their mean c = (Σ p_k)/N (m), and each
+/// point's distance from it, d_k = |p_k − c| (m). No points give the origin.
+fn friction_centre<R: Real>(
+    points: &[crate::rigid::contact::ContactPoint<R>],
+) -> (Vec3<R>, [R; MAX_MANIFOLD_POINTS]) {
+    let mut distances = [R::ZERO; MAX_MANIFOLD_POINTS];
+    let Some(first) = points.first() else {
+        return (Vec3::ZERO, distances);
+    };
+    if points.len() == 1 {
+        return (first.point, distances);
+    }
+    // Offsets from the first point keep the sum small wherever the contact is.
+    let mut offset_sum = Vec3::ZERO;
+    for p in &points[1..] {
+        offset_sum += p.point - first.point;
+    }
+    let centre = first.point + offset_sum / R::from_int(points.len() as i32);
+    for (d, p) in distances.iter_mut().zip(points) {
+        *d = (p.point - centre).length();
+    }
+    (centre, distances)
 }
 
 /// 1/k, or 0 when k is not positive (two bodies of infinite mass).
@@ -39,8 +70,9 @@ impl<R: Real> ContactBlock<R> {
     /// Takes the next free lane for the constraint of `contact` between solver bodies `a`
     /// and `b` whose centres of mass are at `centre_a`, `centre_b` (m): the bodies, the
     /// normal and its two tangents (t₁ = any unit vector ⟂ n, t₂ = n × t₁), the mixed
-    /// friction and restitution, the separations and carried impulses of the points, and
-    /// the points' anchors into `arms`. [`prepare_products`](Self::prepare_products)
+    /// friction and restitution, the separations, normal impulses and twist lever arms of
+    /// the points, the contact's carried friction impulses, and the anchors of the points
+    /// and of the friction centre into `arms`. [`prepare_products`](Self::prepare_products)
     /// completes the block. The block must not be full.
     #[allow(clippy::too_many_arguments)]
     pub fn prepare_lane(
@@ -58,15 +90,26 @@ impl<R: Real> ContactBlock<R> {
         self.len += 1;
         let n = contact.normal;
         let t0 = n.any_orthonormal();
+        let (centre, twist_arms) = friction_centre(contact.points());
         for (p, (cp, point)) in self.points.iter_mut().zip(contact.points()).enumerate() {
             arms.r_a[p].set(l, point.point - centre_a);
             arms.r_b[p].set(l, point.point - centre_b);
             cp.base_separation[l] = point.separation;
+            cp.twist_arm[l] = twist_arms[p];
             cp.normal_impulse[l] = point.normal_impulse;
-            cp.tangent_impulse[0][l] = point.tangent_impulse[0];
-            cp.tangent_impulse[1][l] = point.tangent_impulse[1];
             cp.max_normal_impulse[l] = R::ZERO;
         }
+        arms.centre_a.set(l, centre - centre_a);
+        arms.centre_b.set(l, centre - centre_b);
+        let f = &mut self.friction_rows;
+        f.tangent_impulse[0][l] = contact.friction_impulse[0];
+        f.tangent_impulse[1][l] = contact.friction_impulse[1];
+        // One point has no twist row ([`ContactBlock::solve`]), so nothing to carry.
+        f.twist_impulse[l] = if contact.count > 1 {
+            contact.twist_impulse
+        } else {
+            R::ZERO
+        };
         self.a[l] = a;
         self.b[l] = b;
         self.contact[l] = index;
@@ -84,11 +127,13 @@ impl<R: Real> ContactBlock<R> {
     /// anchors in `arms` and the solver bodies:
     ///
     /// * n/m_a, n/m_b, t/m_a, t/m_b (1/kg), the velocity change per unit impulse;
-    /// * per point, r × n and I⁻¹(r × n) on each side, and the same for both tangents;
-    /// * the effective masses 1/k (kg), k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × n))·(r_a × n)
-    ///   + (I_b⁻¹(r_b × n))·(r_b × n), and likewise along each tangent;
-    /// * the approach velocity v_n = (v_b − v_a)·n + ω_b·(r_b × n) − ω_a·(r_a × n) (m/s),
-    ///   for restitution.
+    /// * per point, r × n and I⁻¹(r × n) on each side, the effective mass 1/k (kg),
+    ///   k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × n))·(r_a × n) + (I_b⁻¹(r_b × n))·(r_b × n), and the
+    ///   approach velocity v_n = (v_b − v_a)·n + ω_b·(r_b × n) − ω_a·(r_a × n) (m/s), for
+    ///   restitution;
+    /// * per lane, with the anchors of the friction centre, r × t and I⁻¹(r × t) on each
+    ///   side for both tangents and their effective masses (kg) as above, I_a⁻¹n, I_b⁻¹n and
+    ///   the twist effective mass 1/k_twist (kg·m²), k_twist = (I_a⁻¹n)·n + (I_b⁻¹n)·n.
     ///
     /// On I32F32 the AVX-512 kernel computes the products when the processor has it and
     /// every value lies within its bound; otherwise, and on other formats, lane by lane.
@@ -115,10 +160,8 @@ impl<R: Real> ContactBlock<R> {
             let m_sum = ba.inv_mass + bb.inv_mass;
             let count = usize::from(self.count[l]);
             for (p, cp) in self.points.iter_mut().enumerate().take(count) {
-                let r_a = arms.r_a[p].get(l);
-                let r_b = arms.r_b[p].get(l);
-                let rn_a = r_a.cross(n);
-                let rn_b = r_b.cross(n);
+                let rn_a = arms.r_a[p].get(l).cross(n);
+                let rn_b = arms.r_b[p].get(l).cross(n);
                 let in_a = ba.inv_inertia * rn_a;
                 let in_b = bb.inv_inertia * rn_b;
                 cp.rn_a.set(l, rn_a);
@@ -126,19 +169,26 @@ impl<R: Real> ContactBlock<R> {
                 cp.in_a.set(l, in_a);
                 cp.in_b.set(l, in_b);
                 cp.normal_mass[l] = m_sum + in_a.dot(rn_a) + in_b.dot(rn_b);
-                for (j, &t) in tangents.iter().enumerate() {
-                    let rt_a = r_a.cross(t);
-                    let rt_b = r_b.cross(t);
-                    let it_a = ba.inv_inertia * rt_a;
-                    let it_b = bb.inv_inertia * rt_b;
-                    cp.rt_a[j].set(l, rt_a);
-                    cp.rt_b[j].set(l, rt_b);
-                    cp.it_a[j].set(l, it_a);
-                    cp.it_b[j].set(l, it_b);
-                    cp.tangent_mass[j][l] = m_sum + it_a.dot(rt_a) + it_b.dot(rt_b);
-                }
                 cp.relative_velocity[l] = (bb.v - ba.v).dot(n) + bb.w.dot(rn_b) - ba.w.dot(rn_a);
             }
+            let f = &mut self.friction_rows;
+            let (r_a, r_b) = (arms.centre_a.get(l), arms.centre_b.get(l));
+            for (j, &t) in tangents.iter().enumerate() {
+                let rt_a = r_a.cross(t);
+                let rt_b = r_b.cross(t);
+                let it_a = ba.inv_inertia * rt_a;
+                let it_b = bb.inv_inertia * rt_b;
+                f.rt_a[j].set(l, rt_a);
+                f.rt_b[j].set(l, rt_b);
+                f.it_a[j].set(l, it_a);
+                f.it_b[j].set(l, it_b);
+                f.tangent_mass[j][l] = m_sum + it_a.dot(rt_a) + it_b.dot(rt_b);
+            }
+            let twist_a = ba.inv_inertia * n;
+            let twist_b = bb.inv_inertia * n;
+            f.twist_a.set(l, twist_a);
+            f.twist_b.set(l, twist_b);
+            f.twist_mass[l] = twist_a.dot(n) + twist_b.dot(n);
             self.normal_a.set(l, n * ba.inv_mass);
             self.normal_b.set(l, n * bb.inv_mass);
             for (j, t) in tangents.into_iter().enumerate() {
@@ -149,16 +199,18 @@ impl<R: Real> ContactBlock<R> {
     }
 
     /// Turns the k left in the mass fields into the effective masses 1/k (0 for k ≤ 0):
-    /// three divisions per point, which stay scalar.
+    /// one division per point and three per lane, which stay scalar.
     pub(super) fn invert_effective_masses(&mut self) {
         for l in 0..self.len {
             let count = usize::from(self.count[l]);
             for cp in self.points.iter_mut().take(count) {
                 cp.normal_mass[l] = inverse_or_zero(cp.normal_mass[l]);
-                for mass in &mut cp.tangent_mass {
-                    mass[l] = inverse_or_zero(mass[l]);
-                }
             }
+            let f = &mut self.friction_rows;
+            for mass in &mut f.tangent_mass {
+                mass[l] = inverse_or_zero(mass[l]);
+            }
+            f.twist_mass[l] = inverse_or_zero(f.twist_mass[l]);
         }
     }
 }

@@ -107,9 +107,10 @@ fn lanes_of(
                 separation: value(rng, 0.05),
                 id: 0,
                 normal_impulse: rng.range(Fx::ZERO, Fx::from_f64(carried)),
-                tangent_impulse: [value(rng, carried / 4.0), value(rng, carried / 4.0)],
             };
         }
+        // One contact in three is new: no friction impulse to warm start with.
+        let carried = if rng.below(3) == 0 { 0.0 } else { impulse };
         let contact = Contact {
             key: ContactKey {
                 body_a: a,
@@ -120,6 +121,8 @@ fn lanes_of(
             normal: rng.unit_vector(),
             count: count as u8,
             points,
+            friction_impulse: [value(rng, carried / 2.0), value(rng, carried / 2.0)],
+            twist_impulse: value(rng, carried / 4.0),
         };
         block.prepare_lane(
             &contact,
@@ -156,16 +159,19 @@ fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
     }
     for p in &block.points {
         for l in 0..LANES {
-            bits.extend(
-                [
-                    p.normal_impulse[l],
-                    p.max_normal_impulse[l],
-                    p.tangent_impulse[0][l],
-                    p.tangent_impulse[1][l],
-                ]
-                .map(Fx::to_bits),
-            );
+            bits.extend([p.normal_impulse[l], p.max_normal_impulse[l]].map(Fx::to_bits));
         }
+    }
+    let f = &block.friction_rows;
+    for l in 0..LANES {
+        bits.extend(
+            [
+                f.tangent_impulse[0][l],
+                f.tangent_impulse[1][l],
+                f.twist_impulse[l],
+            ]
+            .map(Fx::to_bits),
+        );
     }
     bits
 }

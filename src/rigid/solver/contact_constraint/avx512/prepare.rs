@@ -8,11 +8,13 @@
 //!
 //! The scalar form rounds every product on its own (the checked `*`: to nearest, ties
 //! toward +∞) and adds with saturation: r × n component by component, I⁻¹v as
-//! Σⱼ Mᵢⱼvⱼ, a·b as Σ aᵢbᵢ. Every value the kernel loads (anchors, normal, tangents, the
-//! bodies' inverse masses, inverse inertias, velocities) and every value that enters a
-//! product (r × n, r × t, I⁻¹(r × n), I⁻¹(r × t), v_b − v_a) is checked to lie in
+//! Σⱼ Mᵢⱼvⱼ, a·b as Σ aᵢbᵢ. Every value the kernel loads (anchors of the points and of the
+//! friction centre, normal, tangents, the bodies' inverse masses, inverse inertias,
+//! velocities) and every value that enters a product (r × n, r × t, I⁻¹(r × n),
+//! I⁻¹(r × t), I⁻¹n, v_b − v_a) is checked to lie in
 //! [−2⁴⁶, 2⁴⁶) as raw bits. Then each rounded product is below 2⁶⁰ in magnitude, a sum of
-//! three below 2⁶², k = 1/m_a + 1/m_b + two such sums below 2⁶³, and the approach velocity,
+//! three below 2⁶², k = 1/m_a + 1/m_b + two such sums below 2⁶³ (k_twist is two such
+//! sums), and the approach velocity,
 //! whose first two sums are checked against 2⁴⁶ before the third is subtracted, too. So the
 //! scalar form saturates nowhere, and the kernel's wrapping `i64` arithmetic, with the
 //! products of [`mul`], gives its exact results. When a check fails in a point in use, the
@@ -151,22 +153,6 @@ unsafe fn prepare_block(
         let approach = add(dot(dv, normal), dot(w_b, rn_b));
         bad |= out_of_bound(approach);
         let approach = sub(approach, dot(w_a, rn_a));
-        let mut rt_a = [[zero; 3]; 2];
-        let mut rt_b = [[zero; 3]; 2];
-        let mut it_a = [[zero; 3]; 2];
-        let mut it_b = [[zero; 3]; 2];
-        let mut kt = [zero; 2];
-        for j in 0..2 {
-            rt_a[j] = cross(r_a, tangents[j]);
-            rt_b[j] = cross(r_b, tangents[j]);
-            it_a[j] = mat_vec(inertia_a, rt_a[j]);
-            it_b[j] = mat_vec(inertia_b, rt_b[j]);
-            bad |= out_of_bound3(rt_a[j])
-                | out_of_bound3(rt_b[j])
-                | out_of_bound3(it_a[j])
-                | out_of_bound3(it_b[j]);
-            kt[j] = add(add(m_sum, dot(it_a[j], rt_a[j])), dot(it_b[j], rt_b[j]));
-        }
         if bad & in_use != 0 {
             return false;
         }
@@ -176,14 +162,46 @@ unsafe fn prepare_block(
         store3(&mut cp.in_b, in_use, in_b);
         store(&mut cp.normal_mass, in_use, k);
         store(&mut cp.relative_velocity, in_use, approach);
-        for j in 0..2 {
-            store3(&mut cp.rt_a[j], in_use, rt_a[j]);
-            store3(&mut cp.rt_b[j], in_use, rt_b[j]);
-            store3(&mut cp.it_a[j], in_use, it_a[j]);
-            store3(&mut cp.it_b[j], in_use, it_b[j]);
-            store(&mut cp.tangent_mass[j], in_use, kt[j]);
-        }
     }
+
+    // Friction, at the centre of each lane's points.
+    let r_a = load3(&arms.centre_a);
+    let r_b = load3(&arms.centre_b);
+    let mut bad = out_of_bound3(r_a) | out_of_bound3(r_b);
+    let mut rt_a = [[zero; 3]; 2];
+    let mut rt_b = [[zero; 3]; 2];
+    let mut it_a = [[zero; 3]; 2];
+    let mut it_b = [[zero; 3]; 2];
+    let mut kt = [zero; 2];
+    for j in 0..2 {
+        rt_a[j] = cross(r_a, tangents[j]);
+        rt_b[j] = cross(r_b, tangents[j]);
+        it_a[j] = mat_vec(inertia_a, rt_a[j]);
+        it_b[j] = mat_vec(inertia_b, rt_b[j]);
+        bad |= out_of_bound3(rt_a[j])
+            | out_of_bound3(rt_b[j])
+            | out_of_bound3(it_a[j])
+            | out_of_bound3(it_b[j]);
+        kt[j] = add(add(m_sum, dot(it_a[j], rt_a[j])), dot(it_b[j], rt_b[j]));
+    }
+    let twist_a = mat_vec(inertia_a, normal);
+    let twist_b = mat_vec(inertia_b, normal);
+    bad |= out_of_bound3(twist_a) | out_of_bound3(twist_b);
+    let k_twist = add(dot(twist_a, normal), dot(twist_b, normal));
+    if bad & active != 0 {
+        return false;
+    }
+    let f = &mut block.friction_rows;
+    for j in 0..2 {
+        store3(&mut f.rt_a[j], active, rt_a[j]);
+        store3(&mut f.rt_b[j], active, rt_b[j]);
+        store3(&mut f.it_a[j], active, it_a[j]);
+        store3(&mut f.it_b[j], active, it_b[j]);
+        store(&mut f.tangent_mass[j], active, kt[j]);
+    }
+    store3(&mut f.twist_a, active, twist_a);
+    store3(&mut f.twist_b, active, twist_b);
+    store(&mut f.twist_mass, active, k_twist);
     store3(&mut block.normal_a, active, mul3(normal, inv_mass_a));
     store3(&mut block.normal_b, active, mul3(normal, inv_mass_b));
     for (j, tangent) in tangents.into_iter().enumerate() {
