@@ -139,10 +139,44 @@ fn unknown_field() {
 }
 
 #[test]
-fn joints_section_is_not_simulated_by_this_build() {
+fn joint_errors_name_the_field() {
+    let bodies = "rigid: (bodies: [(kind: Static, shape: Sphere(radius: 0.1)), (shape: Sphere(radius: 0.5), position: (x: 1.0, y: 0.0, z: 0.0))])";
+    let with = |joints: &str| format!("(name: \"x\", {bodies}, joints: (list: [{joints}]))");
     assert_scene_rejected(
-        b"(name: \"x\", joints: [])",
-        &["this build of fixstep does not simulate joints"],
+        b"(name: \"x\", joints: (list: []))",
+        &["joints", "no `rigid` section"],
+    );
+    assert_scene_rejected(
+        with("(kind: Ball, bodies: (0, 7), anchor: (x: 0.0, y: 0.0, z: 0.0))").as_bytes(),
+        &[
+            "joints.list[0].bodies.1",
+            "names body 7, but the scene has 2 rigid bodies",
+        ],
+    );
+    assert_scene_rejected(
+        with("(kind: Ball, bodies: (1, 1), anchor: (x: 0.0, y: 0.0, z: 0.0))").as_bytes(),
+        &["joints.list[0].bodies", "joins body 1 to itself"],
+    );
+    assert_scene_rejected(
+        with("(kind: Hinge(limits: (lower: 1.0, upper: -1.0)), bodies: (0, 1), anchor: (x: 0.0, y: 0.0, z: 0.0))").as_bytes(),
+        &["joints.list[0].kind.Hinge.limits.upper", "must be 1 to"],
+    );
+    assert_scene_rejected(
+        with("(kind: Slider(), bodies: (0, 1), anchor: (x: 0.0, y: 0.0, z: 0.0), axis: (x: 0.0, y: 2.0, z: 0.0))").as_bytes(),
+        &["joints.list[0].axis", "must have length 1"],
+    );
+    assert_scene_rejected(
+        with("(kind: Rope(max_length: 0.0), bodies: (0, 1), anchor: (x: 0.0, y: 0.0, z: 0.0))")
+            .as_bytes(),
+        &["joints.list[0].kind.Rope.max_length", "must be 0.001 to"],
+    );
+    assert_scene_rejected(
+        format!("(name: \"x\", {bodies}, joints: (list: [], iterations: 0))").as_bytes(),
+        &["joints.iterations", "must be 1 to 8"],
+    );
+    assert_scene_rejected(
+        with("(kind: Ball, bodies: (0, 1), anchor: (x: 0.0, y: 0.0, z: 0.0), grid: (count: (3, 1, 1), stride_b: (1, 0, 0)))").as_bytes(),
+        &["joints.list[0] (copy (1, 0, 0)).bodies.1", "names body 2"],
     );
 }
 
@@ -194,4 +228,13 @@ fn a_directory() {
 fn a_missing_file() {
     let missing = TempPath::new("missing.ron");
     fixstep(&["run", missing.str()]).assert_error(&[missing.str(), "cannot read"]);
+}
+
+#[test]
+fn a_breaking_joint_is_reported_on_stderr() {
+    let text = b"(name: \"breaks\", ticks: 3, rigid: (bodies: [(kind: Static, shape: Sphere(radius: 0.1)), (shape: Box(half_extents: (x: 0.25, y: 0.25, z: 0.25)), position: (x: 0.0, y: -0.25, z: 0.0), density: 800.0)]), joints: (list: [(kind: Ball, bodies: (0, 1), anchor: (x: 0.0, y: 0.0, z: 0.0), break_force: 600.0)]))";
+    let file = TempPath::with_bytes("breaks.ron", text);
+    let out = fixstep(&["run", file.str()]);
+    assert_eq!(out.code, 0, "{out:?}");
+    assert!(out.stderr.contains("tick 1: joint 0v0 broke ("), "{out:?}");
 }

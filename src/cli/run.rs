@@ -11,7 +11,7 @@ use super::progress::Progress;
 use super::scene_arg::resolve_scene;
 use super::status::Status;
 use super::timing_table::timing_table;
-use crate::math::Fx;
+use crate::math::{Fx, Real};
 use crate::replay::{AtomicFile, DEFAULT_CHECKSUM_EVERY, InputFeed, Recorder};
 use crate::scene::Scene;
 use crate::world::checksum::hex;
@@ -158,6 +158,7 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     for done in 1..=ticks {
         let tick = runner.world().tick();
         runner.step(feed.at(tick));
+        report_broken_joints(runner.world());
         if let Some(metrics) = &mut metrics {
             metrics.tick(runner.world())?;
         }
@@ -207,4 +208,19 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     }
     print_line(&format!("checksum: {}", hex(checksum)))?;
     Ok(Status::Ok)
+}
+
+/// One line on standard error per joint that broke during the tick just run.
+fn report_broken_joints(world: &World<Fx>) {
+    if let Some(rigid) = world.rigid() {
+        for event in rigid.joint_events() {
+            eprint_line(&format!(
+                "tick {}: joint {} broke ({:.1} N, {:.1} N·m)",
+                world.tick(),
+                event.joint,
+                event.force.to_f64(),
+                event.torque.to_f64()
+            ));
+        }
+    }
 }

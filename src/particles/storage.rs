@@ -223,7 +223,7 @@ impl<R: Real> ParticleStorage<R> {
                 None => 0..0,
             },
             Target::ParticleGroup(_) => 0..self.slot_count(),
-            Target::Body(_) | Target::SoftAttachment(_) => 0..0,
+            Target::Body(_) | Target::SoftAttachment(_) | Target::Joint(_) => 0..0,
         }
     }
 
@@ -235,7 +235,7 @@ impl<R: Real> ParticleStorage<R> {
             && match target {
                 Target::Particle(handle) => a.generations[i] == handle.generation,
                 Target::ParticleGroup(group) => a.groups[i] == group,
-                Target::Body(_) | Target::SoftAttachment(_) => false,
+                Target::Body(_) | Target::SoftAttachment(_) | Target::Joint(_) => false,
             }
     }
 

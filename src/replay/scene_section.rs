@@ -6,8 +6,9 @@
 //! only when the scene has one, by its *additions*: a `u64` count and that many
 //! [`Addition`]s, each a `u32` variant index and the subsystem's description, in variant
 //! order with no repeats. A scene with no additions ends after `script`. Adding a variant
-//! later (joints, soft bodies) changes nothing for existing files, and each scene
-//! has exactly one encoding: readers reject an empty or unordered list of additions.
+//! later (fluids, soft bodies, joints were added so) changes nothing for existing files,
+//! and each scene has exactly one encoding: readers reject an empty or unordered list of
+//! additions.
 
 use serde::{Deserialize, Serialize};
 
@@ -15,7 +16,7 @@ use crate::codec::{self, CodecError};
 use crate::fluid::FluidDesc;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
-use crate::rigid::RigidDesc;
+use crate::rigid::{JointsDesc, RigidDesc};
 use crate::scene::Scene;
 use crate::soft::SoftDesc;
 use crate::world::TickInput;
@@ -58,6 +59,7 @@ enum Addition<R: Real> {
     Rigid(RigidDesc<R>),
     Fluid(FluidDesc<R>),
     Soft(SoftDesc<R>),
+    Joints(JointsDesc<R>),
 }
 
 impl<R: Real> Addition<R> {
@@ -66,6 +68,7 @@ impl<R: Real> Addition<R> {
             Self::Rigid(_) => 0,
             Self::Fluid(_) => 1,
             Self::Soft(_) => 2,
+            Self::Joints(_) => 3,
         }
     }
 }
@@ -93,6 +96,9 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     if let Some(soft) = &scene.soft {
         additions.push(Addition::Soft(soft.clone()));
     }
+    if let Some(joints) = &scene.joints {
+        additions.push(Addition::Joints(joints.clone()));
+    }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
     }
@@ -116,6 +122,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         rigid: None,
         fluid: None,
         soft: None,
+        joints: None,
         script: base.script,
     };
     if used == bytes.len() {
@@ -147,6 +154,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
             Addition::Rigid(rigid) => scene.rigid = Some(rigid),
             Addition::Fluid(fluid) => scene.fluid = Some(fluid),
             Addition::Soft(soft) => scene.soft = Some(soft),
+            Addition::Joints(joints) => scene.joints = Some(joints),
         }
     }
     Ok(scene)

@@ -11,7 +11,7 @@ use crate::scene::SceneError;
 /// The largest coordinate, size or speed a scene may use (m, m/s): far inside the range of
 /// every fixed-point format, so that products such as a speed times a size cannot
 /// saturate.
-const MAX_MAGNITUDE: i32 = 100_000;
+pub(crate) const MAX_MAGNITUDE: i32 = 100_000;
 
 impl<R: Real> RigidSystem<R> {
     /// Checks `desc` and builds the system; the error names the offending field (relative
@@ -111,7 +111,7 @@ impl<R: Real> RigidSystem<R> {
             }
             previous = Some(c.key);
         }
-        Ok(())
+        self.validate_joints()
     }
 }
 

@@ -7,6 +7,7 @@
 //!    box directly. When more than [`MAX_PAIRS`](super::broadphase::MAX_PAIRS) boxes overlap
 //!    (bodies piled on one spot), the step finds no new contacts and counts one saturation,
 //!    so the run warns instead of running out of memory.
+//!    Pairs of bodies joined by a joint that does not let them collide are dropped.
 //! 3. The narrowphase computes each pair's manifold (part by part for compounds); each
 //!    point takes the impulses of the point with the same feature id in last step's contact
 //!    of the same key.
@@ -60,6 +61,17 @@ impl<R: Real> RigidSystem<R> {
         // The broadphase's pairs are in order; the planes' pairs join them here, so that
         // the contacts below come out in key order (one run for the sort to find).
         scratch.pairs.sort();
+
+        if !scratch.joint_filter_valid {
+            scratch.joint_filter = self.joints.non_colliding_pairs();
+            scratch.joint_filter_valid = true;
+        }
+        if !scratch.joint_filter.is_empty() {
+            let filter = &scratch.joint_filter;
+            scratch
+                .pairs
+                .retain(|pair| filter.binary_search(pair).is_err());
+        }
 
         let old = core::mem::take(&mut self.contacts);
         let bodies = &self.bodies;

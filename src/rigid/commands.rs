@@ -1,26 +1,31 @@
 //! The command methods the world calls while applying a tick's inputs to rigid bodies.
 //!
 //! Each returns whether its target existed: `false` for a stale handle or a target that is
-//! not a body. A command that acts on a body wakes its island. Forces and impulses move
-//! only dynamic bodies; a static body accepts them and does not move.
+//! not a body or a joint. A command that acts on a body or a joint wakes its island. Forces
+//! and impulses move only dynamic bodies; a static body accepts them and does not move.
 
 use super::desc::BodyKind;
+use super::joints::desc::{JointKind, Motor};
 use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
 use crate::world::input::{Command, Target};
 
 impl<R: Real> RigidSystem<R> {
-    /// Applies a world command aimed at a rigid body; false when its target does not exist
-    /// or the command is not about bodies.
+    /// Applies a world command aimed at a rigid body or a joint; false when its target does
+    /// not exist or the command does not act on it.
     pub fn apply_command(&mut self, command: &Command<R>) -> bool {
         let target = match command {
             Command::ApplyForce { target, .. }
             | Command::ApplyImpulse { target, .. }
             | Command::SetVelocity { target, .. }
             | Command::Remove { target }
-            | Command::MoveKinematic { target, .. } => *target,
+            | Command::MoveKinematic { target, .. }
+            | Command::SetMotor { target, .. } => *target,
             _ => return false,
         };
+        if let Target::Joint(handle) = target {
+            return self.apply_joint_command(handle, command);
+        }
         let Target::Body(handle) = target else {
             return false;
         };
@@ -33,9 +38,42 @@ impl<R: Real> RigidSystem<R> {
             Command::SetVelocity { velocity, .. } => self.set_velocity(i, velocity),
             Command::Remove { .. } => self.remove(i),
             Command::MoveKinematic { position, .. } => self.move_kinematic(i, position),
-            _ => {}
+            _ => return false,
         }
         true
+    }
+
+    /// A command aimed at joint `handle`: `Remove` removes it, `SetMotor` sets the motor of
+    /// a hinge or slider; false for a stale handle or another command or kind.
+    fn apply_joint_command(&mut self, handle: crate::world::Handle, command: &Command<R>) -> bool {
+        let Some(i) = self.joints.slot(handle) else {
+            return false;
+        };
+        match *command {
+            Command::Remove { .. } => {
+                self.remove_joint(i);
+                true
+            }
+            Command::SetMotor {
+                speed, max_force, ..
+            } => {
+                let motor = (max_force > R::ZERO).then_some(Motor { speed, max_force });
+                match &mut self.joints.kind[i] {
+                    JointKind::Hinge { motor: m, .. } | JointKind::Slider { motor: m, .. } => {
+                        *m = motor;
+                    }
+                    _ => return false,
+                }
+                let (a, b) = (
+                    self.joints.body_a[i] as usize,
+                    self.joints.body_b[i] as usize,
+                );
+                self.wake_body(a);
+                self.wake_body(b);
+                true
+            }
+            _ => false,
+        }
     }
 
     /// Adds force F (N) at world point p (m), or at the centre of mass when `point` is
@@ -85,12 +123,21 @@ impl<R: Real> RigidSystem<R> {
         self.wake_touching(i);
     }
 
-    /// Removes the body: its contacts go, and the islands it touched wake.
+    /// Removes the body: its contacts and joints go, and the islands it touched or was
+    /// jointed to wake.
     fn remove(&mut self, i: usize) {
         self.wake_touching(i);
         self.wake_body(i);
-        self.bodies.remove(i);
         let slot = i as u32;
+        let attached: Vec<usize> = self
+            .joints
+            .live()
+            .filter(|&j| self.joints.body_a[j] == slot || self.joints.body_b[j] == slot)
+            .collect();
+        for j in attached {
+            self.remove_joint(j);
+        }
+        self.bodies.remove(i);
         self.contacts
             .retain(|c| c.key.body_a != slot && c.key.body_b != slot);
         self.scratch.cache_valid = false;

@@ -147,6 +147,24 @@ pub struct RigidDesc<R: Real = Fx> {
     pub solver: SolverSettings<R>,
 }
 
+impl<R: Real> RigidDesc<R> {
+    /// How many bodies the description creates, lattice copies counted: the index the next
+    /// body would get.
+    pub fn body_count(&self) -> u32 {
+        self.bodies
+            .iter()
+            .map(|b| {
+                b.grid.map_or(1, |g| {
+                    g.count
+                        .0
+                        .saturating_mul(g.count.1)
+                        .saturating_mul(g.count.2)
+                })
+            })
+            .fold(0, u32::saturating_add)
+    }
+}
+
 /// Solver settings. The defaults are Box2D v3's, but for a stiffer contact.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "", deny_unknown_fields)]

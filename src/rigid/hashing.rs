@@ -19,12 +19,84 @@
 //! Shapes do not change during a run and are part of the scene, which replays check by
 //! its own hash; they are not hashed here.
 
+use super::joints::desc::{JointKind, Limits, Motor, Spring};
 use super::system::RigidSystem;
 use crate::math::{Mat3, Quat, Real, StateHasher};
 use crate::world::Handle;
 
 fn write_flag(h: &mut StateHasher, flag: bool) {
     h.write_u8(u8::from(flag));
+}
+
+fn write_option<T: Copy>(
+    h: &mut StateHasher,
+    value: Option<T>,
+    write: impl Fn(&mut StateHasher, T),
+) {
+    match value {
+        None => h.write_u8(0),
+        Some(v) => {
+            h.write_u8(1);
+            write(h, v);
+        }
+    }
+}
+
+/// A joint kind: its code, then its parameters in declaration order.
+fn write_kind<R: Real>(h: &mut StateHasher, kind: &JointKind<R>) {
+    let limits = |h: &mut StateHasher, l: Limits<R>| {
+        h.write_real(l.lower);
+        h.write_real(l.upper);
+    };
+    let motor = |h: &mut StateHasher, m: Motor<R>| {
+        h.write_real(m.speed);
+        h.write_real(m.max_force);
+    };
+    let spring = |h: &mut StateHasher, s: Spring<R>| {
+        h.write_real(s.hertz);
+        h.write_real(s.damping_ratio);
+    };
+    let real = |h: &mut StateHasher, v: R| h.write_real(v);
+    h.write_u8(kind.code());
+    match *kind {
+        JointKind::Ball | JointKind::Fixed => {}
+        JointKind::ConeTwist {
+            swing,
+            twist_lower,
+            twist_upper,
+            friction,
+        } => {
+            h.write_real(swing);
+            h.write_real(twist_lower);
+            h.write_real(twist_upper);
+            h.write_real(friction);
+        }
+        JointKind::Hinge {
+            limits: l,
+            motor: m,
+            spring: s,
+        } => {
+            write_option(h, l, limits);
+            write_option(h, m, motor);
+            write_option(h, s, spring);
+        }
+        JointKind::Slider {
+            limits: l,
+            motor: m,
+        } => {
+            write_option(h, l, limits);
+            write_option(h, m, motor);
+        }
+        JointKind::Rod { length } => write_option(h, length, real),
+        JointKind::Rope { max_length } => write_option(h, max_length, real),
+        JointKind::Spring {
+            rest_length,
+            spring: s,
+        } => {
+            write_option(h, rest_length, real);
+            spring(h, s);
+        }
+    }
 }
 
 fn write_quat<R: Real>(h: &mut StateHasher, q: Quat<R>) {
@@ -78,6 +150,40 @@ impl<R: Real> RigidSystem<R> {
             h.write_real(c.friction_impulse[0]);
             h.write_real(c.friction_impulse[1]);
             h.write_real(c.twist_impulse);
+        }
+
+        if !self.joints.is_empty() {
+            self.hash_joints(h);
+        }
+    }
+
+    /// Item 4 of the [hash order](self).
+    fn hash_joints(&self, h: &mut StateHasher) {
+        let j = &self.joints;
+        h.write_real(j.hertz);
+        h.write_real(j.damping_ratio);
+        h.write_u32(j.iterations);
+        h.write_len(j.len());
+        for i in 0..j.len() {
+            h.write_u32(j.generation[i]);
+            write_flag(h, j.alive[i]);
+            if !j.alive[i] {
+                continue;
+            }
+            write_kind(h, &j.kind[i]);
+            h.write_u32(j.body_a[i]);
+            h.write_u32(j.body_b[i]);
+            for frame in [&j.frame_a[i], &j.frame_b[i]] {
+                h.write_vec3(frame.origin);
+                write_quat(h, frame.rotation);
+            }
+            h.write_real(j.length[i]);
+            write_flag(h, j.collide[i]);
+            write_option(h, j.break_force[i], |h, v| h.write_real(v));
+            write_option(h, j.break_torque[i], |h, v| h.write_real(v));
+            for &impulse in &j.impulses[i] {
+                h.write_real(impulse);
+            }
         }
     }
 

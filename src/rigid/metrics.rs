@@ -21,6 +21,10 @@ pub struct RigidMetrics {
     pub awake_bodies: u64,
     /// Dynamic bodies asleep.
     pub sleeping_bodies: u64,
+    /// Live joints.
+    pub joints: u64,
+    /// The largest [`joint_error`](RigidSystem::joint_error), m.
+    pub max_joint_error: f64, // ok-det: reporting
 }
 
 impl<R: Real> RigidSystem<R> {
@@ -56,6 +60,8 @@ impl<R: Real> RigidSystem<R> {
                 m.max_penetration = m.max_penetration.max(-p.separation.to_f64());
             }
         }
+        m.joints = self.joint_count() as u64;
+        m.max_joint_error = self.max_joint_error().to_f64();
         m
     }
 }

@@ -16,6 +16,8 @@
 //! [`aabb`] bounding boxes · [`manifold`] contact manifolds · [`broadphase`] pairs ·
 //! [`narrowphase`] manifolds per shape pair.
 //!
+//! Joints: [`joints`] kinds, storage, breaking and queries; their rows live in the solver.
+//!
 //! Dynamics: [`collide`] stage 1 · [`contact`] persistent contacts · [`sleep`] islands,
 //! waking and sleeping · [`solve`] stage 3 · [`solver`] the soft-step sequential-impulse
 //! solver · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with
@@ -24,13 +26,14 @@
 pub mod aabb;
 pub(crate) mod bodies;
 pub mod broadphase;
-mod build;
+pub(crate) mod build;
 mod collide;
 mod commands;
 pub(crate) mod contact;
 pub mod desc;
 pub mod gyroscopic;
 mod hashing;
+pub mod joints;
 pub mod manifold;
 pub mod mass;
 pub mod material;
@@ -46,6 +49,7 @@ pub mod transform;
 
 pub use aabb::Aabb;
 pub use desc::{BodyDesc, BodyKind, Grid, RigidDesc, SolverSettings};
+pub use joints::{JointDesc, JointEvent, JointGrid, JointKind, JointsDesc, Limits, Motor, Spring};
 pub use manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
 pub use mass::MassProperties;
 pub use material::Material;

@@ -1,16 +1,18 @@
 //! Islands and sleeping.
 //!
-//! An island is a set of dynamic bodies linked by touching contacts (static and kinematic
-//! bodies do not link islands). A body is *slow* while |v| ≤ the linear sleep speed and
+//! An island is a set of dynamic bodies linked by touching contacts and by joints (static
+//! and kinematic bodies do not link islands). A body is *slow* while |v| ≤ the linear sleep speed and
 //! |ω| ≤ the angular sleep speed; its sleep time counts the seconds it has been slow. After
 //! each step, an island whose bodies have all been slow for at least `time_to_sleep` goes
 //! to sleep: velocities are zeroed, and its bodies leave the broadphase's active set and
 //! the solver, so a resting island costs nothing until something wakes it.
 //!
-//! An island wakes as a whole when a moving body touches one of its bodies, when a command
-//! acts on one of its bodies, or when gravity changes.
+//! An island wakes as a whole when a moving body touches one of its bodies or is jointed to
+//! one, when a command acts on one of its bodies or joints, when one of its joints breaks,
+//! or when gravity changes.
 //!
-//! Islands are found each step with a union-find over the touching contacts in key order;
+//! Islands are found each step with a union-find over the touching contacts in key order
+//! and the joints in slot order;
 //! each set's root is its lowest slot, so the partition and the roots do not depend on the
 //! order of the unions.
 
@@ -19,23 +21,27 @@ use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
 
 impl<R: Real> RigidSystem<R> {
-    /// Stage 2: wakes every sleeping island that a moving body touches.
+    /// Stage 2: wakes every sleeping island that a moving body touches or is jointed to.
     pub(crate) fn wake_touched(&mut self) {
         let bodies = &self.bodies;
+        let joints = &self.joints;
+        let sleeping_partner = |a: usize, b: usize| {
+            if bodies.is_moving(a) && bodies.asleep[b] {
+                Some(bodies.island[b])
+            } else if bodies.is_moving(b) && bodies.asleep[a] {
+                Some(bodies.island[a])
+            } else {
+                None
+            }
+        };
         let mut islands: Vec<u32> = self
             .contacts
             .iter()
             .filter(|c| c.count > 0)
-            .filter_map(|c| {
-                let (a, b) = (c.key.body_a as usize, c.key.body_b as usize);
-                if bodies.is_moving(a) && bodies.asleep[b] {
-                    Some(bodies.island[b])
-                } else if bodies.is_moving(b) && bodies.asleep[a] {
-                    Some(bodies.island[a])
-                } else {
-                    None
-                }
-            })
+            .filter_map(|c| sleeping_partner(c.key.body_a as usize, c.key.body_b as usize))
+            .chain(joints.live().filter_map(|j| {
+                sleeping_partner(joints.body_a[j] as usize, joints.body_b[j] as usize)
+            }))
             .collect();
         self.wake_islands(&mut islands);
     }
@@ -97,16 +103,21 @@ impl<R: Real> RigidSystem<R> {
             };
         }
 
-        // Union-find over touching contacts between awake dynamic bodies; a body touching a
-        // moving kinematic body stays awake.
+        // Union-find over touching contacts and joints between awake dynamic bodies; a body
+        // touching or jointed to a moving kinematic body stays awake.
         let parent = &mut scratch.island_parent;
         parent.clear();
         parent.extend(0..n as u32);
-        for c in &self.contacts {
-            if c.count == 0 {
-                continue;
-            }
-            let (a, b) = (c.key.body_a as usize, c.key.body_b as usize);
+        let touching = self
+            .contacts
+            .iter()
+            .filter(|c| c.count > 0)
+            .map(|c| (c.key.body_a as usize, c.key.body_b as usize));
+        let joints = &self.joints;
+        let jointed = joints
+            .live()
+            .map(|j| (joints.body_a[j] as usize, joints.body_b[j] as usize));
+        for (a, b) in touching.chain(jointed) {
             let (dyn_a, dyn_b) = (bodies.is_awake_dynamic(a), bodies.is_awake_dynamic(b));
             if dyn_a && dyn_b {
                 union(parent, a, b);

@@ -8,6 +8,8 @@ use super::bodies::{Bodies, NewBody};
 use super::broadphase::BroadPhase;
 use super::contact::Contact;
 use super::desc::{BodyKind, SolverSettings};
+use super::joints::JointEvent;
+use super::joints::storage::Joints;
 use super::solver::Solver;
 use super::transform::Transform;
 use crate::math::{Fx, Real, Vec3};
@@ -17,10 +19,13 @@ use crate::world::Handle;
 ///
 /// A step ([`RigidSystem::step`]) runs these stages, in order:
 /// 1. **collide** ([`collide`](super::collide)): bounding boxes of the moving bodies,
-///    broadphase pairs, narrowphase manifolds, impulses carried over by feature id;
-/// 2. **wake** ([`sleep`](super::sleep)): sleeping islands touched by a moving body;
-/// 3. **solve** ([`solver`](super::solver)): soft-contact sequential impulses with
-///    substeps, restitution, impulses stored;
+///    broadphase pairs (less those of jointed bodies that do not collide), narrowphase
+///    manifolds, impulses carried over by feature id;
+/// 2. **wake** ([`sleep`](super::sleep)): sleeping islands touched or jointed to a moving
+///    body;
+/// 3. **solve** ([`solver`](super::solver)): soft-constraint sequential impulses over
+///    joints and contacts with substeps, restitution, impulses stored, overloaded joints
+///    broken ([`joints::breaking`](super::joints::breaking));
 /// 4. **sleep** ([`sleep`](super::sleep)): islands that stayed slow long enough.
 ///
 /// When every body sleeps or is static, a step does nothing.
@@ -31,6 +36,8 @@ pub struct RigidSystem<R: Real = Fx> {
     pub(crate) bodies: Bodies<R>,
     /// Touching shape pairs, sorted by key.
     pub(crate) contacts: Vec<Contact<R>>,
+    /// Joints between the bodies.
+    pub(crate) joints: Joints<R>,
     #[serde(skip)]
     pub(crate) scratch: Scratch<R>,
 }
@@ -59,6 +66,12 @@ pub(crate) struct Scratch<R: Real> {
     pub island_parent: Vec<u32>,
     /// The shortest sleep time of each island, at its root's slot.
     pub island_time: Vec<R>,
+    /// Whether `joint_filter` holds the body pairs of the live joints that do not collide.
+    pub joint_filter_valid: bool,
+    /// Sorted (lower, higher) body slots of the jointed pairs that do not collide.
+    pub joint_filter: Vec<(u32, u32)>,
+    /// The joints that broke during the current tick.
+    pub joint_events: Vec<JointEvent<R>>,
 }
 
 impl<R: Real> Clone for Scratch<R> {
@@ -80,6 +93,7 @@ impl<R: Real> RigidSystem<R> {
             settings,
             bodies: Bodies::default(),
             contacts: Vec::new(),
+            joints: Joints::default(),
             scratch: Scratch::default(),
         }
     }
@@ -123,6 +137,7 @@ impl<R: Real> RigidSystem<R> {
         *self = other;
         self.scratch = scratch;
         self.scratch.cache_valid = false;
+        self.scratch.joint_filter_valid = false;
     }
 
     /// Number of body slots, alive or dead.

@@ -4,14 +4,15 @@ use super::description::Scene;
 use crate::fluid::{FluidSolver, presets as fluid};
 use crate::math::Real;
 use crate::particles::presets;
+use crate::rigid::joints::presets as joints;
 use crate::rigid::presets as rigid;
 use crate::soft::presets as soft;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 17] = [
+pub const BUILTIN_SCENES: [(&str, &str); 21] = [
     (
         "showcase",
-        "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a cloth swinging and a water column collapsing",
+        "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
     ),
     (
         "fountain",
@@ -45,6 +46,22 @@ pub const BUILTIN_SCENES: [(&str, &str); 17] = [
     (
         "spinner",
         "a box spun about its intermediate axis flips over and over (Dzhanibekov effect)",
+    ),
+    (
+        "chain",
+        "a chain of 20 capsule links on ball joints, hung from a fixed point and released horizontal",
+    ),
+    (
+        "bridge",
+        "a bridge of 20 hinged planks between two pillars, with six boxes dropped on it",
+    ),
+    (
+        "ragdolls",
+        "four ragdolls (capsules on cone-twist and hinge joints with limits) tumbling down stairs",
+    ),
+    (
+        "falling_hinges",
+        "Box2D's determinism scene in 3D: 4 towers of 30 boxes on limited, sprung hinges falling over",
     ),
     (
         "dam_break",
@@ -82,7 +99,11 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
     match *name {
         "showcase" => {
             scene.particles = Some(presets::showcase_particles());
-            scene.rigid = Some(rigid::showcase());
+            let mut bodies = rigid::showcase();
+            let (jointed, showcase_joints) = joints::showcase(bodies.body_count());
+            bodies.bodies.extend(jointed);
+            scene.rigid = Some(bodies);
+            scene.joints = Some(showcase_joints);
             scene.soft = Some(soft::showcase());
             scene.fluid = Some(fluid::showcase());
             scene.ticks = 600;
@@ -124,6 +145,26 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
         "spinner" => {
             scene.gravity = crate::math::Vec3::ZERO;
             scene.rigid = Some(rigid::spinner());
+            scene.ticks = 600;
+        }
+        "chain" => {
+            let (bodies, chain) = joints::chain(20, R::from_int(22));
+            (scene.rigid, scene.joints) = (Some(bodies), Some(chain));
+            scene.ticks = 600;
+        }
+        "bridge" => {
+            let (bodies, bridge) = joints::bridge(20);
+            (scene.rigid, scene.joints) = (Some(bodies), Some(bridge));
+            scene.ticks = 600;
+        }
+        "ragdolls" => {
+            let (bodies, dolls) = joints::ragdolls(4);
+            (scene.rigid, scene.joints) = (Some(bodies), Some(dolls));
+            scene.ticks = 600;
+        }
+        "falling_hinges" => {
+            let (bodies, hinges) = joints::falling_hinges(4, 30);
+            (scene.rigid, scene.joints) = (Some(bodies), Some(hinges));
             scene.ticks = 600;
         }
         "dam_break" => {

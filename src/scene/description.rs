@@ -7,7 +7,7 @@ use super::error::SceneError;
 use crate::fluid::{FluidDesc, FluidSystem};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{ParticleSystem, ParticlesDesc};
-use crate::rigid::{RigidDesc, RigidSystem};
+use crate::rigid::{JointsDesc, RigidDesc, RigidSystem};
 use crate::soft::{SoftDesc, SoftSystem};
 use crate::world::{Settings, TickInput, World};
 
@@ -56,6 +56,10 @@ pub struct Scene<R: Real = Fx> {
     /// a written scene when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub soft: Option<SoftDesc<R>>,
+    /// Joints between the rigid bodies (which the scene must have). Left out of a written
+    /// scene when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub joints: Option<JointsDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
     #[serde(default)]
     pub script: Vec<TickInput<R>>,
@@ -92,6 +96,7 @@ impl<R: Real> Scene<R> {
             rigid: None,
             fluid: None,
             soft: None,
+            joints: None,
             script: Vec::new(),
         }
     }
@@ -122,7 +127,16 @@ impl<R: Real> Scene<R> {
                 .set_particles(ParticleSystem::from_desc(desc).map_err(|e| e.within("particles"))?);
         }
         if let Some(desc) = &self.rigid {
-            world.set_rigid(RigidSystem::from_desc(desc).map_err(|e| e.within("rigid"))?);
+            let mut rigid = RigidSystem::from_desc(desc).map_err(|e| e.within("rigid"))?;
+            if let Some(joints) = &self.joints {
+                rigid.add_joints(joints).map_err(|e| e.within("joints"))?;
+            }
+            world.set_rigid(rigid);
+        } else if self.joints.is_some() {
+            return Err(SceneError::new(
+                "joints",
+                "joints join rigid bodies, and the scene has no `rigid` section",
+            ));
         }
         if let Some(desc) = &self.fluid {
             let dt = R::from_ratio(1, i64::from(self.tick_rate) * i64::from(self.substeps));

@@ -7,10 +7,6 @@ use ron::extensions::Extensions;
 use super::description::Scene;
 use crate::math::Real;
 
-/// Sections a future build may simulate; a file that uses one gets a clear refusal rather
-/// than a generic "unknown field".
-const UNSUPPORTED_SECTIONS: [(&str, &str); 1] = [("joints", "joints")];
-
 /// Parses a scene from RON text. `origin` names the file in error messages.
 ///
 /// `Some(…)` may be left out around optional sections (RON's `implicit_some`).
@@ -18,13 +14,6 @@ pub fn parse_scene<R: Real>(text: &str, origin: &str) -> Result<Scene<R>, String
     let options = ron::Options::default().with_default_extension(Extensions::IMPLICIT_SOME);
     options.from_str::<Scene<R>>(text).map_err(|e| {
         let position = format!("line {}, column {}", e.span.start.line, e.span.start.col);
-        if let ron::Error::NoSuchStructField { found: field, .. } = &e.code
-            && let Some((_, what)) = UNSUPPORTED_SECTIONS.iter().find(|(name, _)| name == field)
-        {
-            return format!(
-                "{origin}: {position}: field `{field}`: this build of fixstep does not simulate {what}"
-            );
-        }
         format!("{origin}: {position}: {}", e.code)
     })
 }

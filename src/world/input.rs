@@ -24,6 +24,8 @@ pub enum Target {
     /// A kinematic attachment target of the soft bodies, numbered over the scene's
     /// attachments body after body (only [`Command::MoveKinematic`] acts on it).
     SoftAttachment(u32),
+    /// One rigid-body joint (only [`Command::Remove`] and [`Command::SetMotor`] act on it).
+    Joint(Handle),
 }
 
 /// One command from one player.
@@ -92,6 +94,17 @@ pub enum Command<R: Real = Fx> {
     /// An opaque value for game logic. The world hashes it into the state so that peers
     /// that disagree on game logic inputs also disagree on the checksum.
     Payload(u32),
+    /// Sets (or adds) the motor of a hinge or slider joint: it drives the joint's relative
+    /// speed to `speed` (rad/s or m/s) with at most `max_force` (N·m or N); a `max_force`
+    /// of 0 switches it off. Wakes the joint's bodies.
+    SetMotor {
+        /// The joint.
+        target: Target,
+        /// Target relative speed, rad/s for a hinge, m/s for a slider.
+        speed: R,
+        /// The largest torque (N·m) or force (N), at least 0.
+        max_force: R,
+    },
 }
 
 /// The commands of one player for one tick.

@@ -39,6 +39,11 @@ pub struct Metrics {
     pub max_stretch: f64, // ok-det: reporting
     /// The mean edge stretch of the soft bodies.
     pub mean_stretch: f64, // ok-det: reporting
+    /// Live rigid-body joints.
+    pub joints: u64,
+    /// The largest joint error of the rigid-body joints, m
+    /// ([`RigidSystem::joint_error`](crate::rigid::RigidSystem::joint_error)).
+    pub max_joint_error: f64, // ok-det: reporting
     /// Soft-body vertices (not a CSV column; the divergence check counts them with the
     /// particles).
     pub soft_vertices: u64,
@@ -46,12 +51,12 @@ pub struct Metrics {
 
 impl Metrics {
     /// The CSV header: the fixed columns, then one column per subsystem figure.
-    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies,max_stretch,mean_stretch,density_error_avg,density_error_max,front_x";
+    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies,max_stretch,mean_stretch,density_error_avg,density_error_max,front_x,joints,max_joint_error";
 
     /// The row as CSV, in [`Metrics::CSV_HEADER`] order.
     pub fn csv_row(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             self.tick,
             self.time,
             self.kinetic_energy,
@@ -70,7 +75,9 @@ impl Metrics {
             self.mean_stretch,
             self.density_error_avg,
             self.density_error_max,
-            self.front_x
+            self.front_x,
+            self.joints,
+            self.max_joint_error
         )
     }
 

@@ -106,6 +106,9 @@ pub struct TickReport {
     pub ignored_commands: u32,
     /// Fixed-point operations that saturated during the tick.
     pub saturations: u64,
+    /// Rigid-body joints that broke during the tick (which ones:
+    /// [`RigidSystem::joint_events`]).
+    pub broken_joints: u32,
 }
 
 /// A deterministic physics world.
@@ -302,9 +305,15 @@ impl<R: Real> World<R> {
                 monitor.sample(&metrics);
             }
         }
+        let broken_joints = self
+            .state
+            .rigid
+            .as_ref()
+            .map_or(0, |r| r.joint_events().len() as u32);
         TickReport {
             ignored_commands,
             saturations,
+            broken_joints,
         }
     }
 
@@ -382,7 +391,11 @@ impl<R: Real> World<R> {
             | Command::MoveKinematic {
                 target: Target::Body(_),
                 ..
-            } => self
+            }
+            | Command::Remove {
+                target: Target::Joint(_),
+            }
+            | Command::SetMotor { .. } => self
                 .state
                 .rigid
                 .as_mut()
@@ -409,6 +422,22 @@ impl<R: Real> World<R> {
             }
             | Command::Remove {
                 target: Target::SoftAttachment(_),
+            }
+            | Command::ApplyForce {
+                target: Target::Joint(_),
+                ..
+            }
+            | Command::ApplyImpulse {
+                target: Target::Joint(_),
+                ..
+            }
+            | Command::SetVelocity {
+                target: Target::Joint(_),
+                ..
+            }
+            | Command::MoveKinematic {
+                target: Target::Joint(_),
+                ..
             } => false,
             _ => self
                 .state
@@ -439,6 +468,7 @@ impl<R: Real> World<R> {
             settings, rigid, ..
         } = &mut self.state;
         if let Some(rigid) = rigid {
+            rigid.clear_joint_events();
             for _ in 0..settings.substeps {
                 rigid.step(self.substep_dt, settings.gravity);
             }
@@ -581,6 +611,8 @@ impl<R: Real> World<R> {
             m.max_penetration = rm.max_penetration;
             m.awake_bodies = rm.awake_bodies;
             m.sleeping_bodies = rm.sleeping_bodies;
+            m.joints = rm.joints;
+            m.max_joint_error = rm.max_joint_error;
         }
         if let Some(s) = &self.state.soft {
             let sm = s.metrics(self.state.settings.gravity);

@@ -24,3 +24,22 @@ pub(crate) struct SolverBody<R: Real> {
 
 /// The solver index of every static body (and of bodies the solver does not move).
 pub(crate) const STATIC_BODY: u32 = 0;
+
+/// Two distinct bodies of the solver array, mutably. Index [`STATIC_BODY`] is never written
+/// (its inverse mass is zero, so the impulses applied to it are zero), which lets a
+/// constraint against a static body use a scratch copy.
+pub(crate) fn pair<R: Real>(
+    bodies: &mut [SolverBody<R>],
+    a: u32,
+    b: u32,
+) -> (&mut SolverBody<R>, &mut SolverBody<R>) {
+    let (a, b) = (a as usize, b as usize);
+    debug_assert_ne!(a, b);
+    if a < b {
+        let (lo, hi) = bodies.split_at_mut(b);
+        (&mut lo[a], &mut hi[0])
+    } else {
+        let (lo, hi) = bodies.split_at_mut(a);
+        (&mut hi[0], &mut lo[b])
+    }
+}

@@ -36,7 +36,7 @@
 //! arrays); a lane is one contact. The solver visits the lanes of a block in order and the
 //! blocks in order, so the block layout is storage only: it changes no result.
 
-use super::body::SolverBody;
+use super::body::{SolverBody, pair};
 use super::lanes::{LANES, Lanes, Lanes3};
 use super::softness::Softness;
 use crate::math::Real;
@@ -170,27 +170,6 @@ pub(crate) struct SolvePass<R: Real> {
     pub inv_h: R,
     pub max_push: R,
     pub use_bias: bool,
-}
-
-/// Two distinct bodies of the solver array, mutably. Index [`STATIC_BODY`] is never written
-/// (its inverse mass is zero, so the impulses applied to it are zero), which lets a
-/// constraint against a static body use a scratch copy.
-///
-/// [`STATIC_BODY`]: super::body::STATIC_BODY
-fn pair<R: Real>(
-    bodies: &mut [SolverBody<R>],
-    a: u32,
-    b: u32,
-) -> (&mut SolverBody<R>, &mut SolverBody<R>) {
-    let (a, b) = (a as usize, b as usize);
-    debug_assert_ne!(a, b);
-    if a < b {
-        let (lo, hi) = bodies.split_at_mut(b);
-        (&mut lo[a], &mut hi[0])
-    } else {
-        let (lo, hi) = bodies.split_at_mut(a);
-        (&mut hi[0], &mut lo[b])
-    }
 }
 
 impl<R: Real> ContactBlock<R> {

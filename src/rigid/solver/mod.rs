@@ -1,30 +1,41 @@
-//! The contact solver: sequential impulses with soft contacts and substeps, in Box2D v3's
-//! stage order.
+//! The contact and joint solver: sequential impulses with soft constraints and substeps, in
+//! Box2D v3's stage order.
 //!
-//! [`Solver::run`] performs, for one step of length dt split into n substeps of h = dt/n:
+//! The [solve stage](super::solve) performs, for one step of length dt split into n
+//! substeps of h = dt/n:
 //!
 //! 1. **prepare**: one constraint per contact with a body to move (anchors, effective
-//!    masses, approach velocities), stored [`LANES`] to a [`ContactBlock`];
+//!    masses, approach velocities), stored [`LANES`] to a [`ContactBlock`], and one per
+//!    joint with a body to move ([`joints`]: a point block and scalar rows);
 //! 2. per substep: **integrate velocities** (gravity, forces, damping, gyroscopic torque),
-//!    **warm start** (apply the accumulated impulses), **solve** (with the soft bias),
-//!    **integrate positions**, **relax** (solve again without bias, removing the velocity
-//!    the bias added, so pushing apart injects no energy);
+//!    **update joints** (their Jacobians and errors from the current poses), **warm start**
+//!    (apply the accumulated impulses), **solve** (with the soft bias), **integrate
+//!    positions**, **relax** (solve again without bias, removing the velocity the bias
+//!    added, so pushing apart injects no energy); joints before contacts in every pass;
 //! 3. **restitution**;
-//! 4. **store impulses** into the persistent contacts for the next step.
+//! 4. **store impulses** into the persistent contacts and joints for the next step.
 //!
-//! Constraints are visited block by block in the order of [`batching`], close to
-//! contact-key order; bodies in slot order: the same on every machine.
+//! Contact constraints are visited block by block in the order of [`batching`], close to
+//! contact-key order; joints in slot order; bodies in slot order: the same on every
+//! machine.
 
 mod batching;
 mod body;
 mod contact_constraint;
 mod integrate;
+mod joint_point;
+mod joint_pose;
+mod joint_row;
+mod joint_rows;
+mod joints;
 mod lanes;
 mod prepare;
 mod softness;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};
 pub(crate) use contact_constraint::{ContactBlock, SolvePass};
+pub(crate) use joint_pose::{JointPose, twist_angle};
+pub(crate) use joint_row::JointPass;
 pub(crate) use softness::Softness;
 
 use crate::math::Real;
@@ -46,6 +57,9 @@ pub(crate) struct Solver<R: crate::math::Real> {
     block_count: usize,
     /// The batching of the step's constraints into blocks.
     batching: Batching,
+    /// The step's joint constraints, in joint slot order, and their scalar rows.
+    joints: Vec<joints::JointConstraint<R>>,
+    joint_rows: Vec<joint_row::JointRow<R>>,
 }
 
 impl<R: Real> Solver<R> {
