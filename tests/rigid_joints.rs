@@ -911,3 +911,24 @@ fn a_snapshot_with_joints_continues_exactly() {
     }
     assert_eq!(resumed.checksum().total, whole.checksum().total);
 }
+
+/// The joint-grid benchmark's scene, small: it builds, hangs from its static balls and does
+/// not come apart (every joint within 1 cm after a second of folding).
+#[test]
+fn the_joint_grid_hangs_together() {
+    let (rigid_desc, joints) = fixstep::rigid::joints::presets::joint_grid::<Fx>(12);
+    let mut s = Scene::empty("grid");
+    s.rigid = Some(rigid_desc);
+    s.joints = Some(joints);
+    let mut world = s.build().expect("builds");
+    assert_eq!(rigid(&world).joint_count(), 2 * 12 * 11 - 6);
+    for _ in 0..60 {
+        step(&mut world);
+    }
+    assert!(
+        max_joint_error(&world) < 0.01,
+        "{}",
+        max_joint_error(&world)
+    );
+    assert_eq!(world.metrics().saturations, 0);
+}

@@ -37,16 +37,14 @@ use super::softness::Softness;
 use crate::math::{Mat3, Real, Vec3};
 use crate::rigid::joints::desc::{JointKind, Limits};
 
-/// The most scalar rows of one joint (the slider's).
-pub(crate) const MAX_ROWS: usize = 8;
-
-/// A joint's constraints for one pose: an optional point block and up to [`MAX_ROWS`]
-/// rows, in solving order: the rows before `locks_from` (springs, motors, friction), then
+/// A joint's constraints for one pose: an optional point block and its rows, appended to a
+/// row list in solving order: the rows before `locks_from` (springs, motors, friction), then
 /// the point block, then the rest (locks, then limits). Masses and impulses are zero.
-pub(crate) struct JointRows<R: Real> {
+pub(crate) struct JointRows<'a, R: Real> {
     pub point: Option<PointBlock<R>>,
-    pub rows: [JointRow<R>; MAX_ROWS],
-    pub count: usize,
+    /// The list the rows are appended to, and where this joint's rows begin in it.
+    rows: &'a mut Vec<JointRow<R>>,
+    first: usize,
     pub locks_from: usize,
 }
 
@@ -59,18 +57,20 @@ pub(crate) struct RowInputs<'a, R: Real> {
     pub spring: Softness<R>,
 }
 
-impl<R: Real> JointRows<R> {
-    /// The constraints of a joint at `pose` between solver bodies `ba` and `bb`.
+impl<'a, R: Real> JointRows<'a, R> {
+    /// The constraints of a joint at `pose` between solver bodies `ba` and `bb`, its rows
+    /// appended to `rows`.
     pub fn build(
         inputs: &RowInputs<'_, R>,
         pose: &JointPose<R>,
         (ba, bb): (&SolverBody<R>, &SolverBody<R>),
+        rows: &'a mut Vec<JointRow<R>>,
     ) -> Self {
-        let empty = JointRow::angular(Vec3::ZERO, R::ZERO, RowRole::Equality, 0, (ba, bb));
+        let first = rows.len();
         let mut out = Self {
             point: None,
-            rows: [empty; MAX_ROWS],
-            count: 0,
+            rows,
+            first,
             locks_from: 0,
         };
         let bodies = (ba, bb);
@@ -99,7 +99,7 @@ impl<R: Real> JointRows<R> {
                         out.push(JointRow::angular(axis, R::ZERO, role, 6 + k as u8, bodies));
                     }
                 }
-                out.locks_from = out.count;
+                out.locks_from = out.count();
                 let (a, b) = pose.axes();
                 let across = a[0].cross(b[0]);
                 let (n, sin) = across.try_normalize().unwrap_or((a[1], R::ZERO));
@@ -143,7 +143,7 @@ impl<R: Real> JointRows<R> {
                     };
                     out.push(JointRow::angular(a[0], R::ZERO, role, 7, bodies));
                 }
-                out.locks_from = out.count;
+                out.locks_from = out.count();
                 let across = a[0].cross(b[0]);
                 for (k, axis) in [a[1], a[2]].into_iter().enumerate() {
                     let error = across.dot_fused(axis);
@@ -169,7 +169,7 @@ impl<R: Real> JointRows<R> {
                     };
                     out.push(linear_row(a[0], pose, R::ZERO, role, 7, bodies));
                 }
-                out.locks_from = out.count;
+                out.locks_from = out.count();
                 out.push_rotation_locks(a, pose, 0, bodies);
                 for (k, axis) in [a[1], a[2]].into_iter().enumerate() {
                     let error = pose.d.dot_fused(axis);
@@ -225,8 +225,12 @@ impl<R: Real> JointRows<R> {
     }
 
     fn push(&mut self, row: JointRow<R>) {
-        self.rows[self.count] = row;
-        self.count += 1;
+        self.rows.push(row);
+    }
+
+    /// How many rows this joint has so far.
+    pub fn count(&self) -> usize {
+        self.rows.len() - self.first
     }
 
     /// The rows that keep B's frame turned as A's: 2q_x, 2q_y, 2q_z = 0 about A's axes, into

@@ -79,28 +79,27 @@ impl<R: Real> Solver<R> {
                 spring,
             };
             let pose = JointPose::of(joints, i, bodies);
-            let built = JointRows::build(&inputs, &pose, (ba, bb));
+            let first = self.joint_rows.len();
+            let built = JointRows::build(&inputs, &pose, (ba, bb), &mut self.joint_rows);
+            let (count, locks_from) = (built.count(), built.locks_from);
             let stored = &joints.impulses[i];
             let point = built.point.map(|mut p| {
                 p.mass = p.effective_mass(ba, bb);
                 p.impulse = Vec3::new(stored[0], stored[1], stored[2]);
                 p
             });
-            let first = self.joint_rows.len() as u32;
-            for row in &built.rows[..built.count] {
-                let mut row = *row;
+            for row in &mut self.joint_rows[first..] {
                 row.mass = row.effective_mass(ba, bb);
                 row.impulse = stored[usize::from(row.slot)];
-                self.joint_rows.push(row);
             }
             self.joints.push(JointConstraint {
                 joint: i as u32,
                 a,
                 b,
                 point,
-                first,
-                count: built.count as u32,
-                locks_from: built.locks_from as u32,
+                first: first as u32,
+                count: count as u32,
+                locks_from: locks_from as u32,
                 spring,
             });
         }
@@ -119,7 +118,9 @@ impl<R: Real> Solver<R> {
                 spring: c.spring,
             };
             let pose = JointPose::of(joints, i, bodies);
-            let built = JointRows::build(&inputs, &pose, (ba, bb));
+            let scratch = &mut self.joint_row_scratch;
+            scratch.clear();
+            let built = JointRows::build(&inputs, &pose, (ba, bb), scratch);
             if let (Some(point), Some(new)) = (&mut c.point, built.point) {
                 *point = PointBlock {
                     mass: new.effective_mass(ba, bb),
@@ -128,7 +129,7 @@ impl<R: Real> Solver<R> {
                 };
             }
             let rows = &mut self.joint_rows[c.first as usize..(c.first + c.count) as usize];
-            for (row, new) in rows.iter_mut().zip(&built.rows[..built.count]) {
+            for (row, new) in rows.iter_mut().zip(scratch.iter()) {
                 *row = JointRow {
                     mass: new.effective_mass(ba, bb),
                     impulse: row.impulse,

@@ -60,6 +60,8 @@ pub(crate) struct Solver<R: crate::math::Real> {
     /// The step's joint constraints, in joint slot order, and their scalar rows.
     joints: Vec<joints::JointConstraint<R>>,
     joint_rows: Vec<joint_row::JointRow<R>>,
+    /// One joint's rows as rebuilt for a substep, before they replace the step's.
+    joint_row_scratch: Vec<joint_row::JointRow<R>>,
 }
 
 impl<R: Real> Solver<R> {
