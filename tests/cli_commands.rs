@@ -141,6 +141,8 @@ fn info_describes_a_replay() {
         "checkpoints: 4 (every 60 ticks)",
         "final checksum: ",
         "particles: ",
+        "rigid bodies: none",
+        "joints: none",
     ] {
         assert!(
             run.stdout.contains(expected),
@@ -148,6 +150,25 @@ fn info_describes_a_replay() {
             run.stdout
         );
     }
+}
+
+#[test]
+fn info_counts_bodies_and_joints() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let run = fixstep(&[
+        "info",
+        root.join("replays/ragdolls.replay")
+            .to_str()
+            .expect("UTF-8"),
+    ]);
+    assert_eq!(run.code, 0, "{run:?}");
+    assert!(run.stdout.contains("rigid bodies: 55\n"), "{}", run.stdout);
+    assert!(
+        run.stdout
+            .contains("joints: 40 (24 cone-twist, 16 hinge)\n"),
+        "{}",
+        run.stdout
+    );
 }
 
 #[test]

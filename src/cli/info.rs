@@ -8,6 +8,7 @@ use crate::math::Fx;
 use crate::particles::{ForceDesc, ParticlesDesc};
 use crate::replay::format::FORMAT_VERSION;
 use crate::replay::{Replay, StateVersionCheck};
+use crate::rigid::JointsDesc;
 use crate::world::STATE_VERSION;
 use crate::world::checksum::hex;
 
@@ -38,6 +39,20 @@ pub fn info(path: &Path) -> Result<Status, String> {
             gravity.x, gravity.y, gravity.z
         ),
         format!("particles: {}", particles_summary(scene.particles.as_ref())),
+        format!(
+            "rigid bodies: {}",
+            scene
+                .rigid
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), |r| r.body_count().to_string())
+        ),
+        format!(
+            "joints: {}",
+            scene
+                .joints
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), joints_summary)
+        ),
         format!("ticks: {}", replay.ticks()),
         format!("input ticks: {}", replay.inputs().len()),
         format!(
@@ -64,6 +79,35 @@ pub fn info(path: &Path) -> Result<Status, String> {
         print_line(&line)?;
     }
     Ok(Status::Ok)
+}
+
+/// Joint count (lattice copies counted) and the count of each kind, in declaration order.
+fn joints_summary(desc: &JointsDesc<Fx>) -> String {
+    const KINDS: [&str; 8] = [
+        "ball",
+        "cone-twist",
+        "hinge",
+        "slider",
+        "fixed",
+        "rod",
+        "rope",
+        "spring",
+    ];
+    let mut counts = [0u64; 8];
+    for joint in &desc.list {
+        let copies = joint.grid.map_or(1, |g| {
+            u64::from(g.count.0) * u64::from(g.count.1) * u64::from(g.count.2)
+        });
+        counts[usize::from(joint.kind.code())] += copies;
+    }
+    let total: u64 = counts.iter().sum();
+    let kinds: Vec<String> = KINDS
+        .iter()
+        .zip(counts)
+        .filter(|&(_, n)| n > 0)
+        .map(|(kind, n)| format!("{n} {kind}"))
+        .collect();
+    format!("{total} ({})", kinds.join(", "))
 }
 
 /// Particle count, templates, emitters and forces of the scene's particle section.
