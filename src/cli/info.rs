@@ -9,6 +9,7 @@ use crate::particles::{ForceDesc, ParticlesDesc};
 use crate::replay::format::FORMAT_VERSION;
 use crate::replay::{Replay, StateVersionCheck};
 use crate::rigid::JointsDesc;
+use crate::rigid::build::copies;
 use crate::world::STATE_VERSION;
 use crate::world::checksum::hex;
 
@@ -95,10 +96,7 @@ fn joints_summary(desc: &JointsDesc<Fx>) -> String {
     ];
     let mut counts = [0u64; 8];
     for joint in &desc.list {
-        let copies = joint.grid.map_or(1, |g| {
-            u64::from(g.count.0) * u64::from(g.count.1) * u64::from(g.count.2)
-        });
-        counts[usize::from(joint.kind.code())] += copies;
+        counts[usize::from(joint.kind.code())] += copies(joint.grid.map(|g| g.count));
     }
     let total: u64 = counts.iter().sum();
     let kinds: Vec<String> = KINDS

@@ -18,19 +18,8 @@ impl<R: Real> RigidSystem<R> {
     /// to the `rigid` section).
     pub fn from_desc(desc: &RigidDesc<R>) -> Result<Self, SceneError> {
         check_settings(&desc.solver).map_err(|e| e.within("solver"))?;
-        let total = desc.bodies.iter().try_fold(0u64, |sum, body| {
-            let copies = body.grid.map_or(1, |g| {
-                u64::from(g.count.0) * u64::from(g.count.1) * u64::from(g.count.2)
-            });
-            let sum = sum + copies;
-            (sum <= u64::from(MAX_BODIES)).then_some(sum)
-        });
-        if total.is_none() {
-            return Err(SceneError::new(
-                "bodies",
-                format!("more than {MAX_BODIES} bodies"),
-            ));
-        }
+        let counts = desc.bodies.iter().map(|b| b.grid.map(|g| g.count));
+        check_total(counts, MAX_BODIES, "bodies", "bodies")?;
         let mut system = Self::new(desc.solver);
         for (k, body) in desc.bodies.iter().enumerate() {
             let field = format!("bodies[{k}]");
@@ -115,6 +104,59 @@ impl<R: Real> RigidSystem<R> {
     }
 }
 
+/// How many copies a lattice of `count` makes (1 without a lattice).
+pub(crate) fn copies(count: Option<(u32, u32, u32)>) -> u64 {
+    count.map_or(1, |(nx, ny, nz)| {
+        u64::from(nx) * u64::from(ny) * u64::from(nz)
+    })
+}
+
+/// Checks that the entries, each one or a lattice of `count` copies, make at most `max`
+/// `what` ("bodies", "joints") in all; the error names `field`.
+pub(crate) fn check_total(
+    mut counts: impl Iterator<Item = Option<(u32, u32, u32)>>,
+    max: u32,
+    field: &str,
+    what: &str,
+) -> Result<(), SceneError> {
+    let total = counts.try_fold(0u64, |sum, count| {
+        let sum = sum + copies(count);
+        (sum <= u64::from(max)).then_some(sum)
+    });
+    match total {
+        Some(_) => Ok(()),
+        None => Err(SceneError::new(field, format!("more than {max} {what}"))),
+    }
+}
+
+/// Checks a lattice: every count at least 1 (error at `grid.count`), and the lattice
+/// within ±[`MAX_MAGNITUDE`] m (error at `grid.spacing`); `max` bounds a count.
+pub(crate) fn check_lattice<R: Real>(
+    count: (u32, u32, u32),
+    spacing: Vec3<R>,
+    max: u32,
+) -> Result<(), SceneError> {
+    let (nx, ny, nz) = count;
+    if nx == 0 || ny == 0 || nz == 0 {
+        return Err(SceneError::new(
+            "grid.count",
+            "every count must be at least 1",
+        ));
+    }
+    let limit = R::from_int(MAX_MAGNITUDE);
+    let extent = [(nx, spacing.x), (ny, spacing.y), (nz, spacing.z)];
+    if extent
+        .iter()
+        .any(|&(n, s)| s.abs() > limit || s.abs() * R::from_int(n.min(max) as i32) > limit)
+    {
+        return Err(SceneError::new(
+            "grid.spacing",
+            format!("the lattice must fit within ±{MAX_MAGNITUDE} m"),
+        ));
+    }
+    Ok(())
+}
+
 fn check_settings<R: Real>(s: &SolverSettings<R>) -> Result<(), SceneError> {
     if !(1..=MAX_SOLVER_SUBSTEPS).contains(&s.substeps) {
         return Err(SceneError::new(
@@ -178,26 +220,7 @@ fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, SceneError> {
         }
     }
     if let Some(grid) = body.grid {
-        let (nx, ny, nz) = grid.count;
-        if nx == 0 || ny == 0 || nz == 0 {
-            return Err(SceneError::new(
-                "grid.count",
-                "every count must be at least 1",
-            ));
-        }
-        let extent = [
-            (nx, grid.spacing.x),
-            (ny, grid.spacing.y),
-            (nz, grid.spacing.z),
-        ];
-        if extent.iter().any(|&(n, s)| {
-            s.abs() > limit || s.abs() * R::from_int(n.min(MAX_BODIES) as i32) > limit
-        }) {
-            return Err(SceneError::new(
-                "grid.spacing",
-                format!("the lattice must fit within ±{MAX_MAGNITUDE} m"),
-            ));
-        }
+        check_lattice(grid.count, grid.spacing, MAX_BODIES)?;
     }
     let orientation = body
         .orientation

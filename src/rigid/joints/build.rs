@@ -5,7 +5,7 @@ use super::desc::{
 };
 use super::storage::{LocalFrame, NewJoint};
 use crate::math::{Mat3, Quat, Real, Vec3};
-use crate::rigid::build::MAX_MAGNITUDE;
+use crate::rigid::build::{MAX_MAGNITUDE, check_lattice, check_total};
 use crate::rigid::desc::BodyKind;
 use crate::rigid::system::RigidSystem;
 use crate::scene::SceneError;
@@ -24,19 +24,8 @@ impl<R: Real> RigidSystem<R> {
         SceneError::check_range("hertz", desc.hertz, R::ZERO, limit, "Hz")?;
         SceneError::check_range("damping_ratio", desc.damping_ratio, R::ZERO, limit, "")?;
         check_iterations("iterations", desc.iterations)?;
-        let total = desc.list.iter().try_fold(0u64, |sum, joint| {
-            let copies = joint.grid.map_or(1, |g| {
-                u64::from(g.count.0) * u64::from(g.count.1) * u64::from(g.count.2)
-            });
-            let sum = sum + copies;
-            (sum <= u64::from(MAX_JOINTS)).then_some(sum)
-        });
-        if total.is_none() {
-            return Err(SceneError::new(
-                "list",
-                format!("more than {MAX_JOINTS} joints"),
-            ));
-        }
+        let counts = desc.list.iter().map(|j| j.grid.map(|g| g.count));
+        check_total(counts, MAX_JOINTS, "list", "joints")?;
         self.joints.hertz = desc.hertz;
         self.joints.damping_ratio = desc.damping_ratio;
         self.joints.iterations = desc.iterations;
@@ -219,28 +208,8 @@ fn lattice<R: Real>(joint: &JointDesc<R>) -> Result<Vec<Copy<R>>, SceneError> {
             offset: Vec3::ZERO,
         }]);
     };
+    check_lattice(grid.count, grid.spacing, MAX_JOINTS)?;
     let (nx, ny, nz) = grid.count;
-    if nx == 0 || ny == 0 || nz == 0 {
-        return Err(SceneError::new(
-            "grid.count",
-            "every count must be at least 1",
-        ));
-    }
-    let limit = R::from_int(MAX_MAGNITUDE);
-    let extent = [
-        (nx, grid.spacing.x),
-        (ny, grid.spacing.y),
-        (nz, grid.spacing.z),
-    ];
-    if extent
-        .iter()
-        .any(|&(n, s)| s.abs() > limit || s.abs() * R::from_int(n.min(MAX_JOINTS) as i32) > limit)
-    {
-        return Err(SceneError::new(
-            "grid.spacing",
-            format!("the lattice must fit within ±{MAX_MAGNITUDE} m"),
-        ));
-    }
     let step = |base: u32, stride: (u32, u32, u32), (i, j, k): (u32, u32, u32)| {
         u64::from(base)
             + u64::from(i) * u64::from(stride.0)
