@@ -151,3 +151,56 @@ fn png_bytes_decode_to_the_drawn_pixels() {
         .collect();
     assert_eq!(rgb, expected);
 }
+
+/// A rope is drawn as a line from anchor to anchor; a ball joint, whose bodies touch, is
+/// not drawn.
+#[test]
+fn ropes_are_drawn_as_lines_between_their_anchors() {
+    use fixstep::math::{Real, Vec3};
+    use fixstep::rigid::{BodyDesc, JointDesc, JointKind, JointsDesc, RigidDesc, Shape};
+    use fixstep::viewer::draw_list::Figure;
+    let anchor = BodyDesc::new(
+        Shape::Sphere {
+            radius: Fx::from_ratio(1, 10),
+        },
+        Vec3::Y * Fx::from_int(3),
+    )
+    .fixed();
+    let ball = BodyDesc::new(
+        Shape::Sphere {
+            radius: Fx::from_ratio(1, 5),
+        },
+        Vec3::Y,
+    );
+    let mut s = Scene::empty("rope");
+    s.rigid = Some(RigidDesc {
+        bodies: vec![anchor, ball],
+        solver: Default::default(),
+    });
+    let rope = JointDesc::new(
+        JointKind::Rope { max_length: None },
+        0,
+        1,
+        Vec3::Y * Fx::from_int(3),
+    )
+    .with_anchor_b(Vec3::Y);
+    let ball_joint = JointDesc::new(JointKind::Ball, 0, 1, Vec3::Y * Fx::from_int(3));
+    for (joint, lines) in [(rope, 1), (ball_joint, 0)] {
+        s.joints = Some(JointsDesc::new(vec![joint]));
+        let film = shoot(&s, 1, BodyColours::Palette);
+        let frame = film.frames.last().expect("a frame");
+        let drawn: Vec<&Figure> = frame
+            .primitives
+            .iter()
+            .map(|p| &p.figure)
+            .filter(|f| matches!(f, Figure::Line { .. }))
+            .collect();
+        assert_eq!(drawn.len(), lines, "{drawn:?}");
+        if let Some(Figure::Line { a, b }) = drawn.first() {
+            assert!(
+                (a[1] - 3.0).abs() < 1e-6 && (b[1] - 1.0).abs() < 0.01,
+                "{a:?} {b:?}"
+            );
+        }
+    }
+}

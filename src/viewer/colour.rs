@@ -12,6 +12,9 @@ pub const GROUND: [u8; 3] = [214, 218, 224];
 /// Static bodies, sRGB.
 pub const STATIC: [u8; 3] = [150, 156, 166];
 
+/// Rods, ropes and springs between their anchors: dark slate.
+pub const JOINT: [u8; 3] = [60, 66, 78];
+
 /// Moving bodies take these in turn by slot, so neighbours differ.
 const BODY_PALETTE: [[u8; 3]; 8] = [
     [231, 111, 81],

@@ -2,6 +2,7 @@
 
 use super::colour::Palette;
 use super::draw_fluid::draw_fluid;
+use super::draw_joints::draw_joints;
 use super::draw_list::{Bounds, Frame, Primitive};
 use super::draw_particles::draw_particles;
 use super::draw_rigid::{BodyColours, draw_rigid};
@@ -43,6 +44,7 @@ pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
     let mut primitives: Vec<Primitive> = Vec::new();
     if let Some(rigid) = world.rigid() {
         draw_rigid(rigid, colours, &mut primitives);
+        draw_joints(rigid, &mut primitives);
     }
     if let Some(particles) = world.particles() {
         draw_particles(particles, &mut primitives);

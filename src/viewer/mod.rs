@@ -18,6 +18,7 @@
 
 pub mod colour;
 pub mod draw_fluid;
+pub mod draw_joints;
 pub mod draw_list;
 pub mod draw_particles;
 pub mod draw_rigid;
