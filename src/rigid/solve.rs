@@ -37,8 +37,6 @@ impl<R: Real> RigidSystem<R> {
             });
         }
 
-        solver.prepare(&self.contacts, bodies);
-
         let settings = &self.settings;
         let substeps = settings.substeps;
         let h = dt / R::from_int(substeps as i32);
@@ -59,6 +57,7 @@ impl<R: Real> RigidSystem<R> {
             use_bias: false,
             ..solve
         };
+        solver.prepare(&self.contacts, bodies, &solve);
 
         for _ in 0..substeps {
             solver.integrate_velocities(bodies, h, gravity);

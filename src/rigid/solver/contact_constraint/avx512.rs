@@ -14,8 +14,10 @@
 //!
 //! The kernel computes every operation of [`ContactBlock::solve_lanes`], in the same
 //! order, modulo 2⁶⁴. Every value it loads (body velocities and motions, constraint
-//! coefficients, impulses) and every value that enters a product is checked to lie in
-//! [−2⁴⁶, 2⁴⁶) as raw bits (|x| ≤ 16384 in I32F32). Then:
+//! coefficients, impulses, kept separations) and every value that enters a product is
+//! checked to lie in [−2⁴⁶, 2⁴⁶) as raw bits (|x| ≤ 16384 in I32F32): the coefficients,
+//! which do not change during a step, once per step ([`coefficients_in_bound`]), the
+//! rest in the kernels. Then:
 //!
 //! * a product a·b of checked values is at most 2⁹² before rounding, 2⁶⁰ after;
 //! * a dot product of three is at most 3·2⁹² before rounding, below 2⁶² after;
@@ -58,9 +60,9 @@ use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
     _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
-    _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64, _mm512_max_epi64, _mm512_min_epi64,
-    _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
-    _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
+    _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64, _mm512_mask_storeu_epi64,
+    _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_set1_epi64,
+    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -99,7 +101,7 @@ pub(super) fn solve<R: Real>(
     bodies: &mut [SolverBody<R>],
     pass: &SolvePass<R>,
 ) -> bool {
-    if !has_kernels() {
+    if !has_kernels() || !block.coefficients_in_bound {
         return false;
     }
     let (Some(block), Some(pass)) = (
@@ -111,13 +113,19 @@ pub(super) fn solve<R: Real>(
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
     // SAFETY: AVX-512F and DQ were detected on this processor just above.
-    unsafe { solve_block(block, bodies, pass) }
+    unsafe {
+        if pass.use_bias {
+            solve_block::<false>(block, bodies, pass)
+        } else {
+            solve_block::<true>(block, bodies, pass)
+        }
+    }
 }
 
 /// Warm starting of `block` with the kernel, under the same conditions as [`solve`];
 /// returns whether it ran (if not, nothing was written).
 pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverBody<R>]) -> bool {
-    if !has_kernels() {
+    if !has_kernels() || !block.coefficients_in_bound {
         return false;
     }
     let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
@@ -127,6 +135,81 @@ pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverB
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
     // SAFETY: AVX-512F and DQ were detected on this processor just above.
     unsafe { warm_start_block(block, bodies) }
+}
+
+/// Whether every coefficient of `block` that the passes read and do not change lies within
+/// the checked bound in the lanes and points in use (see the module documentation): the
+/// normal, tangents and their per-mass forms, the arms and their inertia products, the
+/// effective masses (rigid and soft), the separations at the start of the step, the twist
+/// arms and the friction coefficients. Checked once per step, so that the kernels check
+/// only what changes: velocities, motions, impulses and what they compute. False when `R`
+/// is not I32F32 or the processor has no kernels.
+pub(super) fn coefficients_in_bound<R: Real>(block: &ContactBlock<R>) -> bool {
+    if !has_kernels() {
+        return false;
+    }
+    let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
+        return false;
+    };
+    // SAFETY: AVX-512F and DQ were detected on this processor just above.
+    unsafe { check_coefficients(block) }
+}
+
+/// [`coefficients_in_bound`] for I32F32.
+///
+/// # Safety
+/// The processor must have AVX-512F and AVX-512DQ.
+#[target_feature(enable = "avx512f,avx512dq")]
+unsafe fn check_coefficients(block: &ContactBlock<Fx>) -> bool {
+    let active = ((1u16 << block.len) - 1) as __mmask8;
+    let vectors = |lanes: &[&Lanes3<Fx>]| {
+        lanes
+            .iter()
+            .fold(0, |bad, &v| bad | out_of_bound3(load3(v)))
+    };
+    let scalars =
+        |lanes: &[&Lanes<Fx>]| lanes.iter().fold(0, |bad, &x| bad | out_of_bound(load(x)));
+    let f = &block.friction_rows;
+    let mut bad = (vectors(&[
+        &block.normal,
+        &block.normal_a,
+        &block.normal_b,
+        &block.tangents[0],
+        &block.tangents[1],
+        &block.tangents_a[0],
+        &block.tangents_a[1],
+        &block.tangents_b[0],
+        &block.tangents_b[1],
+        &f.rt_a[0],
+        &f.rt_a[1],
+        &f.rt_b[0],
+        &f.rt_b[1],
+        &f.it_a[0],
+        &f.it_a[1],
+        &f.it_b[0],
+        &f.it_b[1],
+        &f.twist_a,
+        &f.twist_b,
+    ]) | scalars(&[
+        &block.friction,
+        &f.tangent_mass[0],
+        &f.tangent_mass[1],
+        &f.twist_mass,
+    ])) & active;
+    // SAFETY: 64 readable bytes.
+    let counts = unsafe { _mm512_loadu_si512(block.count.map(i64::from).as_ptr().cast()) };
+    for (k, cp) in block.points.iter().enumerate() {
+        let in_use = _mm512_cmpgt_epi64_mask(counts, _mm512_set1_epi64(k as i64)) & active;
+        bad |= (vectors(&[&cp.rn_a, &cp.rn_b, &cp.in_a, &cp.in_b])
+            | scalars(&[
+                &cp.normal_mass,
+                &cp.soft_normal_mass,
+                &cp.base_separation,
+                &cp.twist_arm,
+            ]))
+            & in_use;
+    }
+    bad == 0
 }
 
 /// The warm start kernel: per point, v_a −= λ_n n/m_a, ω_a −= λ_n I_a⁻¹(r_a × n), and the
@@ -150,7 +233,6 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
     let zero = _mm512_setzero_si512();
     let normal_a = load3(&block.normal_a);
     let normal_b = load3(&block.normal_b);
-    bad |= (out_of_bound3(normal_a) | out_of_bound3(normal_b)) & active;
     // SAFETY: 64 readable bytes.
     let counts = unsafe { _mm512_loadu_si512(block.count.map(i64::from).as_ptr().cast()) };
     for (k, cp) in block.points.iter().enumerate() {
@@ -160,7 +242,7 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
         }
         let n = select(in_use, load(&cp.normal_impulse), zero);
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
-        bad |= (out_of_bound(n) | out_of_bound3(in_a) | out_of_bound3(in_b)) & in_use;
+        bad |= out_of_bound(n) & in_use;
         bad |= Side::exchange(
             (&mut side_a, &mut side_b),
             [
@@ -185,20 +267,7 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
         select(active, load(&f.tangent_impulse[1]), zero),
     ];
     let twist = select(active, load(&f.twist_impulse), zero);
-    bad |= (out_of_bound3(tangents_a[0])
-        | out_of_bound3(tangents_a[1])
-        | out_of_bound3(tangents_b[0])
-        | out_of_bound3(tangents_b[1])
-        | out_of_bound3(it_a[0])
-        | out_of_bound3(it_a[1])
-        | out_of_bound3(it_b[0])
-        | out_of_bound3(it_b[1])
-        | out_of_bound3(twist_a)
-        | out_of_bound3(twist_b)
-        | out_of_bound(t[0])
-        | out_of_bound(t[1])
-        | out_of_bound(twist))
-        & active;
+    bad |= (out_of_bound(t[0]) | out_of_bound(t[1]) | out_of_bound(twist)) & active;
     let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], t[0]), mul3(a[1], t[1]));
     bad |= Side::exchange(
         (&mut side_a, &mut side_b),
@@ -231,6 +300,14 @@ fn load(lanes: &Lanes<Fx>) -> __m512i {
 fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
     // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
     unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) }
+}
+
+/// Writes the lanes of `mask` to a lane array; the others keep their values.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn store_lanes(lanes: &mut Lanes<Fx>, mask: __mmask8, value: __m512i) {
+    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
+    unsafe { _mm512_mask_storeu_epi64(lanes.as_mut_ptr().cast(), mask, value) }
 }
 
 #[inline]
@@ -507,13 +584,16 @@ impl BodyLanes {
     }
 }
 
-/// The kernel. Returns false, having written nothing, when a value leaves the checked
-/// bound in a lane in use.
+/// The kernel, for the biased pass or (`RELAX`) the relax pass. Returns false, having
+/// written nothing, when a value leaves the checked bound in a lane in use.
+///
+/// The biased pass reads the separations the block keeps; the relax pass computes them
+/// from the bodies' motions and keeps them (as [`ContactBlock::solve_lanes`] does).
 ///
 /// # Safety
 /// The processor must have AVX-512F and AVX-512DQ.
 #[target_feature(enable = "avx512f,avx512dq")]
-unsafe fn solve_block(
+unsafe fn solve_block<const RELAX: bool>(
     block: &mut ContactBlock<Fx>,
     bodies: &mut [SolverBody<Fx>],
     pass: &SolvePass<Fx>,
@@ -523,11 +603,10 @@ unsafe fn solve_block(
     };
     let active = lanes.active;
     // SAFETY: `BodyLanes::new` checked every active lane's index.
-    let (mut side_a, mut side_b) = unsafe { lanes.gather(true) };
+    let (mut side_a, mut side_b) = unsafe { lanes.gather(RELAX) };
     let mut bad = side_a.out_of_bound() | side_b.out_of_bound();
 
     let zero = _mm512_setzero_si512();
-    let one = splat(Fx::ONE);
     let rigid_partner = block
         .rigid_partner
         .iter()
@@ -541,12 +620,10 @@ unsafe fn solve_block(
         )
     };
     let bias_rate = soft(|s| s.bias_rate);
-    let mass_scale = soft(|s| s.mass_scale);
     let impulse_scale = soft(|s| s.impulse_scale);
     let inv_h = splat(pass.inv_h);
     let lowest_bias = splat(-pass.max_push);
     bad |= (out_of_bound(bias_rate)
-        | out_of_bound(mass_scale)
         | out_of_bound(impulse_scale)
         | out_of_bound(inv_h)
         | out_of_bound(lowest_bias))
@@ -555,33 +632,43 @@ unsafe fn solve_block(
     let normal = load3(&block.normal);
     let normal_a = load3(&block.normal_a);
     let normal_b = load3(&block.normal_b);
-    bad |= (out_of_bound3(normal) | out_of_bound3(normal_a) | out_of_bound3(normal_b)) & active;
     let counts = block.count.map(i64::from);
     // SAFETY: 64 readable bytes.
     let counts = unsafe { _mm512_loadu_si512(counts.as_ptr().cast()) };
     let points_in_use =
         |k: usize| _mm512_cmpgt_epi64_mask(counts, _mm512_set1_epi64(k as i64)) & active;
 
-    // Normal impulses.
-    let moved = sub3(side_b.dp, side_a.dp);
-    bad |= out_of_bound3(moved) & active;
-    let moved_apart = dot3(moved, normal);
-    // The separations first, so that the motions are no longer needed in the loop below.
+    // Normal impulses. The separations first: kept by the block in the biased pass,
+    // computed from the motions in the relax pass, which then no longer needs them.
     let mut separations = [zero; 4];
-    for (k, cp) in block.points.iter().enumerate() {
-        let in_use = points_in_use(k);
-        if in_use == 0 {
-            continue;
+    if RELAX {
+        let moved = sub3(side_b.dp, side_a.dp);
+        bad |= out_of_bound3(moved) & active;
+        let moved_apart = dot3(moved, normal);
+        for (k, cp) in block.points.iter().enumerate() {
+            let in_use = points_in_use(k);
+            if in_use == 0 {
+                continue;
+            }
+            let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
+            let base_separation = load(&cp.base_separation);
+            let s = sub(
+                add(add(base_separation, moved_apart), dot3(side_b.dtheta, rn_b)),
+                dot3(side_a.dtheta, rn_a),
+            );
+            bad |= out_of_bound(s) & in_use;
+            separations[k] = s;
         }
-        let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
-        let base_separation = load(&cp.base_separation);
-        bad |= (out_of_bound3(rn_a) | out_of_bound3(rn_b) | out_of_bound(base_separation)) & in_use;
-        let s = sub(
-            add(add(base_separation, moved_apart), dot3(side_b.dtheta, rn_b)),
-            dot3(side_a.dtheta, rn_a),
-        );
-        bad |= out_of_bound(s) & in_use;
-        separations[k] = s;
+    } else {
+        for (k, cp) in block.points.iter().enumerate() {
+            let in_use = points_in_use(k);
+            if in_use == 0 {
+                continue;
+            }
+            let s = load(&cp.separation);
+            bad |= out_of_bound(s) & in_use;
+            separations[k] = s;
+        }
     }
     let mut normal_impulses = [zero; 4];
     let mut max_normal_impulses = [zero; 4];
@@ -596,24 +683,14 @@ unsafe fn solve_block(
         let normal_mass = load(&cp.normal_mass);
         let old = load(&cp.normal_impulse);
         let old_max = load(&cp.max_normal_impulse);
-        bad |= (out_of_bound3(in_a)
-            | out_of_bound3(in_b)
-            | out_of_bound(normal_mass)
-            | out_of_bound(old)
-            | out_of_bound(old_max))
-            & in_use;
+        bad |= (out_of_bound(old) | out_of_bound(old_max)) & in_use;
         let s = separations[k];
         let apart = _mm512_cmpgt_epi64_mask(s, zero);
-        let speculative_bias = mul(s, inv_h);
-        let (bias, scale_mass, scale_impulse) = if pass.use_bias {
-            let soft_bias = _mm512_max_epi64(mul(bias_rate, s), lowest_bias);
-            (
-                select(apart, speculative_bias, soft_bias),
-                select(apart, one, mass_scale),
-                select(apart, zero, impulse_scale),
-            )
+        // s/h for the points still apart (s·inv_h is only computed when there are some).
+        let speculative_bias = if apart & in_use != 0 {
+            mul(s, inv_h)
         } else {
-            (select(apart, speculative_bias, zero), one, zero)
+            zero
         };
         let dv = sub3(side_b.v, side_a.v);
         bad |= out_of_bound3(dv) & in_use;
@@ -621,10 +698,19 @@ unsafe fn solve_block(
             add(dot3(dv, normal), dot3(side_b.w, rn_b)),
             dot3(side_a.w, rn_a),
         );
-        let biased = add(vn, bias);
-        let mass = mul(normal_mass, scale_mass);
-        bad |= (out_of_bound(biased) | out_of_bound(mass)) & in_use;
-        let impulse = sub(sub(zero, mul(mass, biased)), mul(scale_impulse, old));
+        let impulse = if RELAX {
+            let biased = add(vn, select(apart, speculative_bias, zero));
+            bad |= out_of_bound(biased) & in_use;
+            sub(zero, mul(normal_mass, biased))
+        } else {
+            let soft_mass = load(&cp.soft_normal_mass);
+            let soft_bias = _mm512_max_epi64(mul(bias_rate, s), lowest_bias);
+            let biased = add(vn, select(apart, speculative_bias, soft_bias));
+            let mass = select(apart, normal_mass, soft_mass);
+            let scale_impulse = select(apart, zero, impulse_scale);
+            bad |= out_of_bound(biased) & in_use;
+            sub(sub(zero, mul(mass, biased)), mul(scale_impulse, old))
+        };
         let new = _mm512_max_epi64(add(old, impulse), zero);
         let applied = select(in_use, sub(new, old), zero);
         bad |= out_of_bound(applied) & in_use;
@@ -661,7 +747,6 @@ unsafe fn solve_block(
         normal_sum = add(normal_sum, impulse);
         if twisting != 0 {
             let arm = select(in_use, load(&cp.twist_arm), zero);
-            bad |= out_of_bound(arm) & in_use;
             twist_sum = add(twist_sum, mul(impulse, arm));
         }
     }
@@ -686,27 +771,7 @@ unsafe fn solve_block(
         let (twist_a, twist_b) = (load3(&f.twist_a), load3(&f.twist_b));
         let tangent_mass = [load(&f.tangent_mass[0]), load(&f.tangent_mass[1])];
         let twist_mass = load(&f.twist_mass);
-        bad |= (out_of_bound3(tangents[0])
-            | out_of_bound3(tangents[1])
-            | out_of_bound3(tangents_a[0])
-            | out_of_bound3(tangents_a[1])
-            | out_of_bound3(tangents_b[0])
-            | out_of_bound3(tangents_b[1])
-            | out_of_bound3(rt_a[0])
-            | out_of_bound3(rt_a[1])
-            | out_of_bound3(rt_b[0])
-            | out_of_bound3(rt_b[1])
-            | out_of_bound3(it_a[0])
-            | out_of_bound3(it_a[1])
-            | out_of_bound3(it_b[0])
-            | out_of_bound3(it_b[1])
-            | out_of_bound3(twist_a)
-            | out_of_bound3(twist_b)
-            | out_of_bound(tangent_mass[0])
-            | out_of_bound(tangent_mass[1])
-            | out_of_bound(twist_mass)
-            | out_of_bound(friction)
-            | out_of_bound(normal_sum)
+        bad |= (out_of_bound(normal_sum)
             | out_of_bound(twist_sum)
             | out_of_bound(old[0])
             | out_of_bound(old[1])
@@ -787,11 +852,15 @@ unsafe fn solve_block(
     }
 
     for (k, cp) in block.points.iter_mut().enumerate() {
-        if points_in_use(k) == 0 {
+        let in_use = points_in_use(k);
+        if in_use == 0 {
             continue;
         }
         store(&mut cp.normal_impulse, normal_impulses[k]);
         store(&mut cp.max_normal_impulse, max_normal_impulses[k]);
+        if RELAX {
+            store_lanes(&mut cp.separation, in_use, separations[k]);
+        }
     }
     let f = &mut block.friction_rows;
     store(&mut f.tangent_impulse[0], tangent_impulses[0]);
