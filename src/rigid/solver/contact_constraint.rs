@@ -147,11 +147,10 @@ pub(crate) struct ContactBlock<R: Real> {
     len: usize,
     /// Whether the lanes share no moving body, so that they may be solved side by side.
     independent: bool,
-    /// Whether every coefficient the passes read and do not change (all but the bodies and
-    /// the impulses) lies within the AVX-512 kernels' bound, checked once per step by
-    /// [`soften`](Self::soften); the kernels take only such blocks.
+    /// What the AVX-512 kernels need to know of the block's coefficients, found once per
+    /// step by [`soften`](Self::soften).
     #[cfg(target_arch = "x86_64")]
-    coefficients_in_bound: bool,
+    kernel: avx512::KernelFacts,
     /// Solver indices of the two bodies.
     a: [u32; LANES],
     b: [u32; LANES],
@@ -215,7 +214,7 @@ impl<R: Real> ContactBlock<R> {
             len: 0,
             independent: false,
             #[cfg(target_arch = "x86_64")]
-            coefficients_in_bound: false,
+            kernel: avx512::KernelFacts::NONE,
             a: [0; LANES],
             b: [0; LANES],
             contact: [0; LANES],
@@ -241,7 +240,7 @@ impl<R: Real> ContactBlock<R> {
         self.independent = independent;
         #[cfg(target_arch = "x86_64")]
         {
-            self.coefficients_in_bound = false;
+            self.kernel = avx512::KernelFacts::NONE;
         }
     }
 

@@ -47,6 +47,11 @@
 //! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
 //! Σ r + 2³¹ < 2³⁴ cannot overflow.
 //!
+//! A product λ n/m_a and λ n/m_b (likewise λ t/m) is the same bits on both sides when
+//! the two bodies have the same inverse mass, and zero on a side whose inverse mass is
+//! zero; when that holds in every lane of a block ([`KernelFacts`]), the kernels compute
+//! it once and apply it to the sides that move.
+//!
 //! The friction rows are one set per lane (two tangents at the friction centre and a twist
 //! about the normal), after the lane's normal rows. The clamp of the tangent impulse to its
 //! disc, which needs 1/√x, runs per lane in scalar code with the checked operators, in the
@@ -58,11 +63,12 @@ pub(super) use prepare::prepare;
 
 use core::any::Any;
 use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
-    _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
-    _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64, _mm512_mask_storeu_epi64,
-    _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_set1_epi64,
-    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
+    __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
+    _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512,
+    _mm512_mask_blend_epi64, _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64,
+    _mm512_mask_storeu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64,
+    _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
+    _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -101,7 +107,7 @@ pub(super) fn solve<R: Real>(
     bodies: &mut [SolverBody<R>],
     pass: &SolvePass<R>,
 ) -> bool {
-    if !has_kernels() || !block.coefficients_in_bound {
+    if !has_kernels() || !block.kernel.in_bound {
         return false;
     }
     let (Some(block), Some(pass)) = (
@@ -125,7 +131,7 @@ pub(super) fn solve<R: Real>(
 /// Warm starting of `block` with the kernel, under the same conditions as [`solve`];
 /// returns whether it ran (if not, nothing was written).
 pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverBody<R>]) -> bool {
-    if !has_kernels() || !block.coefficients_in_bound {
+    if !has_kernels() || !block.kernel.in_bound {
         return false;
     }
     let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
@@ -137,30 +143,57 @@ pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverB
     unsafe { warm_start_block(block, bodies) }
 }
 
-/// Whether every coefficient of `block` that the passes read and do not change lies within
-/// the checked bound in the lanes and points in use (see the module documentation): the
-/// normal, tangents and their per-mass forms, the arms and their inertia products, the
-/// effective masses (rigid and soft), the separations at the start of the step, the twist
-/// arms and the friction coefficients. Checked once per step, so that the kernels check
-/// only what changes: velocities, motions, impulses and what they compute. False when `R`
-/// is not I32F32 or the processor has no kernels.
-pub(super) fn coefficients_in_bound<R: Real>(block: &ContactBlock<R>) -> bool {
-    if !has_kernels() {
-        return false;
-    }
-    let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
-        return false;
-    };
-    // SAFETY: AVX-512F and DQ were detected on this processor just above.
-    unsafe { check_coefficients(block) }
+/// What the kernels need to know of a block's coefficients, which do not change during a
+/// step: found once per step ([`KernelFacts::of`]).
+#[derive(Clone, Copy, Debug)]
+#[cfg_attr(test, derive(PartialEq))]
+pub(super) struct KernelFacts {
+    /// Whether every coefficient the passes read lies within the checked bound in the
+    /// lanes and points in use (see the module documentation): the normal, tangents and
+    /// their per-mass forms, the arms and their inertia products, the effective masses
+    /// (rigid and soft), the separations at the start of the step, the twist arms and the
+    /// friction coefficients. The kernels take only such blocks, and check only what
+    /// changes: velocities, motions, impulses and what they compute.
+    in_bound: bool,
+    /// Whether, in every lane in use, n/m_a and t/m_a equal n/m_b and t/m_b or one side's
+    /// are all zero (bodies of equal mass, or a body that does not move): then one product
+    /// λ n/m (and λ t/m) serves both sides, A's where B's are zero.
+    pub(super) linear_shared: bool,
+    /// The lanes whose side A (B) has a nonzero n/m or t/m: the lanes where a shared
+    /// product changes that side's velocity.
+    moving_a: __mmask8,
+    moving_b: __mmask8,
 }
 
-/// [`coefficients_in_bound`] for I32F32.
+impl KernelFacts {
+    /// Facts of a block the kernels do not take.
+    pub(super) const NONE: Self = Self {
+        in_bound: false,
+        linear_shared: false,
+        moving_a: 0,
+        moving_b: 0,
+    };
+
+    /// The facts of `block`, complete for the step; [`NONE`](Self::NONE) when `R` is not
+    /// I32F32 or the processor has no kernels.
+    pub(super) fn of<R: Real>(block: &ContactBlock<R>) -> Self {
+        if !has_kernels() {
+            return Self::NONE;
+        }
+        let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
+            return Self::NONE;
+        };
+        // SAFETY: AVX-512F and DQ were detected on this processor just above.
+        unsafe { facts(block) }
+    }
+}
+
+/// [`KernelFacts::of`] for I32F32.
 ///
 /// # Safety
 /// The processor must have AVX-512F and AVX-512DQ.
 #[target_feature(enable = "avx512f,avx512dq")]
-unsafe fn check_coefficients(block: &ContactBlock<Fx>) -> bool {
+unsafe fn facts(block: &ContactBlock<Fx>) -> KernelFacts {
     let active = ((1u16 << block.len) - 1) as __mmask8;
     let vectors = |lanes: &[&Lanes3<Fx>]| {
         lanes
@@ -209,7 +242,104 @@ unsafe fn check_coefficients(block: &ContactBlock<Fx>) -> bool {
             ]))
             & in_use;
     }
-    bad == 0
+    // The lanes where every component of the side's n/m and t/m is zero, and where the
+    // two sides' are equal.
+    let per_mass = |normal: &Lanes3<Fx>, tangents: &[Lanes3<Fx>; 2]| {
+        [load3(normal), load3(&tangents[0]), load3(&tangents[1])]
+    };
+    let side_a = per_mass(&block.normal_a, &block.tangents_a);
+    let side_b = per_mass(&block.normal_b, &block.tangents_b);
+    let zero = _mm512_setzero_si512();
+    let mut still_a = active;
+    let mut still_b = active;
+    let mut equal = active;
+    for (a, b) in side_a.iter().flatten().zip(side_b.iter().flatten()) {
+        still_a &= _mm512_cmpeq_epi64_mask(*a, zero);
+        still_b &= _mm512_cmpeq_epi64_mask(*b, zero);
+        equal &= _mm512_cmpeq_epi64_mask(*a, *b);
+    }
+    KernelFacts {
+        in_bound: bad == 0,
+        linear_shared: (still_a | still_b | equal) & active == active,
+        moving_a: active & !still_a,
+        moving_b: active & !still_b,
+    }
+}
+
+/// The velocity changes per unit impulse of a block's lanes, n/m and t/m, on each side, and
+/// how a product with them reaches the two sides.
+struct Linear {
+    /// n/m_a and n/m_b, or the shared coefficients on both sides.
+    normal: [[__m512i; 3]; 2],
+    /// t/m_a and t/m_b for the two tangents, likewise.
+    tangents: [[[__m512i; 3]; 2]; 2],
+    /// The lanes each side moves in when the coefficients are shared
+    /// ([`KernelFacts::linear_shared`]).
+    shared: Option<(__mmask8, __mmask8)>,
+}
+
+impl Linear {
+    /// The coefficients of `block`: when they are shared, B's where B moves and A's
+    /// elsewhere (where B's are zero), for both sides.
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512dq")]
+    fn of(block: &ContactBlock<Fx>) -> Self {
+        let (normal_a, normal_b) = (load3(&block.normal_a), load3(&block.normal_b));
+        let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
+        let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
+        let facts = &block.kernel;
+        if !facts.linear_shared {
+            return Self {
+                normal: [normal_a, normal_b],
+                tangents: [tangents_a, tangents_b],
+                shared: None,
+            };
+        }
+        let pick = |a: [__m512i; 3], b: [__m512i; 3]| {
+            [
+                select(facts.moving_b, b[0], a[0]),
+                select(facts.moving_b, b[1], a[1]),
+                select(facts.moving_b, b[2], a[2]),
+            ]
+        };
+        let normal = pick(normal_a, normal_b);
+        let tangents = [
+            pick(tangents_a[0], tangents_b[0]),
+            pick(tangents_a[1], tangents_b[1]),
+        ];
+        Self {
+            normal: [normal; 2],
+            tangents: [tangents; 2],
+            shared: Some((facts.moving_a, facts.moving_b)),
+        }
+    }
+
+    /// (Δv_a, Δv_b) = (λ n/m_a, λ n/m_b), each product rounded as `Vec3 * R`.
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512dq")]
+    fn along_normal(&self, impulse: __m512i) -> ([__m512i; 3], [__m512i; 3]) {
+        match self.shared {
+            Some((moving_a, moving_b)) => {
+                let change = mul3(self.normal[0], impulse);
+                (keep3(moving_a, change), keep3(moving_b, change))
+            }
+            None => (mul3(self.normal[0], impulse), mul3(self.normal[1], impulse)),
+        }
+    }
+
+    /// (Δv_a, Δv_b) = (λ₁ t₁/m_a + λ₂ t₂/m_a, λ₁ t₁/m_b + λ₂ t₂/m_b).
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512dq")]
+    fn along_tangents(&self, impulses: [__m512i; 2]) -> ([__m512i; 3], [__m512i; 3]) {
+        let along = |t: &[[__m512i; 3]; 2]| add3(mul3(t[0], impulses[0]), mul3(t[1], impulses[1]));
+        match self.shared {
+            Some((moving_a, moving_b)) => {
+                let change = along(&self.tangents[0]);
+                (keep3(moving_a, change), keep3(moving_b, change))
+            }
+            None => (along(&self.tangents[0]), along(&self.tangents[1])),
+        }
+    }
 }
 
 /// The warm start kernel: per point, v_a −= λ_n n/m_a, ω_a −= λ_n I_a⁻¹(r_a × n), and the
@@ -231,8 +361,7 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
     let (mut side_a, mut side_b) = unsafe { lanes.gather(false) };
     let mut bad = side_a.out_of_bound() | side_b.out_of_bound();
     let zero = _mm512_setzero_si512();
-    let normal_a = load3(&block.normal_a);
-    let normal_b = load3(&block.normal_b);
+    let linear = Linear::of(block);
     // SAFETY: 64 readable bytes.
     let counts = unsafe { _mm512_loadu_si512(block.count.map(i64::from).as_ptr().cast()) };
     for (k, cp) in block.points.iter().enumerate() {
@@ -243,22 +372,16 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
         let n = select(in_use, load(&cp.normal_impulse), zero);
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
         bad |= out_of_bound(n) & in_use;
+        let (dv_a, dv_b) = linear.along_normal(n);
         bad |= Side::exchange(
             (&mut side_a, &mut side_b),
-            [
-                mul3(normal_a, n),
-                mul3(in_a, n),
-                mul3(normal_b, n),
-                mul3(in_b, n),
-            ],
+            [dv_a, mul3(in_a, n), dv_b, mul3(in_b, n)],
         ) & active;
         if bad != 0 {
             return false;
         }
     }
     let f = &block.friction_rows;
-    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
-    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
     let it_a = [load3(&f.it_a[0]), load3(&f.it_a[1])];
     let it_b = [load3(&f.it_b[0]), load3(&f.it_b[1])];
     let (twist_a, twist_b) = (load3(&f.twist_a), load3(&f.twist_b));
@@ -269,12 +392,13 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
     let twist = select(active, load(&f.twist_impulse), zero);
     bad |= (out_of_bound(t[0]) | out_of_bound(t[1]) | out_of_bound(twist)) & active;
     let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], t[0]), mul3(a[1], t[1]));
+    let (dv_a, dv_b) = linear.along_tangents(t);
     bad |= Side::exchange(
         (&mut side_a, &mut side_b),
         [
-            along(tangents_a),
+            dv_a,
             add3(along(it_a), mul3(twist_a, twist)),
-            along(tangents_b),
+            dv_b,
             add3(along(it_b), mul3(twist_b, twist)),
         ],
     ) & active;
@@ -403,6 +527,13 @@ fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
 #[target_feature(enable = "avx512f,avx512dq")]
 fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
     _mm512_mask_blend_epi64(mask, off, on)
+}
+
+/// `value` in the lanes of `mask`, zero elsewhere.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn keep3(mask: __mmask8, value: [__m512i; 3]) -> [__m512i; 3] {
+    value.map(|x| _mm512_maskz_mov_epi64(mask, x))
 }
 
 /// The same value in every lane.
@@ -630,8 +761,7 @@ unsafe fn solve_block<const RELAX: bool>(
         & active;
 
     let normal = load3(&block.normal);
-    let normal_a = load3(&block.normal_a);
-    let normal_b = load3(&block.normal_b);
+    let linear = Linear::of(block);
     let counts = block.count.map(i64::from);
     // SAFETY: 64 readable bytes.
     let counts = unsafe { _mm512_loadu_si512(counts.as_ptr().cast()) };
@@ -714,14 +844,10 @@ unsafe fn solve_block<const RELAX: bool>(
         let new = _mm512_max_epi64(add(old, impulse), zero);
         let applied = select(in_use, sub(new, old), zero);
         bad |= out_of_bound(applied) & in_use;
+        let (dv_a, dv_b) = linear.along_normal(applied);
         bad |= Side::exchange(
             (&mut side_a, &mut side_b),
-            [
-                mul3(normal_a, applied),
-                mul3(in_a, applied),
-                mul3(normal_b, applied),
-                mul3(in_b, applied),
-            ],
+            [dv_a, mul3(in_a, applied), dv_b, mul3(in_b, applied)],
         ) & active;
         normal_impulses[k] = select(in_use, new, old);
         max_normal_impulses[k] = select(in_use, _mm512_max_epi64(old_max, applied), old_max);
@@ -751,8 +877,6 @@ unsafe fn solve_block<const RELAX: bool>(
         }
     }
     let tangents = [load3(&block.tangents[0]), load3(&block.tangents[1])];
-    let tangents_a = [load3(&block.tangents_a[0]), load3(&block.tangents_a[1])];
-    let tangents_b = [load3(&block.tangents_b[0]), load3(&block.tangents_b[1])];
     let friction = load(&block.friction);
     let old = [load(&f.tangent_impulse[0]), load(&f.tangent_impulse[1])];
     let old_twist = load(&f.twist_impulse);
@@ -804,14 +928,10 @@ unsafe fn solve_block<const RELAX: bool>(
         ];
         bad |= (out_of_bound(applied[0]) | out_of_bound(applied[1])) & in_use;
         let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], applied[0]), mul3(a[1], applied[1]));
+        let (dv_a, dv_b) = linear.along_tangents(applied);
         bad |= Side::exchange(
             (&mut side_a, &mut side_b),
-            [
-                along(tangents_a),
-                along(it_a),
-                along(tangents_b),
-                along(it_b),
-            ],
+            [dv_a, along(it_a), dv_b, along(it_b)],
         ) & active;
         tangent_impulses = [
             select(in_use, new[0], old[0]),

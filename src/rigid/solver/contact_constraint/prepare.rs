@@ -216,7 +216,7 @@ impl<R: Real> ContactBlock<R> {
         }
         #[cfg(target_arch = "x86_64")]
         {
-            self.coefficients_in_bound = super::avx512::coefficients_in_bound(self);
+            self.kernel = super::avx512::KernelFacts::of(self);
         }
     }
 

@@ -22,14 +22,17 @@ fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
 }
 
 /// `count` moving bodies after the static body, with velocities and motions up to
-/// `scale`, masses from 0.01 to 100 kg and inertias to match; every fifth one kinematic
-/// (zero inverse mass and inertia).
-fn bodies(rng: &mut Pcg32, count: usize, scale: f64) -> Vec<SolverBody<Fx>> {
+/// `scale`, masses from 0.01 to 100 kg (all the same one when `same_mass`) and inertias
+/// to match; every fifth one kinematic (zero inverse mass and inertia).
+fn bodies(rng: &mut Pcg32, count: usize, scale: f64, same_mass: bool) -> Vec<SolverBody<Fx>> {
     let mut bodies = vec![SolverBody::default()];
+    let common = rng.range(Fx::from_f64(0.01), Fx::from_int(100));
     for i in 0..count {
         let kinematic = i % 5 == 4;
         let inv_mass = if kinematic {
             Fx::ZERO
+        } else if same_mass {
+            common
         } else {
             rng.range(Fx::from_f64(0.01), Fx::from_int(100))
         };
@@ -207,14 +210,17 @@ fn run_passes(block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>], fast:
 }
 
 /// Runs `trials` random blocks at the given scales through both forms of the passes and
-/// returns how many of their passes the kernels took.
-fn compare(seed: u64, trials: usize, scale: f64, impulse: f64) -> usize {
+/// returns how many of their passes the kernels took and how many blocks shared the
+/// products λ n/m and λ t/m between their two sides. With `same_mass`, every body that
+/// moves has the same mass, so that they can.
+fn compare(seed: u64, trials: usize, scale: f64, impulse: f64, same_mass: bool) -> (usize, usize) {
     let mut rng = Pcg32::new(seed, 7);
     let mut kernel_runs = 0;
+    let mut shared = 0;
     for trial in 0..trials {
         let lanes = 1 + trial % LANES;
         let independent = trial % 7 != 6;
-        let bodies = bodies(&mut rng, 2 * LANES + 2, scale);
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scale, same_mass);
         let block = block(&mut rng, &bodies, lanes, independent, impulse);
         let (mut fast_bodies, mut fast_block) = (bodies.clone(), block.clone());
         let (mut slow_bodies, mut slow_block) = (bodies.clone(), block.clone());
@@ -235,8 +241,20 @@ fn compare(seed: u64, trials: usize, scale: f64, impulse: f64) -> usize {
                 }
             }
         }
+        shared += usize::from(shares_linear_products(&block));
     }
-    kernel_runs
+    (kernel_runs, shared)
+}
+
+/// Whether the kernels share the products λ n/m and λ t/m between the sides of `block`.
+#[cfg(target_arch = "x86_64")]
+fn shares_linear_products(block: &ContactBlock<Fx>) -> bool {
+    block.kernel.linear_shared
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn shares_linear_products(_: &ContactBlock<Fx>) -> bool {
+    false
 }
 
 /// Whether the solve kernel takes `block` (a copy of it: nothing is kept).
@@ -266,7 +284,7 @@ const fn independent_passes(trials: usize) -> usize {
 
 #[test]
 fn blocks_at_everyday_magnitudes_match_the_lanes() {
-    let runs = compare(1, 400, 5.0, 5.0);
+    let (runs, _) = compare(1, 400, 5.0, 5.0, false);
     if kernels_present() {
         // Everyday values stay inside the kernel's bound: it takes every independent block.
         assert_eq!(runs, independent_passes(400));
@@ -274,9 +292,20 @@ fn blocks_at_everyday_magnitudes_match_the_lanes() {
 }
 
 #[test]
+fn blocks_of_equal_masses_match_the_lanes() {
+    let (runs, shared) = compare(7, 400, 5.0, 5.0, true);
+    if kernels_present() {
+        assert_eq!(runs, independent_passes(400));
+        // Lanes of two moving bodies, with the static body or with a kinematic one: every
+        // block can share.
+        assert_eq!(shared, 400);
+    }
+}
+
+#[test]
 fn blocks_near_the_kernel_bound_match_the_lanes() {
     // Velocities and impulses near 2¹⁴: some blocks pass the check, some do not.
-    let runs = compare(2, 400, 4_000.0, 4_000.0);
+    let (runs, _) = compare(2, 400, 4_000.0, 4_000.0, false);
     if kernels_present() {
         assert!(
             runs > 0 && runs < independent_passes(400),
@@ -288,7 +317,7 @@ fn blocks_near_the_kernel_bound_match_the_lanes() {
 #[test]
 fn blocks_that_saturate_match_the_lanes() {
     // Values near the ends of the range: the kernel refuses, the lanes saturate and count.
-    let runs = compare(3, 100, 1.0e9, 1.0e9);
+    let (runs, _) = compare(3, 100, 1.0e9, 1.0e9, false);
     assert_eq!(runs, 0);
 }
 
@@ -299,7 +328,7 @@ fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usiz
     let mut kernel_runs = 0;
     for trial in 0..trials {
         let lanes = 1 + trial % LANES;
-        let bodies = bodies(&mut rng, 2 * LANES + 2, scale);
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scale, false);
         let (block, arms) = lanes_of(&mut rng, &bodies, lanes, trial % 7 != 6, 1.0, reach);
         let (mut fast, mut slow) = (block.clone(), block.clone());
         let (took, fast_saturations) =
