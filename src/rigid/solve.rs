@@ -62,7 +62,7 @@ impl<R: Real> RigidSystem<R> {
         for _ in 0..substeps {
             solver.integrate_velocities(bodies, h, gravity);
             let (blocks, solver_bodies) = solver.blocks_and_bodies();
-            for block in blocks.iter() {
+            for block in blocks.iter_mut() {
                 block.warm_start(solver_bodies);
             }
             for block in blocks.iter_mut() {

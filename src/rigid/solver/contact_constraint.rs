@@ -251,9 +251,9 @@ impl<R: Real> ContactBlock<R> {
     ///
     /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
     /// processor has it ([`avx512`]), which gives the same bits.
-    pub fn warm_start(&self, bodies: &mut [SolverBody<R>]) {
+    pub fn warm_start(&mut self, bodies: &mut [SolverBody<R>]) {
         #[cfg(target_arch = "x86_64")]
-        if self.independent && avx512::warm_start(self, bodies) {
+        if self.independent && avx512::warm_start(self, bodies).is_some() {
             return;
         }
         self.warm_start_lanes(bodies);
@@ -313,7 +313,7 @@ impl<R: Real> ContactBlock<R> {
     /// processor has it ([`avx512`]), which gives the same bits.
     pub fn solve(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
         #[cfg(target_arch = "x86_64")]
-        if self.independent && avx512::solve(self, bodies, pass) {
+        if self.independent && avx512::solve(self, bodies, pass).is_some() {
             return;
         }
         self.solve_lanes(bodies, pass);

@@ -1,6 +1,6 @@
-//! The solve pass of an independent block of I32F32 constraints in AVX-512 (F and DQ):
-//! the eight lanes side by side, one `i64` lane per constraint, with the bits of
-//! [`ContactBlock::solve_lanes`].
+//! The solve and warm-start passes of an independent block of I32F32 constraints in
+//! AVX-512 (F and DQ): the eight lanes side by side, one `i64` lane per constraint, with
+//! the bits of [`ContactBlock::solve_lanes`] and [`ContactBlock::warm_start_lanes`].
 //!
 //! # Why side by side gives the same bits
 //!
@@ -16,8 +16,8 @@
 //! order, modulo 2⁶⁴. Every value it loads (body velocities and motions, constraint
 //! coefficients, impulses, kept separations) and every value that enters a product is
 //! checked to lie in [−2⁴⁶, 2⁴⁶) as raw bits (|x| ≤ 16384 in I32F32): the coefficients,
-//! which do not change during a step, once per step ([`coefficients_in_bound`]), the
-//! rest in the kernels. Then:
+//! which do not change during a step, once per step ([`KernelFacts`]), the rest in the
+//! kernels. Then:
 //!
 //! * a product a·b of checked values is at most 2⁹² before rounding, 2⁶⁰ after;
 //! * a dot product of three is at most 3·2⁹² before rounding, below 2⁶² after;
@@ -46,6 +46,25 @@
 //! 0 ≤ r < 2³², so that
 //! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
 //! Σ r + 2³¹ < 2³⁴ cannot overflow.
+//!
+//! # Narrow products
+//!
+//! When one factor a lies in [−2³¹, 2³¹) (|a| < ½), it is its own low half (a_h = 0) and
+//! the product needs two multiplies of 32-bit halves, both exact in 64 bits:
+//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋ ([`times`]), about half the work of the
+//! wide form. In a contact row one factor of most products is small in SI units: a
+//! velocity (the dot products v·n, ω·(r × n), and the motions of the relax pass), or a
+//! velocity change per unit impulse (n/m, I⁻¹(r × n) and the like, below ½ for bodies
+//! above 2 kg) multiplying an impulse. Each kernel therefore comes twice: a narrow one,
+//! tried first when a block's velocity changes per unit impulse are all below ½
+//! ([`KernelFacts`]), which checks its velocities against 2³¹ (and the rest against 2⁴⁶)
+//! and keeps the wide form for the few products of two large factors (effective mass
+//! times biased velocity, friction coefficient times total impulse, squared impulses); and
+//! the wide one above, which a block takes when a narrow check fails (it has written
+//! nothing then), for the rest of the step. Both compute the same exact values, so the
+//! bits are those of the lanes either way. The bounds of the sums above hold a fortiori.
+//!
+//! # Shared products
 //!
 //! A product λ n/m_a and λ n/m_b (likewise λ t/m) is the same bits on both sides when
 //! the two bodies have the same inverse mass, and zero on a side whose inverse mass is
@@ -100,47 +119,79 @@ pub(super) fn has_kernels() -> bool {
         && std::arch::is_x86_feature_detected!("avx512dq")
 }
 
-/// Solves `block` with the kernel when `R` is I32F32, the block is independent and the
-/// processor has AVX-512F and DQ; returns whether it did (if not, nothing was written).
+/// The kernel that took a block: with narrow products, or wide ones ([`times`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Kernel {
+    Narrow,
+    Wide,
+}
+
+/// Solves `block` with a kernel when `R` is I32F32, the block is independent and the
+/// processor has AVX-512F and DQ, and tells which kernel took it: the narrow one when the
+/// block's facts allow it and every value stays within its bound, else the wide one; none
+/// (having written nothing) when a value leaves the wide bound too.
 pub(super) fn solve<R: Real>(
     block: &mut ContactBlock<R>,
     bodies: &mut [SolverBody<R>],
     pass: &SolvePass<R>,
-) -> bool {
+) -> Option<Kernel> {
     if !has_kernels() || !block.kernel.in_bound {
-        return false;
+        return None;
     }
     let (Some(block), Some(pass)) = (
         (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>(),
         (pass as &dyn Any).downcast_ref::<SolvePass<Fx>>(),
     ) else {
-        return false;
+        return None;
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
     // SAFETY: AVX-512F and DQ were detected on this processor just above.
-    unsafe {
-        if pass.use_bias {
-            solve_block::<false>(block, bodies, pass)
-        } else {
-            solve_block::<true>(block, bodies, pass)
-        }
+    let narrow = block.kernel.narrow
+        && unsafe {
+            if pass.use_bias {
+                solve_block::<false, true>(block, bodies, pass)
+            } else {
+                solve_block::<true, true>(block, bodies, pass)
+            }
+        };
+    if narrow {
+        return Some(Kernel::Narrow);
     }
+    // A block that left the narrow bound (moving fast, pushing hard) is likely to leave it
+    // again: the rest of the step goes straight to the wide kernel.
+    block.kernel.narrow = false;
+    // SAFETY: as above.
+    let wide = unsafe {
+        if pass.use_bias {
+            solve_block::<false, false>(block, bodies, pass)
+        } else {
+            solve_block::<true, false>(block, bodies, pass)
+        }
+    };
+    wide.then_some(Kernel::Wide)
 }
 
-/// Warm starting of `block` with the kernel, under the same conditions as [`solve`];
-/// returns whether it ran (if not, nothing was written).
-pub(super) fn warm_start<R: Real>(block: &ContactBlock<R>, bodies: &mut [SolverBody<R>]) -> bool {
+/// Warm starts `block` with a kernel, under the same conditions as [`solve`], and tells
+/// which kernel took it (none: nothing was written).
+pub(super) fn warm_start<R: Real>(
+    block: &mut ContactBlock<R>,
+    bodies: &mut [SolverBody<R>],
+) -> Option<Kernel> {
     if !has_kernels() || !block.kernel.in_bound {
-        return false;
+        return None;
     }
-    let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
-        return false;
-    };
+    let block = (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>()?;
     // SAFETY: `R` is `Fx` (the downcast succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
     // SAFETY: AVX-512F and DQ were detected on this processor just above.
-    unsafe { warm_start_block(block, bodies) }
+    if block.kernel.narrow && unsafe { warm_start_block::<true>(block, bodies) } {
+        return Some(Kernel::Narrow);
+    }
+    // As in `solve`: the rest of the step goes to the wide kernel.
+    block.kernel.narrow = false;
+    // SAFETY: as above.
+    unsafe { warm_start_block::<false>(block, bodies) }.then_some(Kernel::Wide)
 }
 
 /// What the kernels need to know of a block's coefficients, which do not change during a
@@ -163,6 +214,11 @@ pub(super) struct KernelFacts {
     /// product changes that side's velocity.
     moving_a: __mmask8,
     moving_b: __mmask8,
+    /// Whether every velocity change per unit impulse (n/m, t/m, I⁻¹(r × n), I⁻¹(r × t),
+    /// I⁻¹n) lies within the narrow bound [−2³¹, 2³¹) in the lanes and points in use
+    /// (bodies heavier than 2 kg, with inertias to match): then the kernels try narrow
+    /// products ([`times`]) first. Cleared for the rest of the step when they fail.
+    narrow: bool,
 }
 
 impl KernelFacts {
@@ -172,6 +228,7 @@ impl KernelFacts {
         linear_shared: false,
         moving_a: 0,
         moving_b: 0,
+        narrow: false,
     };
 
     /// The facts of `block`, complete for the step; [`NONE`](Self::NONE) when `R` is not
@@ -258,11 +315,36 @@ unsafe fn facts(block: &ContactBlock<Fx>) -> KernelFacts {
         still_b &= _mm512_cmpeq_epi64_mask(*b, zero);
         equal &= _mm512_cmpeq_epi64_mask(*a, *b);
     }
+    // The velocity changes per unit impulse, against the narrow bound.
+    let narrow = |lanes: &[&Lanes3<Fx>]| {
+        lanes
+            .iter()
+            .fold(0, |wide, &v| wide | beyond3::<true>(load3(v)))
+    };
+    let mut wide = narrow(&[
+        &block.normal_a,
+        &block.normal_b,
+        &block.tangents_a[0],
+        &block.tangents_a[1],
+        &block.tangents_b[0],
+        &block.tangents_b[1],
+        &f.it_a[0],
+        &f.it_a[1],
+        &f.it_b[0],
+        &f.it_b[1],
+        &f.twist_a,
+        &f.twist_b,
+    ]) & active;
+    for (k, cp) in block.points.iter().enumerate() {
+        let in_use = _mm512_cmpgt_epi64_mask(counts, _mm512_set1_epi64(k as i64)) & active;
+        wide |= narrow(&[&cp.in_a, &cp.in_b]) & in_use;
+    }
     KernelFacts {
         in_bound: bad == 0,
         linear_shared: (still_a | still_b | equal) & active == active,
         moving_a: active & !still_a,
         moving_b: active & !still_b,
+        narrow: wide == 0,
     }
 }
 
@@ -317,21 +399,32 @@ impl Linear {
     /// (Δv_a, Δv_b) = (λ n/m_a, λ n/m_b), each product rounded as `Vec3 * R`.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    fn along_normal(&self, impulse: __m512i) -> ([__m512i; 3], [__m512i; 3]) {
+    fn along_normal<const NARROW: bool>(&self, impulse: __m512i) -> ([__m512i; 3], [__m512i; 3]) {
         match self.shared {
             Some((moving_a, moving_b)) => {
-                let change = mul3(self.normal[0], impulse);
+                let change = times3::<NARROW>(self.normal[0], impulse);
                 (keep3(moving_a, change), keep3(moving_b, change))
             }
-            None => (mul3(self.normal[0], impulse), mul3(self.normal[1], impulse)),
+            None => (
+                times3::<NARROW>(self.normal[0], impulse),
+                times3::<NARROW>(self.normal[1], impulse),
+            ),
         }
     }
 
     /// (Δv_a, Δv_b) = (λ₁ t₁/m_a + λ₂ t₂/m_a, λ₁ t₁/m_b + λ₂ t₂/m_b).
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    fn along_tangents(&self, impulses: [__m512i; 2]) -> ([__m512i; 3], [__m512i; 3]) {
-        let along = |t: &[[__m512i; 3]; 2]| add3(mul3(t[0], impulses[0]), mul3(t[1], impulses[1]));
+    fn along_tangents<const NARROW: bool>(
+        &self,
+        impulses: [__m512i; 2],
+    ) -> ([__m512i; 3], [__m512i; 3]) {
+        let along = |t: &[[__m512i; 3]; 2]| {
+            add3(
+                times3::<NARROW>(t[0], impulses[0]),
+                times3::<NARROW>(t[1], impulses[1]),
+            )
+        };
         match self.shared {
             Some((moving_a, moving_b)) => {
                 let change = along(&self.tangents[0]);
@@ -346,20 +439,26 @@ impl Linear {
 /// opposite on B; then per lane the friction impulses, v_a −= λ₁ t₁/m_a + λ₂ t₂/m_a,
 /// ω_a −= λ₁ I_a⁻¹(r_a × t₁) + λ₂ I_a⁻¹(r_a × t₂) + λ_twist I_a⁻¹n, and the opposite on B,
 /// as in [`ContactBlock::warm_start`] (zero impulses add zero, the same as skipping them).
-/// Returns false, having written nothing, when a value leaves the checked bound in a lane
-/// in use.
+/// Narrow or wide products ([`times`]); the velocities, which enter no product here, are
+/// checked against the wide bound either way. Returns false, having written nothing, when
+/// a value leaves its checked bound in a lane in use.
 ///
 /// # Safety
 /// The processor must have AVX-512F and AVX-512DQ.
 #[target_feature(enable = "avx512f,avx512dq")]
-unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> bool {
+unsafe fn warm_start_block<const NARROW: bool>(
+    block: &ContactBlock<Fx>,
+    bodies: &mut [SolverBody<Fx>],
+) -> bool {
     let Some(lanes) = BodyLanes::new(block, bodies) else {
         return false;
     };
     let active = lanes.active;
     // SAFETY: `BodyLanes::new` checked every active lane's index.
     let (mut side_a, mut side_b) = unsafe { lanes.gather(false) };
-    let mut bad = side_a.out_of_bound() | side_b.out_of_bound();
+    // Warm starting only adds to the velocities: they need the wide bound, whatever the
+    // products.
+    let mut bad = side_a.beyond::<false>() | side_b.beyond::<false>();
     let zero = _mm512_setzero_si512();
     let linear = Linear::of(block);
     // SAFETY: 64 readable bytes.
@@ -372,10 +471,15 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
         let n = select(in_use, load(&cp.normal_impulse), zero);
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
         bad |= out_of_bound(n) & in_use;
-        let (dv_a, dv_b) = linear.along_normal(n);
-        bad |= Side::exchange(
+        let (dv_a, dv_b) = linear.along_normal::<NARROW>(n);
+        bad |= Side::exchange::<false>(
             (&mut side_a, &mut side_b),
-            [dv_a, mul3(in_a, n), dv_b, mul3(in_b, n)],
+            [
+                dv_a,
+                times3::<NARROW>(in_a, n),
+                dv_b,
+                times3::<NARROW>(in_b, n),
+            ],
         ) & active;
         if bad != 0 {
             return false;
@@ -391,15 +495,16 @@ unsafe fn warm_start_block(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx
     ];
     let twist = select(active, load(&f.twist_impulse), zero);
     bad |= (out_of_bound(t[0]) | out_of_bound(t[1]) | out_of_bound(twist)) & active;
-    let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], t[0]), mul3(a[1], t[1]));
-    let (dv_a, dv_b) = linear.along_tangents(t);
-    bad |= Side::exchange(
+    let along =
+        |a: [[__m512i; 3]; 2]| add3(times3::<NARROW>(a[0], t[0]), times3::<NARROW>(a[1], t[1]));
+    let (dv_a, dv_b) = linear.along_tangents::<NARROW>(t);
+    bad |= Side::exchange::<false>(
         (&mut side_a, &mut side_b),
         [
             dv_a,
-            add3(along(it_a), mul3(twist_a, twist)),
+            add3(along(it_a), times3::<NARROW>(twist_a, twist)),
             dv_b,
-            add3(along(it_b), mul3(twist_b, twist)),
+            add3(along(it_b), times3::<NARROW>(twist_b, twist)),
         ],
     ) & active;
     if bad != 0 {
@@ -522,6 +627,81 @@ fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
     out_of_bound(x[0]) | out_of_bound(x[1]) | out_of_bound(x[2])
 }
 
+/// The lanes where x, a velocity-like value that changes during the step (a velocity or
+/// motion, a separation, a relative velocity along a row), lies outside the bound the
+/// kernel's products need: [−2³¹, 2³¹) for narrow products, [−2⁴⁶, 2⁴⁶) for wide ones
+/// ([`times`]). Impulses are always checked against the wide bound: the narrow operand of
+/// their products is the coefficient.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn beyond<const NARROW: bool>(x: __m512i) -> __mmask8 {
+    if NARROW {
+        _mm512_cmpge_epu64_mask(
+            add(x, _mm512_set1_epi64(1 << 31)),
+            _mm512_set1_epi64(1 << 32),
+        )
+    } else {
+        out_of_bound(x)
+    }
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn beyond3<const NARROW: bool>(x: [__m512i; 3]) -> __mmask8 {
+    beyond::<NARROW>(x[0]) | beyond::<NARROW>(x[1]) | beyond::<NARROW>(x[2])
+}
+
+/// The checked `*` of `small`, within the narrow bound [−2³¹, 2³¹) when `NARROW` (and the
+/// wide one otherwise), and `other`, within the wide bound [−2⁴⁶, 2⁴⁶).
+///
+/// Narrow: a value a in [−2³¹, 2³¹) is its own low half, so
+/// ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋, two products of 32-bit halves (a·b_h
+/// below 2⁴⁵, a·b_l below 2⁶²) where [`mul`] needs three, one of them 64 × 64 bits.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn times<const NARROW: bool>(small: __m512i, other: __m512i) -> __m512i {
+    if NARROW {
+        let upper = _mm512_mul_epi32(small, high(other));
+        add(upper, high(_mm512_mul_epi32(small, other)))
+    } else {
+        mul(small, other)
+    }
+}
+
+/// Each of the small `coefficients` (a velocity change per unit impulse, within the
+/// narrow bound when `NARROW`: [`KernelFacts::narrow`]) times the same impulse
+/// ([`times`]).
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn times3<const NARROW: bool>(coefficients: [__m512i; 3], impulse: __m512i) -> [__m512i; 3] {
+    [
+        times::<NARROW>(coefficients[0], impulse),
+        times::<NARROW>(coefficients[1], impulse),
+        times::<NARROW>(coefficients[2], impulse),
+    ]
+}
+
+/// The fused dot product of velocity-like values within their bound ([`beyond`]) and
+/// coefficients, the exact Σ aᵢbᵢ rounded once ([`dot3`]). Narrow: Σ aᵢb_h,ᵢ plus the low
+/// products aᵢb_l,ᵢ, each split into q·2³² + r as in [`dot3`].
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn dot<const NARROW: bool>(values: [__m512i; 3], coefficients: [__m512i; 3]) -> __m512i {
+    if !NARROW {
+        return dot3(values, coefficients);
+    }
+    let mask = _mm512_set1_epi64(0xffff_ffff);
+    let mut whole = _mm512_setzero_si512();
+    let mut remainders = _mm512_setzero_si512();
+    for (a, b) in values.into_iter().zip(coefficients) {
+        let low = _mm512_mul_epi32(a, b);
+        let upper = _mm512_mul_epi32(a, high(b));
+        whole = add(whole, add(upper, _mm512_srai_epi64::<32>(low)));
+        remainders = add(remainders, _mm512_and_si512(low, mask));
+    }
+    add(whole, high(remainders))
+}
+
 /// `on` where the mask is set, `off` elsewhere.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
@@ -592,10 +772,11 @@ impl Side {
 
     /// Applies an impulse's velocity changes, A losing and B gaining:
     /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. Returns the lanes where a new
-    /// velocity left the checked bound.
+    /// velocity left the bound of changing values ([`beyond`]): narrow when it enters
+    /// narrow products later.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    fn exchange(
+    fn exchange<const NARROW: bool>(
         (a, b): (&mut Side, &mut Side),
         [dv_a, dw_a, dv_b, dw_b]: [[__m512i; 3]; 4],
     ) -> __mmask8 {
@@ -603,7 +784,10 @@ impl Side {
         a.w = sub3(a.w, dw_a);
         b.v = add3(b.v, dv_b);
         b.w = add3(b.w, dw_b);
-        out_of_bound3(a.v) | out_of_bound3(a.w) | out_of_bound3(b.v) | out_of_bound3(b.w)
+        beyond3::<NARROW>(a.v)
+            | beyond3::<NARROW>(a.w)
+            | beyond3::<NARROW>(b.v)
+            | beyond3::<NARROW>(b.w)
     }
 
     /// Writes the velocities back.
@@ -622,14 +806,14 @@ impl Side {
         }
     }
 
-    /// The lanes where a value lies outside the checked bound.
+    /// The lanes where a value lies outside the bound of changing values ([`beyond`]).
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    fn out_of_bound(&self) -> __mmask8 {
-        out_of_bound3(self.v)
-            | out_of_bound3(self.w)
-            | out_of_bound3(self.dp)
-            | out_of_bound3(self.dtheta)
+    fn beyond<const NARROW: bool>(&self) -> __mmask8 {
+        beyond3::<NARROW>(self.v)
+            | beyond3::<NARROW>(self.w)
+            | beyond3::<NARROW>(self.dp)
+            | beyond3::<NARROW>(self.dtheta)
     }
 }
 
@@ -715,8 +899,9 @@ impl BodyLanes {
     }
 }
 
-/// The kernel, for the biased pass or (`RELAX`) the relax pass. Returns false, having
-/// written nothing, when a value leaves the checked bound in a lane in use.
+/// The kernel, for the biased pass or (`RELAX`) the relax pass, with narrow or wide
+/// products ([`times`]). Returns false, having written nothing, when a value leaves its
+/// checked bound in a lane in use.
 ///
 /// The biased pass reads the separations the block keeps; the relax pass computes them
 /// from the bodies' motions and keeps them (as [`ContactBlock::solve_lanes`] does).
@@ -724,7 +909,7 @@ impl BodyLanes {
 /// # Safety
 /// The processor must have AVX-512F and AVX-512DQ.
 #[target_feature(enable = "avx512f,avx512dq")]
-unsafe fn solve_block<const RELAX: bool>(
+unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
     block: &mut ContactBlock<Fx>,
     bodies: &mut [SolverBody<Fx>],
     pass: &SolvePass<Fx>,
@@ -735,7 +920,10 @@ unsafe fn solve_block<const RELAX: bool>(
     let active = lanes.active;
     // SAFETY: `BodyLanes::new` checked every active lane's index.
     let (mut side_a, mut side_b) = unsafe { lanes.gather(RELAX) };
-    let mut bad = side_a.out_of_bound() | side_b.out_of_bound();
+    let mut bad = side_a.beyond::<NARROW>() | side_b.beyond::<NARROW>();
+    if bad != 0 {
+        return false;
+    }
 
     let zero = _mm512_setzero_si512();
     let rigid_partner = block
@@ -755,7 +943,7 @@ unsafe fn solve_block<const RELAX: bool>(
     let inv_h = splat(pass.inv_h);
     let lowest_bias = splat(-pass.max_push);
     bad |= (out_of_bound(bias_rate)
-        | out_of_bound(impulse_scale)
+        | beyond::<NARROW>(impulse_scale)
         | out_of_bound(inv_h)
         | out_of_bound(lowest_bias))
         & active;
@@ -773,8 +961,8 @@ unsafe fn solve_block<const RELAX: bool>(
     let mut separations = [zero; 4];
     if RELAX {
         let moved = sub3(side_b.dp, side_a.dp);
-        bad |= out_of_bound3(moved) & active;
-        let moved_apart = dot3(moved, normal);
+        bad |= beyond3::<NARROW>(moved) & active;
+        let moved_apart = dot::<NARROW>(moved, normal);
         for (k, cp) in block.points.iter().enumerate() {
             let in_use = points_in_use(k);
             if in_use == 0 {
@@ -783,10 +971,13 @@ unsafe fn solve_block<const RELAX: bool>(
             let (rn_a, rn_b) = (load3(&cp.rn_a), load3(&cp.rn_b));
             let base_separation = load(&cp.base_separation);
             let s = sub(
-                add(add(base_separation, moved_apart), dot3(side_b.dtheta, rn_b)),
-                dot3(side_a.dtheta, rn_a),
+                add(
+                    add(base_separation, moved_apart),
+                    dot::<NARROW>(side_b.dtheta, rn_b),
+                ),
+                dot::<NARROW>(side_a.dtheta, rn_a),
             );
-            bad |= out_of_bound(s) & in_use;
+            bad |= beyond::<NARROW>(s) & in_use;
             separations[k] = s;
         }
     } else {
@@ -796,7 +987,7 @@ unsafe fn solve_block<const RELAX: bool>(
                 continue;
             }
             let s = load(&cp.separation);
-            bad |= out_of_bound(s) & in_use;
+            bad |= beyond::<NARROW>(s) & in_use;
             separations[k] = s;
         }
     }
@@ -818,15 +1009,15 @@ unsafe fn solve_block<const RELAX: bool>(
         let apart = _mm512_cmpgt_epi64_mask(s, zero);
         // s/h for the points still apart (s·inv_h is only computed when there are some).
         let speculative_bias = if apart & in_use != 0 {
-            mul(s, inv_h)
+            times::<NARROW>(s, inv_h)
         } else {
             zero
         };
         let dv = sub3(side_b.v, side_a.v);
-        bad |= out_of_bound3(dv) & in_use;
+        bad |= beyond3::<NARROW>(dv) & in_use;
         let vn = sub(
-            add(dot3(dv, normal), dot3(side_b.w, rn_b)),
-            dot3(side_a.w, rn_a),
+            add(dot::<NARROW>(dv, normal), dot::<NARROW>(side_b.w, rn_b)),
+            dot::<NARROW>(side_a.w, rn_a),
         );
         let impulse = if RELAX {
             let biased = add(vn, select(apart, speculative_bias, zero));
@@ -834,20 +1025,28 @@ unsafe fn solve_block<const RELAX: bool>(
             sub(zero, mul(normal_mass, biased))
         } else {
             let soft_mass = load(&cp.soft_normal_mass);
-            let soft_bias = _mm512_max_epi64(mul(bias_rate, s), lowest_bias);
+            let soft_bias = _mm512_max_epi64(times::<NARROW>(s, bias_rate), lowest_bias);
             let biased = add(vn, select(apart, speculative_bias, soft_bias));
             let mass = select(apart, normal_mass, soft_mass);
             let scale_impulse = select(apart, zero, impulse_scale);
             bad |= out_of_bound(biased) & in_use;
-            sub(sub(zero, mul(mass, biased)), mul(scale_impulse, old))
+            sub(
+                sub(zero, mul(mass, biased)),
+                times::<NARROW>(scale_impulse, old),
+            )
         };
         let new = _mm512_max_epi64(add(old, impulse), zero);
         let applied = select(in_use, sub(new, old), zero);
         bad |= out_of_bound(applied) & in_use;
-        let (dv_a, dv_b) = linear.along_normal(applied);
-        bad |= Side::exchange(
+        let (dv_a, dv_b) = linear.along_normal::<NARROW>(applied);
+        bad |= Side::exchange::<NARROW>(
             (&mut side_a, &mut side_b),
-            [dv_a, mul3(in_a, applied), dv_b, mul3(in_b, applied)],
+            [
+                dv_a,
+                times3::<NARROW>(in_a, applied),
+                dv_b,
+                times3::<NARROW>(in_b, applied),
+            ],
         ) & active;
         normal_impulses[k] = select(in_use, new, old);
         max_normal_impulses[k] = select(in_use, _mm512_max_epi64(old_max, applied), old_max);
@@ -902,12 +1101,15 @@ unsafe fn solve_block<const RELAX: bool>(
             | out_of_bound(old_twist))
             & in_use;
         let dv = sub3(side_b.v, side_a.v);
-        bad |= out_of_bound3(dv) & in_use;
+        bad |= beyond3::<NARROW>(dv) & in_use;
         let mut new = [zero; 2];
         for j in 0..2 {
             let vt = sub(
-                add(dot3(dv, tangents[j]), dot3(side_b.w, rt_b[j])),
-                dot3(side_a.w, rt_a[j]),
+                add(
+                    dot::<NARROW>(dv, tangents[j]),
+                    dot::<NARROW>(side_b.w, rt_b[j]),
+                ),
+                dot::<NARROW>(side_a.w, rt_a[j]),
             );
             bad |= out_of_bound(vt) & in_use;
             new[j] = sub(old[j], mul(tangent_mass[j], vt));
@@ -927,9 +1129,14 @@ unsafe fn solve_block<const RELAX: bool>(
             select(in_use, sub(new[1], old[1]), zero),
         ];
         bad |= (out_of_bound(applied[0]) | out_of_bound(applied[1])) & in_use;
-        let along = |a: [[__m512i; 3]; 2]| add3(mul3(a[0], applied[0]), mul3(a[1], applied[1]));
-        let (dv_a, dv_b) = linear.along_tangents(applied);
-        bad |= Side::exchange(
+        let along = |a: [[__m512i; 3]; 2]| {
+            add3(
+                times3::<NARROW>(a[0], applied[0]),
+                times3::<NARROW>(a[1], applied[1]),
+            )
+        };
+        let (dv_a, dv_b) = linear.along_tangents::<NARROW>(applied);
+        bad |= Side::exchange::<NARROW>(
             (&mut side_a, &mut side_b),
             [dv_a, along(it_a), dv_b, along(it_b)],
         ) & active;
@@ -942,8 +1149,8 @@ unsafe fn solve_block<const RELAX: bool>(
         if in_use != 0 {
             let twist_limit = mul(friction, twist_sum);
             let spin_rate = sub3(side_b.w, side_a.w);
-            bad |= (out_of_bound(twist_limit) | out_of_bound3(spin_rate)) & in_use;
-            let spin = dot3(spin_rate, normal);
+            bad |= (out_of_bound(twist_limit) | beyond3::<NARROW>(spin_rate)) & in_use;
+            let spin = dot::<NARROW>(spin_rate, normal);
             bad |= out_of_bound(spin) & in_use;
             let unclamped = sub(old_twist, mul(twist_mass, spin));
             let new_twist = _mm512_min_epi64(
@@ -952,13 +1159,13 @@ unsafe fn solve_block<const RELAX: bool>(
             );
             let applied = select(in_use, sub(new_twist, old_twist), zero);
             bad |= out_of_bound(applied) & in_use;
-            bad |= Side::exchange(
+            bad |= Side::exchange::<NARROW>(
                 (&mut side_a, &mut side_b),
                 [
                     [zero; 3],
-                    mul3(twist_a, applied),
+                    times3::<NARROW>(twist_a, applied),
                     [zero; 3],
-                    mul3(twist_b, applied),
+                    times3::<NARROW>(twist_b, applied),
                 ],
             ) & active;
             if bad != 0 {

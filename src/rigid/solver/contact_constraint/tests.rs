@@ -21,20 +21,31 @@ fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
     Vec3::new(value(rng, scale), value(rng, scale), value(rng, scale))
 }
 
+/// The masses of the moving bodies of a test.
+#[derive(Clone, Copy)]
+enum Masses {
+    /// From 0.01 to 100 kg.
+    Spread,
+    /// One mass from 0.01 to 100 kg for all.
+    Equal,
+    /// From 200 to 2000 kg: every velocity change per unit impulse within the narrow
+    /// kernels' bound.
+    Heavy,
+}
+
 /// `count` moving bodies after the static body, with velocities and motions up to
-/// `scale`, masses from 0.01 to 100 kg (all the same one when `same_mass`) and inertias
-/// to match; every fifth one kinematic (zero inverse mass and inertia).
-fn bodies(rng: &mut Pcg32, count: usize, scale: f64, same_mass: bool) -> Vec<SolverBody<Fx>> {
+/// `scale`, masses as given and inertias to match; every fifth one kinematic (zero inverse
+/// mass and inertia).
+fn bodies(rng: &mut Pcg32, count: usize, scale: f64, masses: Masses) -> Vec<SolverBody<Fx>> {
     let mut bodies = vec![SolverBody::default()];
     let common = rng.range(Fx::from_f64(0.01), Fx::from_int(100));
     for i in 0..count {
         let kinematic = i % 5 == 4;
-        let inv_mass = if kinematic {
-            Fx::ZERO
-        } else if same_mass {
-            common
-        } else {
-            rng.range(Fx::from_f64(0.01), Fx::from_int(100))
+        let inv_mass = match masses {
+            _ if kinematic => Fx::ZERO,
+            Masses::Spread => rng.range(Fx::from_f64(0.01), Fx::from_int(100)),
+            Masses::Equal => common,
+            Masses::Heavy => rng.range(Fx::from_f64(0.0005), Fx::from_f64(0.005)),
         };
         let inv_inertia = Mat3::from_symmetric(
             Vec3::new(
@@ -59,15 +70,16 @@ fn bodies(rng: &mut Pcg32, count: usize, scale: f64, same_mass: bool) -> Vec<Sol
 }
 
 /// A block of `lanes` contacts with no moving body twice (independent) or with bodies
-/// drawn at random (not independent), with impulses up to `impulse`, prepared.
+/// drawn at random (not independent), with impulses up to `impulse` and separations up to
+/// `separation`, prepared.
 fn block(
     rng: &mut Pcg32,
     bodies: &[SolverBody<Fx>],
     lanes: usize,
     independent: bool,
-    impulse: f64,
+    (impulse, separation): (f64, f64),
 ) -> ContactBlock<Fx> {
-    let (mut block, arms) = lanes_of(rng, bodies, lanes, independent, impulse, 1.0);
+    let (mut block, arms) = lanes_of(rng, bodies, lanes, independent, (impulse, separation), 1.0);
     block.prepare_products(&arms, bodies);
     block.soften(&pass(true));
     block
@@ -80,7 +92,7 @@ fn lanes_of(
     bodies: &[SolverBody<Fx>],
     lanes: usize,
     independent: bool,
-    impulse: f64,
+    (impulse, separation): (f64, f64),
     reach: f64,
 ) -> (ContactBlock<Fx>, ContactArms<Fx>) {
     let mut arms = ContactArms::ZERO;
@@ -108,7 +120,7 @@ fn lanes_of(
             let carried = if fresh { 0.0 } else { impulse };
             *p = ContactPoint {
                 point: vector(rng, 2.0 * reach),
-                separation: value(rng, 0.05),
+                separation: value(rng, separation),
                 id: 0,
                 normal_impulse: rng.range(Fx::ZERO, Fx::from_f64(carried)),
             };
@@ -209,19 +221,46 @@ fn run_passes(block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>], fast:
     }
 }
 
-/// Runs `trials` random blocks at the given scales through both forms of the passes and
-/// returns how many of their passes the kernels took and how many blocks shared the
-/// products λ n/m and λ t/m between their two sides. With `same_mass`, every body that
-/// moves has the same mass, so that they can.
-fn compare(seed: u64, trials: usize, scale: f64, impulse: f64, same_mass: bool) -> (usize, usize) {
+/// What the kernels did in a comparison: the passes each solve kernel took (the first
+/// pass of each independent block, with and without bias), and the blocks that shared the
+/// products λ n/m and λ t/m between their two sides.
+#[derive(Debug, Default)]
+struct Runs {
+    narrow: usize,
+    wide: usize,
+    shared: usize,
+}
+
+/// The magnitudes of a comparison: the largest velocity (m/s, and a hundredth of it for
+/// the motions), impulse (N·s) and separation (m), and the masses.
+struct Scales {
+    velocity: f64,
+    impulse: f64,
+    separation: f64,
+    masses: Masses,
+}
+
+/// Everyday magnitudes with bodies of `masses`.
+const fn everyday(masses: Masses) -> Scales {
+    Scales {
+        velocity: 5.0,
+        impulse: 5.0,
+        separation: 0.05,
+        masses,
+    }
+}
+
+/// Runs `trials` random blocks at the given magnitudes through both forms of the passes,
+/// asserting the same bits and saturation counts, and returns what the kernels did.
+fn compare(seed: u64, trials: usize, scales: &Scales) -> Runs {
     let mut rng = Pcg32::new(seed, 7);
-    let mut kernel_runs = 0;
-    let mut shared = 0;
+    let mut runs = Runs::default();
     for trial in 0..trials {
         let lanes = 1 + trial % LANES;
         let independent = trial % 7 != 6;
-        let bodies = bodies(&mut rng, 2 * LANES + 2, scale, same_mass);
-        let block = block(&mut rng, &bodies, lanes, independent, impulse);
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scales.velocity, scales.masses);
+        let magnitudes = (scales.impulse, scales.separation);
+        let block = block(&mut rng, &bodies, lanes, independent, magnitudes);
         let (mut fast_bodies, mut fast_block) = (bodies.clone(), block.clone());
         let (mut slow_bodies, mut slow_block) = (bodies.clone(), block.clone());
         let ((), fast_saturations) =
@@ -236,14 +275,16 @@ fn compare(seed: u64, trials: usize, scale: f64, impulse: f64, same_mass: bool) 
         assert_eq!(fast_saturations, slow_saturations, "trial {trial}");
         if independent {
             for use_bias in [true, false] {
-                if kernel_takes(&block, &bodies, &pass(use_bias)) {
-                    kernel_runs += 1;
+                match kernel_taking(&block, &bodies, &pass(use_bias)) {
+                    Taken::Narrow => runs.narrow += 1,
+                    Taken::Wide => runs.wide += 1,
+                    Taken::None => {}
                 }
             }
         }
-        shared += usize::from(shares_linear_products(&block));
+        runs.shared += usize::from(shares_linear_products(&block));
     }
-    (kernel_runs, shared)
+    runs
 }
 
 /// Whether the kernels share the products λ n/m and λ t/m between the sides of `block`.
@@ -257,16 +298,32 @@ fn shares_linear_products(_: &ContactBlock<Fx>) -> bool {
     false
 }
 
-/// Whether the solve kernel takes `block` (a copy of it: nothing is kept).
+/// Which solve kernel took a block, if any.
+enum Taken {
+    Narrow,
+    Wide,
+    None,
+}
+
+/// Which solve kernel takes `block` (a copy of it: nothing is kept).
 #[cfg(target_arch = "x86_64")]
-fn kernel_takes(block: &ContactBlock<Fx>, bodies: &[SolverBody<Fx>], pass: &SolvePass<Fx>) -> bool {
+fn kernel_taking(
+    block: &ContactBlock<Fx>,
+    bodies: &[SolverBody<Fx>],
+    pass: &SolvePass<Fx>,
+) -> Taken {
+    use super::avx512::Kernel;
     let (mut bodies, mut block) = (bodies.to_vec(), block.clone());
-    super::avx512::solve(&mut block, &mut bodies, pass)
+    match super::avx512::solve(&mut block, &mut bodies, pass) {
+        Some(Kernel::Narrow) => Taken::Narrow,
+        Some(Kernel::Wide) => Taken::Wide,
+        None => Taken::None,
+    }
 }
 
 #[cfg(not(target_arch = "x86_64"))]
-fn kernel_takes(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -> bool {
-    false
+fn kernel_taking(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -> Taken {
+    Taken::None
 }
 
 /// Whether this processor runs the kernels.
@@ -284,41 +341,89 @@ const fn independent_passes(trials: usize) -> usize {
 
 #[test]
 fn blocks_at_everyday_magnitudes_match_the_lanes() {
-    let (runs, _) = compare(1, 400, 5.0, 5.0, false);
+    let runs = compare(1, 400, &everyday(Masses::Spread));
     if kernels_present() {
-        // Everyday values stay inside the kernel's bound: it takes every independent block.
-        assert_eq!(runs, independent_passes(400));
+        // Everyday values stay inside the wide bound: a kernel takes every independent
+        // block.
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
     }
 }
 
 #[test]
 fn blocks_of_equal_masses_match_the_lanes() {
-    let (runs, shared) = compare(7, 400, 5.0, 5.0, true);
+    let runs = compare(7, 400, &everyday(Masses::Equal));
     if kernels_present() {
-        assert_eq!(runs, independent_passes(400));
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
         // Lanes of two moving bodies, with the static body or with a kinematic one: every
         // block can share.
-        assert_eq!(shared, 400);
+        assert_eq!(runs.shared, 400);
+    }
+}
+
+#[test]
+fn blocks_of_heavy_slow_bodies_take_the_narrow_kernel() {
+    // Velocities up to 0.2 m/s, impulses up to 10 N·s and separations up to 0.2 mm (a
+    // push-out below 0.05 m/s) on bodies of 200 to 2000 kg.
+    let scales = Scales {
+        velocity: 0.2,
+        impulse: 10.0,
+        separation: 0.0002,
+        masses: Masses::Heavy,
+    };
+    let runs = compare(8, 400, &scales);
+    if kernels_present() {
+        // All but the few blocks whose pass pushes a velocity past 0.5 m/s.
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
+        assert!(runs.narrow > 9 * independent_passes(400) / 10, "{runs:?}");
+    }
+}
+
+#[test]
+fn blocks_near_the_narrow_bound_match_the_lanes() {
+    // Velocities up to 0.3 m/s, relative velocities up to 0.6 m/s: past the narrow bound
+    // (0.5 m/s) in some blocks and not in others, or pushed past it by an impulse; the wide
+    // kernel takes those.
+    let scales = Scales {
+        velocity: 0.3,
+        impulse: 10.0,
+        separation: 0.0002,
+        masses: Masses::Heavy,
+    };
+    let runs = compare(9, 400, &scales);
+    if kernels_present() {
+        assert!(runs.narrow > 0 && runs.wide > 0, "{runs:?}");
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
     }
 }
 
 #[test]
 fn blocks_near_the_kernel_bound_match_the_lanes() {
     // Velocities and impulses near 2¹⁴: some blocks pass the check, some do not.
-    let (runs, _) = compare(2, 400, 4_000.0, 4_000.0, false);
+    let scales = Scales {
+        velocity: 4_000.0,
+        impulse: 4_000.0,
+        ..everyday(Masses::Spread)
+    };
+    let runs = compare(2, 400, &scales);
     if kernels_present() {
+        let taken = runs.narrow + runs.wide;
         assert!(
-            runs > 0 && runs < independent_passes(400),
-            "the kernel ran {runs} times"
+            taken > 0 && taken < independent_passes(400),
+            "the kernels ran {taken} times"
         );
     }
 }
 
 #[test]
 fn blocks_that_saturate_match_the_lanes() {
-    // Values near the ends of the range: the kernel refuses, the lanes saturate and count.
-    let (runs, _) = compare(3, 100, 1.0e9, 1.0e9, false);
-    assert_eq!(runs, 0);
+    // Values near the ends of the range: the kernels refuse, the lanes saturate and count.
+    let scales = Scales {
+        velocity: 1.0e9,
+        impulse: 1.0e9,
+        ..everyday(Masses::Spread)
+    };
+    let runs = compare(3, 100, &scales);
+    assert_eq!(runs.narrow + runs.wide, 0);
 }
 
 /// Runs `trials` random blocks, velocities up to `scale` and anchors within `reach`, through
@@ -328,8 +433,9 @@ fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usiz
     let mut kernel_runs = 0;
     for trial in 0..trials {
         let lanes = 1 + trial % LANES;
-        let bodies = bodies(&mut rng, 2 * LANES + 2, scale, false);
-        let (block, arms) = lanes_of(&mut rng, &bodies, lanes, trial % 7 != 6, 1.0, reach);
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scale, Masses::Spread);
+        let magnitudes = (1.0, 0.05);
+        let (block, arms) = lanes_of(&mut rng, &bodies, lanes, trial % 7 != 6, magnitudes, reach);
         let (mut fast, mut slow) = (block.clone(), block.clone());
         let (took, fast_saturations) =
             count_saturations(|| prepare_kernel(&mut fast, &arms, &bodies));
