@@ -84,10 +84,10 @@ use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
     _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512,
-    _mm512_mask_blend_epi64, _mm512_mask_i64gather_epi64, _mm512_mask_i64scatter_epi64,
-    _mm512_mask_storeu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64,
-    _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
-    _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
+    _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64,
+    _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_permutex2var_epi64,
+    _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64,
+    _mm512_storeu_si512, _mm512_sub_epi64, _mm512_unpackhi_epi64, _mm512_unpacklo_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -103,12 +103,15 @@ const W: i64 = (offset_of!(SolverBody<Fx>, w) / 8) as i64;
 const DP: i64 = (offset_of!(SolverBody<Fx>, dp) / 8) as i64;
 const DTHETA: i64 = (offset_of!(SolverBody<Fx>, dtheta) / 8) as i64;
 
-// The layout the gathers rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row, the body
-// a whole number of words.
+// The layout the loads and gathers rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a
+// row, the body a whole number of words; v, ω, Δp and Δθ in a row from word 0, so that
+// words 0–7 (v, ω, Δp_x, Δp_y) and 8–15 (Δp_z, Δθ, ...) are two rows of eight.
 const _: () = {
     assert!(size_of::<Fx>() == 8);
     assert!(size_of::<Vec3<Fx>>() == 24);
     assert!(size_of::<SolverBody<Fx>>().is_multiple_of(8));
+    assert!(V == 0 && W == 3 && DP == 6 && DTHETA == 9);
+    assert!(BODY_WORDS >= 16);
     assert!(LANES == 8);
 };
 
@@ -455,7 +458,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
     };
     let active = lanes.active;
     // SAFETY: `BodyLanes::new` checked every active lane's index.
-    let (mut side_a, mut side_b) = unsafe { lanes.gather(false) };
+    let (mut side_a, mut side_b) = unsafe { lanes.load(false) };
     // Warm starting only adds to the velocities: they need the wide bound, whatever the
     // products.
     let mut bad = side_a.beyond::<false>() | side_b.beyond::<false>();
@@ -511,7 +514,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
         return false;
     }
     // SAFETY: `BodyLanes::new` checked every active lane's index.
-    unsafe { lanes.scatter(&side_a, &side_b) };
+    unsafe { lanes.store(&side_a, &side_b) };
     true
 }
 
@@ -729,44 +732,51 @@ struct Side {
     w: [__m512i; 3],
     dp: [__m512i; 3],
     dtheta: [__m512i; 3],
+    /// Words 6 and 7 of each body (Δp_x, Δp_y), which share the velocities' cache line:
+    /// written back as they were read.
+    rest: [__m512i; 2],
 }
 
 impl Side {
-    /// Gathers the bodies whose first words are at `words` (word index of each lane's body)
-    /// in the lanes of `active` (zero elsewhere); the motions dp and dθ only when
-    /// `with_motion` (zero otherwise).
+    /// Loads the bodies whose first words are at `words` in the first `len` lanes (zero
+    /// elsewhere): one 64-byte row per body, v, ω, Δp_x and Δp_y, turned into one vector
+    /// per component; with the motions Δp and Δθ when `with_motion` (zero otherwise), from
+    /// the next row.
     ///
     /// # Safety
-    /// Every active lane's index must be that of a body of `bodies`.
+    /// Each of the first `len` words must be the first word of a body of the array at
+    /// `bodies`.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    unsafe fn gather(
+    unsafe fn load(
         bodies: *const i64,
-        words: __m512i,
-        active: __mmask8,
+        words: &[i64; LANES],
+        len: usize,
         with_motion: bool,
     ) -> Self {
         let zero = _mm512_setzero_si512();
-        let field = |offset: i64| {
-            let at = |k: i64| add(words, _mm512_set1_epi64(offset + k));
-            // SAFETY: each active lane reads a word inside its body (the caller's promise).
-            unsafe {
-                [
-                    _mm512_mask_i64gather_epi64::<8>(zero, active, at(0), bodies),
-                    _mm512_mask_i64gather_epi64::<8>(zero, active, at(1), bodies),
-                    _mm512_mask_i64gather_epi64::<8>(zero, active, at(2), bodies),
-                ]
+        let rows = |offset: usize| {
+            let mut rows = [zero; LANES];
+            for (row, &word) in rows.iter_mut().zip(&words[..len]) {
+                // SAFETY: words `word + offset` to `word + offset + 7` lie in the body (the
+                // caller's promise and the layout checked above).
+                *row = unsafe { _mm512_loadu_si512(bodies.add(word as usize + offset).cast()) };
             }
+            transpose(rows)
+        };
+        let [vx, vy, vz, wx, wy, wz, px, py] = rows(V as usize);
+        let (dp, dtheta) = if with_motion {
+            let [pz, tx, ty, tz, ..] = rows(DP as usize + 2);
+            ([px, py, pz], [tx, ty, tz])
+        } else {
+            ([zero; 3], [zero; 3])
         };
         Self {
-            v: field(V),
-            w: field(W),
-            dp: if with_motion { field(DP) } else { [zero; 3] },
-            dtheta: if with_motion {
-                field(DTHETA)
-            } else {
-                [zero; 3]
-            },
+            v: [vx, vy, vz],
+            w: [wx, wy, wz],
+            dp,
+            dtheta,
+            rest: [px, py],
         }
     }
 
@@ -790,19 +800,22 @@ impl Side {
             | beyond3::<NARROW>(b.w)
     }
 
-    /// Writes the velocities back.
+    /// Writes the velocities back, each body's first row whole (with Δp_x and Δp_y as they
+    /// were read). Lanes that share a body share it only when it does not move, and then
+    /// write the values they read.
     ///
     /// # Safety
-    /// As for [`Side::gather`], with `bodies` writable.
+    /// As for [`Side::load`], with `bodies` writable.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    unsafe fn scatter_velocities(&self, bodies: *mut i64, words: __m512i, active: __mmask8) {
-        for (offset, value) in [(V, self.v), (W, self.w)] {
-            for (k, component) in value.into_iter().enumerate() {
-                let at = add(words, _mm512_set1_epi64(offset + k as i64));
-                // SAFETY: each active lane writes a word inside its body.
-                unsafe { _mm512_mask_i64scatter_epi64::<8>(bodies, active, at, component) };
-            }
+    unsafe fn store_velocities(&self, bodies: *mut i64, words: &[i64; LANES], len: usize) {
+        let [vx, vy, vz] = self.v;
+        let [wx, wy, wz] = self.w;
+        let [px, py] = self.rest;
+        let rows = transpose([vx, vy, vz, wx, wy, wz, px, py]);
+        for (row, &word) in rows.iter().zip(&words[..len]) {
+            // SAFETY: as in `load`.
+            unsafe { _mm512_storeu_si512(bodies.add(word as usize + V as usize).cast(), *row) };
         }
     }
 
@@ -815,6 +828,46 @@ impl Side {
             | beyond3::<NARROW>(self.dp)
             | beyond3::<NARROW>(self.dtheta)
     }
+}
+
+/// The transpose of an 8 × 8 matrix of words given by rows: row i of the result holds
+/// word i of every input row. Three rounds of two-source permutes, 24 in all.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn transpose(rows: [__m512i; 8]) -> [__m512i; 8] {
+    let pairs = |a: __m512i, b: __m512i| (_mm512_unpacklo_epi64(a, b), _mm512_unpackhi_epi64(a, b));
+    let (a0, a1) = pairs(rows[0], rows[1]);
+    let (a2, a3) = pairs(rows[2], rows[3]);
+    let (a4, a5) = pairs(rows[4], rows[5]);
+    let (a6, a7) = pairs(rows[6], rows[7]);
+    // Words 0 and 1 of each 256-bit half from the first source, then from the second
+    // (indices 8 and up), and likewise words 2 and 3.
+    let low = _mm512_set_epi64(13, 12, 5, 4, 9, 8, 1, 0);
+    let high = _mm512_set_epi64(15, 14, 7, 6, 11, 10, 3, 2);
+    let quads = |a: __m512i, b: __m512i| {
+        (
+            _mm512_permutex2var_epi64(a, low, b),
+            _mm512_permutex2var_epi64(a, high, b),
+        )
+    };
+    let (b0, b2) = quads(a0, a2);
+    let (b1, b3) = quads(a1, a3);
+    let (b4, b6) = quads(a4, a6);
+    let (b5, b7) = quads(a5, a7);
+    // The low 256 bits of each, then the high 256 bits.
+    let first = _mm512_set_epi64(11, 10, 9, 8, 3, 2, 1, 0);
+    let second = _mm512_set_epi64(15, 14, 13, 12, 7, 6, 5, 4);
+    let halves = |a: __m512i, b: __m512i| {
+        (
+            _mm512_permutex2var_epi64(a, first, b),
+            _mm512_permutex2var_epi64(a, second, b),
+        )
+    };
+    let (r0, r4) = halves(b0, b4);
+    let (r1, r5) = halves(b1, b5);
+    let (r2, r6) = halves(b2, b6);
+    let (r3, r7) = halves(b3, b7);
+    [r0, r1, r2, r3, r4, r5, r6, r7]
 }
 
 /// The lanes in use of `block`, and the first word of each lane's body A and body B in
@@ -844,11 +897,12 @@ fn lane_words(block: &ContactBlock<Fx>, body_count: usize) -> Option<(__mmask8, 
 
 /// Where the bodies of a block's lanes are.
 struct BodyLanes {
-    /// The lanes in use.
+    /// The lanes in use: the first `len`.
     active: __mmask8,
+    len: usize,
     /// The first word of each lane's body A and body B.
-    words_a: __m512i,
-    words_b: __m512i,
+    words_a: [i64; LANES],
+    words_b: [i64; LANES],
     /// The solver bodies, as words.
     base: *mut i64,
 }
@@ -859,9 +913,19 @@ impl BodyLanes {
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
     fn new(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> Option<Self> {
-        let (active, words_a, words_b) = lane_words(block, bodies.len())?;
+        let mut words_a = [0i64; LANES];
+        let mut words_b = [0i64; LANES];
+        for l in 0..block.len {
+            let (a, b) = (block.a[l] as usize, block.b[l] as usize);
+            if a >= bodies.len() || b >= bodies.len() {
+                return None;
+            }
+            words_a[l] = a as i64 * BODY_WORDS;
+            words_b[l] = b as i64 * BODY_WORDS;
+        }
         Some(Self {
-            active,
+            active: ((1u16 << block.len) - 1) as __mmask8,
+            len: block.len,
             words_a,
             words_b,
             base: bodies.as_mut_ptr().cast::<i64>(),
@@ -874,12 +938,12 @@ impl BodyLanes {
     /// The bodies must still be those `new` was given, alive and not otherwise borrowed.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    unsafe fn gather(&self, with_motion: bool) -> (Side, Side) {
-        // SAFETY: every active lane's index was checked in `new`.
+    unsafe fn load(&self, with_motion: bool) -> (Side, Side) {
+        // SAFETY: every lane's index was checked in `new`.
         unsafe {
             (
-                Side::gather(self.base, self.words_a, self.active, with_motion),
-                Side::gather(self.base, self.words_b, self.active, with_motion),
+                Side::load(self.base, &self.words_a, self.len, with_motion),
+                Side::load(self.base, &self.words_b, self.len, with_motion),
             )
         }
     }
@@ -887,14 +951,14 @@ impl BodyLanes {
     /// Writes both sides' velocities back.
     ///
     /// # Safety
-    /// As for [`BodyLanes::gather`].
+    /// As for [`BodyLanes::load`].
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    unsafe fn scatter(&self, a: &Side, b: &Side) {
-        // SAFETY: every active lane's index was checked in `new`.
+    unsafe fn store(&self, a: &Side, b: &Side) {
+        // SAFETY: every lane's index was checked in `new`.
         unsafe {
-            a.scatter_velocities(self.base, self.words_a, self.active);
-            b.scatter_velocities(self.base, self.words_b, self.active);
+            a.store_velocities(self.base, &self.words_a, self.len);
+            b.store_velocities(self.base, &self.words_b, self.len);
         }
     }
 }
@@ -919,7 +983,7 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
     };
     let active = lanes.active;
     // SAFETY: `BodyLanes::new` checked every active lane's index.
-    let (mut side_a, mut side_b) = unsafe { lanes.gather(RELAX) };
+    let (mut side_a, mut side_b) = unsafe { lanes.load(RELAX) };
     let mut bad = side_a.beyond::<NARROW>() | side_b.beyond::<NARROW>();
     if bad != 0 {
         return false;
@@ -1194,7 +1258,7 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
     store(&mut f.tangent_impulse[1], tangent_impulses[1]);
     store(&mut f.twist_impulse, twist_impulses);
     // SAFETY: `BodyLanes::new` checked every active lane's index.
-    unsafe { lanes.scatter(&side_a, &side_b) };
+    unsafe { lanes.store(&side_a, &side_b) };
     true
 }
 
