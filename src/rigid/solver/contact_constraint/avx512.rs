@@ -82,8 +82,9 @@ pub(super) use prepare::prepare;
 
 use core::any::Any;
 use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
-    _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_loadu_si512,
+    __m512i, __mmask8, _mm256_loadu_si256, _mm512_add_epi64, _mm512_and_si512,
+    _mm512_cmpeq_epi64_mask, _mm512_cmpge_epi64_mask, _mm512_cmpge_epu64_mask,
+    _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512,
     _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64,
     _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_permutex2var_epi64,
     _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64,
@@ -913,18 +914,33 @@ impl BodyLanes {
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
     fn new(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> Option<Self> {
-        let mut words_a = [0i64; LANES];
-        let mut words_b = [0i64; LANES];
-        for l in 0..block.len {
-            let (a, b) = (block.a[l] as usize, block.b[l] as usize);
-            if a >= bodies.len() || b >= bodies.len() {
-                return None;
+        let active = ((1u16 << block.len) - 1) as __mmask8;
+        let count = _mm512_set1_epi64(bodies.len() as i64);
+        let body_words = _mm512_set1_epi64(BODY_WORDS);
+        // The lanes' indices, widened; the lanes in use must be below the body count.
+        let words = |indices: &[u32; LANES]| {
+            // SAFETY: eight `u32`: 32 readable bytes.
+            let indices =
+                _mm512_cvtepu32_epi64(unsafe { _mm256_loadu_si256(indices.as_ptr().cast()) });
+            let outside = _mm512_cmpge_epi64_mask(indices, count) & active;
+            let mut words = [0i64; LANES];
+            // SAFETY: 64 writable bytes.
+            unsafe {
+                _mm512_mask_storeu_epi64(
+                    words.as_mut_ptr().cast(),
+                    active,
+                    _mm512_mullo_epi64(indices, body_words),
+                );
             }
-            words_a[l] = a as i64 * BODY_WORDS;
-            words_b[l] = b as i64 * BODY_WORDS;
+            (outside, words)
+        };
+        let (outside_a, words_a) = words(&block.a);
+        let (outside_b, words_b) = words(&block.b);
+        if outside_a | outside_b != 0 {
+            return None;
         }
         Some(Self {
-            active: ((1u16 << block.len) - 1) as __mmask8,
+            active,
             len: block.len,
             words_a,
             words_b,
