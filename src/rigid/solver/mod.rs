@@ -15,6 +15,8 @@
 //! Constraints are visited block by block in the order of [`batching`], close to
 //! contact-key order; bodies in slot order: the same on every machine.
 
+#[cfg(target_arch = "x86_64")]
+mod avx512;
 mod batching;
 mod body;
 mod contact_constraint;

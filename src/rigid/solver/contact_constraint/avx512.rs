@@ -31,21 +31,8 @@
 //!
 //! # Products
 //!
-//! `_mm512_mul_epi32` multiplies the signed low 32 bits of each lane into 64, and
-//! `_mm512_mullo_epi64` (AVX-512DQ) keeps the low 64 bits of a 64 × 64 product. With
-//! a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ (|a_h| ≤ 2¹⁴ for a checked a) and a_l ∈
-//! [−2³¹, 2³¹) the signed low half of a, and b likewise,
-//!
-//! ```text
-//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l + ⌊(a_l·b_l + 2³¹)/2³²⌋
-//! ```
-//!
-//! since a·b = a·b_h·2³² + a_h·b_l·2³² + a_l·b_l; this is the checked `*` (to nearest, ties
-//! toward +∞). The term a·b_h is below 2⁶⁰, so its low 64 bits are all of it. For the
-//! fused dot product Σ aᵢbᵢ rounded once, each a_l·b_l is split into q·2³² + r with
-//! 0 ≤ r < 2³², so that
-//! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
-//! Σ r + 2³¹ < 2³⁴ cannot overflow.
+//! The checked `*` and the fused dot product of checked values, exact in `i64` lanes, are
+//! those of [`solver::avx512`](crate::rigid::solver::avx512): [`mul`] and [`dot3`].
 //!
 //! # Narrow products
 //!
@@ -80,15 +67,20 @@ mod prepare;
 
 pub(super) use prepare::prepare;
 
+use crate::rigid::solver::avx512::{
+    add, add3, dot3, has_kernels, high, load, load3, mul, mul3, out_of_bound, out_of_bound3,
+    select, splat, store, store_lanes, sub, sub3,
+};
+
 use core::any::Any;
 use core::arch::x86_64::{
-    __m512i, __mmask8, _mm256_loadu_si256, _mm512_add_epi64, _mm512_and_si512,
-    _mm512_cmpeq_epi64_mask, _mm512_cmpge_epi64_mask, _mm512_cmpge_epu64_mask,
-    _mm512_cmpgt_epi64_mask, _mm512_cmpneq_epi64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512,
-    _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64,
-    _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_permutex2var_epi64,
-    _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64,
-    _mm512_storeu_si512, _mm512_sub_epi64, _mm512_unpackhi_epi64, _mm512_unpacklo_epi64,
+    __m512i, __mmask8, _mm256_loadu_si256, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
+    _mm512_cmpge_epi64_mask, _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask,
+    _mm512_cmpneq_epi64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_storeu_epi64,
+    _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32,
+    _mm512_mullo_epi64, _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64,
+    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_storeu_si512, _mm512_unpackhi_epi64,
+    _mm512_unpacklo_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -115,13 +107,6 @@ const _: () = {
     assert!(BODY_WORDS >= 16);
     assert!(LANES == 8);
 };
-
-/// Whether this processor runs the kernels: AVX-512F and AVX-512DQ (every processor with
-/// AVX-512 for servers and desktops has both).
-pub(super) fn has_kernels() -> bool {
-    std::arch::is_x86_feature_detected!("avx512f")
-        && std::arch::is_x86_feature_detected!("avx512dq")
-}
 
 /// The kernel that took a block: with narrow products, or wide ones ([`times`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -519,118 +504,6 @@ unsafe fn warm_start_block<const NARROW: bool>(
     true
 }
 
-/// The raw bits of a lane array.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn load(lanes: &Lanes<Fx>) -> __m512i {
-    // SAFETY: eight `Fx`, each one `i64`: 64 readable bytes.
-    unsafe { _mm512_loadu_si512(lanes.as_ptr().cast()) }
-}
-
-/// Writes raw bits to a lane array.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
-    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
-    unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) }
-}
-
-/// Writes the lanes of `mask` to a lane array; the others keep their values.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn store_lanes(lanes: &mut Lanes<Fx>, mask: __mmask8, value: __m512i) {
-    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
-    unsafe { _mm512_mask_storeu_epi64(lanes.as_mut_ptr().cast(), mask, value) }
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn load3(lanes: &Lanes3<Fx>) -> [__m512i; 3] {
-    [load(&lanes.x), load(&lanes.y), load(&lanes.z)]
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn add(a: __m512i, b: __m512i) -> __m512i {
-    _mm512_add_epi64(a, b)
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn sub(a: __m512i, b: __m512i) -> __m512i {
-    _mm512_sub_epi64(a, b)
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn add3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
-    [add(a[0], b[0]), add(a[1], b[1]), add(a[2], b[2])]
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
-    [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
-}
-
-/// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn high(a: __m512i) -> __m512i {
-    _mm512_srai_epi64::<32>(add(a, _mm512_set1_epi64(1 << 31)))
-}
-
-/// The checked `*` of checked values: ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l +
-/// ⌊(a_l·b_l + 2³¹)/2³²⌋ (module documentation).
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn mul(a: __m512i, b: __m512i) -> __m512i {
-    let (ah, bh) = (high(a), high(b));
-    let upper = add(_mm512_mullo_epi64(a, bh), _mm512_mul_epi32(ah, b));
-    let low = _mm512_srai_epi64::<32>(add(_mm512_mul_epi32(a, b), _mm512_set1_epi64(1 << 31)));
-    add(upper, low)
-}
-
-/// Each component times the same factor.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn mul3(a: [__m512i; 3], b: __m512i) -> [__m512i; 3] {
-    [mul(a[0], b), mul(a[1], b), mul(a[2], b)]
-}
-
-/// The fused dot product of checked values: the exact Σ aᵢbᵢ rounded once.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
-    let mask = _mm512_set1_epi64(0xffff_ffff);
-    let mut whole = _mm512_setzero_si512();
-    let mut remainders = _mm512_setzero_si512();
-    for i in 0..3 {
-        let (ah, bh) = (high(a[i]), high(b[i]));
-        let upper = add(_mm512_mullo_epi64(a[i], bh), _mm512_mul_epi32(ah, b[i]));
-        let ll = _mm512_mul_epi32(a[i], b[i]);
-        whole = add(whole, add(upper, _mm512_srai_epi64::<32>(ll)));
-        remainders = add(remainders, _mm512_and_si512(ll, mask));
-    }
-    add(whole, high(remainders))
-}
-
-/// The lanes where x lies outside [−2⁴⁶, 2⁴⁶).
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn out_of_bound(x: __m512i) -> __mmask8 {
-    _mm512_cmpge_epu64_mask(
-        add(x, _mm512_set1_epi64(1 << 46)),
-        _mm512_set1_epi64(1 << 47),
-    )
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
-    out_of_bound(x[0]) | out_of_bound(x[1]) | out_of_bound(x[2])
-}
-
 /// The lanes where x, a velocity-like value that changes during the step (a velocity or
 /// motion, a separation, a relative velocity along a row), lies outside the bound the
 /// kernel's products need: [−2³¹, 2³¹) for narrow products, [−2⁴⁶, 2⁴⁶) for wide ones
@@ -706,25 +579,11 @@ fn dot<const NARROW: bool>(values: [__m512i; 3], coefficients: [__m512i; 3]) -> 
     add(whole, high(remainders))
 }
 
-/// `on` where the mask is set, `off` elsewhere.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
-    _mm512_mask_blend_epi64(mask, off, on)
-}
-
 /// `value` in the lanes of `mask`, zero elsewhere.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
 fn keep3(mask: __mmask8, value: [__m512i; 3]) -> [__m512i; 3] {
     value.map(|x| _mm512_maskz_mov_epi64(mask, x))
-}
-
-/// The same value in every lane.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn splat(x: Fx) -> __m512i {
-    _mm512_set1_epi64(x.to_bits())
 }
 
 /// The velocities and motions of the lanes' bodies on one side.

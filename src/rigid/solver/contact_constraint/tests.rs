@@ -329,7 +329,7 @@ fn kernel_taking(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) 
 /// Whether this processor runs the kernels.
 fn kernels_present() -> bool {
     #[cfg(target_arch = "x86_64")]
-    return super::avx512::has_kernels();
+    return crate::rigid::solver::avx512::has_kernels();
     #[cfg(not(target_arch = "x86_64"))]
     false
 }
