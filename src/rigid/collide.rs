@@ -71,6 +71,9 @@ impl<R: Real> RigidSystem<R> {
             })
             .copied()
             .collect();
+        // Room for about as many contacts as last step, so that the list does not grow (and
+        // move) while the narrowphase fills it.
+        contacts.reserve(old.len().saturating_sub(contacts.len()));
         let margin = self.settings.speculative_distance;
         for &(a, b) in &scratch.pairs {
             let (ia, ib) = (a as usize, b as usize);
