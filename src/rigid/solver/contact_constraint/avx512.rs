@@ -79,8 +79,7 @@ use core::arch::x86_64::{
     _mm512_cmpneq_epi64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_storeu_epi64,
     _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32,
     _mm512_mullo_epi64, _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64,
-    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_storeu_si512, _mm512_unpackhi_epi64,
-    _mm512_unpacklo_epi64,
+    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_unpackhi_epi64, _mm512_unpacklo_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -592,9 +591,6 @@ struct Side {
     w: [__m512i; 3],
     dp: [__m512i; 3],
     dtheta: [__m512i; 3],
-    /// Words 6 and 7 of each body (Δp_x, Δp_y), which share the velocities' cache line:
-    /// written back as they were read.
-    rest: [__m512i; 2],
 }
 
 impl Side {
@@ -636,7 +632,6 @@ impl Side {
             w: [wx, wy, wz],
             dp,
             dtheta,
-            rest: [px, py],
         }
     }
 
@@ -660,9 +655,9 @@ impl Side {
             | beyond3::<NARROW>(b.w)
     }
 
-    /// Writes the velocities back, each body's first row whole (with Δp_x and Δp_y as they
-    /// were read). Lanes that share a body share it only when it does not move, and then
-    /// write the values they read.
+    /// Writes the velocities back: the first six words of each body's first row. Lanes that
+    /// share a body share it only when it does not move, and then write the values they
+    /// read.
     ///
     /// # Safety
     /// As for [`Side::load`], with `bodies` writable.
@@ -671,11 +666,14 @@ impl Side {
     unsafe fn store_velocities(&self, bodies: *mut i64, words: &[i64; LANES], len: usize) {
         let [vx, vy, vz] = self.v;
         let [wx, wy, wz] = self.w;
-        let [px, py] = self.rest;
-        let rows = transpose([vx, vy, vz, wx, wy, wz, px, py]);
+        let zero = _mm512_setzero_si512();
+        let rows = transpose([vx, vy, vz, wx, wy, wz, zero, zero]);
         for (row, &word) in rows.iter().zip(&words[..len]) {
-            // SAFETY: as in `load`.
-            unsafe { _mm512_storeu_si512(bodies.add(word as usize + V as usize).cast(), *row) };
+            // SAFETY: as in `load`; six words.
+            unsafe {
+                let at = bodies.add(word as usize + V as usize);
+                _mm512_mask_storeu_epi64(at.cast(), 0b11_1111, *row);
+            }
         }
     }
 
