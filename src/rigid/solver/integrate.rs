@@ -68,17 +68,20 @@ impl<R: Real> Solver<R> {
     /// when the processor has it, which gives the same bits; the bodies it leaves (far
     /// from unit length, or values past its bound) are integrated one by one.
     pub fn integrate_positions(&mut self, bodies: &mut Bodies<R>, h: R) {
-        for (sb, &slot) in self.bodies.iter_mut().zip(&self.slots).skip(1) {
-            let i = slot as usize;
-            let dx = sb.v * h;
-            sb.dp += dx;
-            sb.dtheta += sb.w * h;
-            bodies.position[i] += dx;
-        }
         let moving = self.bodies[1..]
-            .chunks(LANES)
+            .chunks_mut(LANES)
             .zip(self.slots[1..].chunks(LANES));
         for (chunk, slots) in moving {
+            for (sb, &slot) in chunk.iter_mut().zip(slots) {
+                let dx = sb.v * h;
+                sb.dp += dx;
+                sb.dtheta += sb.w * h;
+                bodies.position[slot as usize] += dx;
+            }
+            if chunk.iter().all(|sb| sb.w == Vec3::ZERO) {
+                // Nothing turns (bodies falling straight, say): no orientation to update.
+                continue;
+            }
             #[cfg(target_arch = "x86_64")]
             let done = avx512::integrate_orientations(chunk, slots, &mut bodies.orientation, h);
             #[cfg(not(target_arch = "x86_64"))]
