@@ -107,8 +107,8 @@ pub(crate) fn div_bits(a: i64, b: i64, frac: u32) -> i64 {
         };
     }
     let numerator = (a.unsigned_abs() as u128) << frac;
-    let divisor = b.unsigned_abs() as u128;
-    let magnitude = (numerator + (divisor >> 1)) / divisor;
+    let divisor = b.unsigned_abs();
+    let magnitude = quotient(numerator + u128::from(divisor >> 1), divisor);
     let negative = (a < 0) != (b < 0);
     if negative {
         if magnitude > 1u128 << 63 {
@@ -123,6 +123,36 @@ pub(crate) fn div_bits(a: i64, b: i64, frac: u32) -> i64 {
     } else {
         magnitude as i64
     }
+}
+
+/// ⌊n / d⌋ for d > 0.
+///
+/// On x86-64, when the quotient fits in 64 bits (the high half of n below d, as for every
+/// quotient that does not saturate), one `div` instruction, which divides the 128-bit
+/// rdx:rax by a 64-bit register and leaves exactly ⌊n / d⌋ in rax; the general 128-bit
+/// division otherwise, and on other targets. The same integer either way.
+#[inline(always)]
+fn quotient(n: u128, d: u64) -> u128 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        let high = (n >> 64) as u64;
+        if high < d {
+            let q: u64;
+            // SAFETY: `div` faults only for d = 0 or a quotient of 2⁶⁴ or more; here d > high
+            // ≥ 0 and n < d·2⁶⁴. It reads and writes registers only.
+            unsafe {
+                core::arch::asm!(
+                    "div {d}",
+                    d = in(reg) d,
+                    inout("rax") n as u64 => q,
+                    inout("rdx") high => _,
+                    options(pure, nomem, nostack),
+                );
+            }
+            return u128::from(q);
+        }
+    }
+    n / u128::from(d)
 }
 
 impl<Frac: FracBits> Fixed<Frac> {

@@ -44,19 +44,19 @@ pub struct Quat<R: Real = Fx> {
 
 /// 2⁸. A value of magnitude ≤ 1 multiplied by it (exactly) before it is squared gives a
 /// square 2¹⁶ times larger, rounded at the same absolute resolution: 16 more bits.
-fn square_prescale<R: Real>() -> R {
+pub(crate) fn square_prescale<R: Real>() -> R {
     R::from_int(256)
 }
 
 /// 2⁻¹⁶ = 1/[`square_prescale`]², which takes such a square back to its true size.
-fn square_unscale<R: Real>() -> R {
+pub(crate) fn square_unscale<R: Real>() -> R {
     R::from_ratio(1, 1 << 16)
 }
 
 /// 2⁻¹⁰: the largest |ε| = ||q|² − 1| that [`Quat::normalize_near_unit`] takes to unit
 /// length in two Newton steps (the first leaves ¾ε² ≤ 2⁻²⁰, within the 2⁻¹⁶ that
 /// `norm_defect` needs).
-fn near_unit_excess<R: Real>() -> R {
+pub(crate) fn near_unit_excess<R: Real>() -> R {
     R::from_ratio(1, 1 << 10)
 }
 

@@ -83,7 +83,14 @@ impl<R: Real> RigidSystem<R> {
             })
             .copied()
             .collect();
+        // Room for about as many contacts as last step, so that the list does not grow (and
+        // move) while the narrowphase fills it.
+        contacts.reserve(old.len().saturating_sub(contacts.len()));
         let margin = self.settings.speculative_distance;
+        // The manifolds come in ascending key order (pairs sorted, parts in order), as do
+        // last step's contacts: the contacts before `cursor` have keys below every key to
+        // come, so finding a manifold's previous contact is a walk, not a search.
+        let mut cursor = 0;
         for &(a, b) in &scratch.pairs {
             let (ia, ib) = (a as usize, b as usize);
             if bodies.kind[ia] != BodyKind::Dynamic && bodies.kind[ib] != BodyKind::Dynamic {
@@ -103,10 +110,10 @@ impl<R: Real> RigidSystem<R> {
                         part_a,
                         part_b,
                     };
-                    let previous = old
-                        .binary_search_by_key(&key, |c| c.key)
-                        .ok()
-                        .map(|k| &old[k]);
+                    while old.get(cursor).is_some_and(|c| c.key < key) {
+                        cursor += 1;
+                    }
+                    let previous = old.get(cursor).filter(|c| c.key == key);
                     contacts.push(Contact::from_manifold(key, manifold, previous));
                 },
             );

@@ -43,12 +43,6 @@ impl<R: Real> RigidSystem<R> {
         let h = dt / R::from_int(substeps as i32);
         let inv_h = R::from_int(substeps as i32) / dt;
 
-        solver.prepare(&self.contacts, bodies);
-        let joints = &mut self.joints;
-        let has_joints = !joints.is_empty();
-        if has_joints {
-            solver.prepare_joints(joints, bodies, h);
-        }
         // Box2D's cap: the contact spring at most a quarter of the substep rate. Contacts with
         // a static or kinematic body get twice the stiffness, within the same cap.
         let cap = inv_h * R::from_ratio(1, 4);
@@ -65,6 +59,12 @@ impl<R: Real> RigidSystem<R> {
             use_bias: false,
             ..solve
         };
+        solver.prepare(&self.contacts, bodies, &solve);
+        let joints = &mut self.joints;
+        let has_joints = !joints.is_empty();
+        if has_joints {
+            solver.prepare_joints(joints, bodies, h);
+        }
         // Joints: `iterations` passes each time, stiff to a fifth of the substep rate per
         // iteration (measured: beyond about a third per iteration a hanging chain of 20 links
         // blows up).
@@ -89,7 +89,7 @@ impl<R: Real> RigidSystem<R> {
                 solver.warm_start_joints();
             }
             let (blocks, solver_bodies) = solver.blocks_and_bodies();
-            for block in blocks.iter() {
+            for block in blocks.iter_mut() {
                 block.warm_start(solver_bodies);
             }
             for _ in 0..joint_iterations {

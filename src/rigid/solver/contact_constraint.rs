@@ -55,11 +55,19 @@ struct PointLanes<R: Real> {
     in_b: Lanes3<R>,
     /// Separation at the start of the step, m.
     base_separation: Lanes<R>,
+    /// Separation at the bodies' current positions, m: `base_separation` at the start of
+    /// the step, then refreshed by each relax pass, which follows a position update, for
+    /// the next solve pass (the positions do not move in between).
+    separation: Lanes<R>,
     /// Distance from the lane's friction centre, m: the point's lever arm in the twist
     /// limit.
     twist_arm: Lanes<R>,
     /// 1/k along the normal, kg.
     normal_mass: Lanes<R>,
+    /// `normal_mass` times the lane's soft mass scale (kg): the effective mass of an
+    /// overlapping point in a biased pass, set once per step by
+    /// [`ContactBlock::soften`].
+    soft_normal_mass: Lanes<R>,
     /// Accumulated impulse, N·s.
     normal_impulse: Lanes<R>,
     /// The largest normal impulse of one iteration this step: zero means the point never
@@ -76,8 +84,10 @@ impl<R: Real> PointLanes<R> {
         in_a: Lanes3::ZERO,
         in_b: Lanes3::ZERO,
         base_separation: [R::ZERO; LANES],
+        separation: [R::ZERO; LANES],
         twist_arm: [R::ZERO; LANES],
         normal_mass: [R::ZERO; LANES],
+        soft_normal_mass: [R::ZERO; LANES],
         normal_impulse: [R::ZERO; LANES],
         max_normal_impulse: [R::ZERO; LANES],
         relative_velocity: [R::ZERO; LANES],
@@ -137,6 +147,10 @@ pub(crate) struct ContactBlock<R: Real> {
     len: usize,
     /// Whether the lanes share no moving body, so that they may be solved side by side.
     independent: bool,
+    /// What the AVX-512 kernels need to know of the block's coefficients, found once per
+    /// step by [`soften`](Self::soften).
+    #[cfg(target_arch = "x86_64")]
+    kernel: avx512::KernelFacts,
     /// Solver indices of the two bodies.
     a: [u32; LANES],
     b: [u32; LANES],
@@ -178,6 +192,8 @@ impl<R: Real> ContactBlock<R> {
         Self {
             len: 0,
             independent: false,
+            #[cfg(target_arch = "x86_64")]
+            kernel: avx512::KernelFacts::NONE,
             a: [0; LANES],
             b: [0; LANES],
             contact: [0; LANES],
@@ -201,6 +217,10 @@ impl<R: Real> ContactBlock<R> {
     pub fn clear(&mut self, independent: bool) {
         self.len = 0;
         self.independent = independent;
+        #[cfg(target_arch = "x86_64")]
+        {
+            self.kernel = avx512::KernelFacts::NONE;
+        }
     }
 
     /// Applies the impulses carried from the last step, lane by lane: per point
@@ -210,9 +230,9 @@ impl<R: Real> ContactBlock<R> {
     ///
     /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
     /// processor has it ([`avx512`]), which gives the same bits.
-    pub fn warm_start(&self, bodies: &mut [SolverBody<R>]) {
+    pub fn warm_start(&mut self, bodies: &mut [SolverBody<R>]) {
         #[cfg(target_arch = "x86_64")]
-        if self.independent && avx512::warm_start(self, bodies) {
+        if self.independent && avx512::warm_start(self, bodies).is_some() {
             return;
         }
         self.warm_start_lanes(bodies);
@@ -252,8 +272,13 @@ impl<R: Real> ContactBlock<R> {
     /// Normal: with the current separation s = s₀ + (Δp_b − Δp_a)·n + Δθ_b·(r_b × n) −
     /// Δθ_a·(r_a × n), a point still apart (s > 0) only stops the approach that would close
     /// the gap within this substep (bias s/h, speculative contact); an overlapping point
-    /// gets the soft bias max(bias_rate·s, −max_push) when `use_bias`, and no bias in the
-    /// relax pass. The accumulated impulse stays ≥ 0.
+    /// gets the soft bias max(bias_rate·s, −max_push) and the soft effective mass when
+    /// `use_bias`, and no bias in the relax pass. The accumulated impulse stays ≥ 0.
+    ///
+    /// The biased pass comes before the substep's position update and the relax pass after
+    /// it (Box2D v3's order), so s changes only between a biased pass and the relax pass
+    /// that follows: the relax pass computes it and keeps it for the next biased pass,
+    /// which reads it (the first one reads s₀).
     ///
     /// Friction, at the lane's centre: each tangent's impulse −m_t v_t is added, then the
     /// accumulated tangent impulse is clamped to the disc |λ_t| ≤ μ Λ, Λ = Σ λ_n,k (Coulomb's
@@ -267,7 +292,7 @@ impl<R: Real> ContactBlock<R> {
     /// processor has it ([`avx512`]), which gives the same bits.
     pub fn solve(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
         #[cfg(target_arch = "x86_64")]
-        if self.independent && avx512::solve(self, bodies, pass) {
+        if self.independent && avx512::solve(self, bodies, pass).is_some() {
             return;
         }
         self.solve_lanes(bodies, pass);
@@ -283,34 +308,49 @@ impl<R: Real> ContactBlock<R> {
     /// [`solve`](Self::solve) for lane `l`.
     fn solve_lane(&mut self, l: usize, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
         let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
-        let softness = if self.rigid_partner[l] {
-            &pass.soft_static
-        } else {
-            &pass.soft
-        };
         let count = usize::from(self.count[l]);
         let normal = self.normal.get(l);
         let (normal_a, normal_b) = (self.normal_a.get(l), self.normal_b.get(l));
-        let moved_apart = (bb.dp - ba.dp).dot_fused(normal);
+        let impulse_scale = if self.rigid_partner[l] {
+            pass.soft_static.impulse_scale
+        } else {
+            pass.soft.impulse_scale
+        };
+        let bias_rate = if self.rigid_partner[l] {
+            pass.soft_static.bias_rate
+        } else {
+            pass.soft.bias_rate
+        };
+        let moved_apart = if pass.use_bias {
+            R::ZERO
+        } else {
+            (bb.dp - ba.dp).dot_fused(normal)
+        };
         for cp in &mut self.points[..count] {
-            let (rn_a, rn_b) = (cp.rn_a.get(l), cp.rn_b.get(l));
-            let s = cp.base_separation[l] + moved_apart + bb.dtheta.dot_fused(rn_b)
-                - ba.dtheta.dot_fused(rn_a);
-            let (bias, mass_scale, impulse_scale) = if s > R::ZERO {
-                (s * pass.inv_h, R::ONE, R::ZERO)
+            let s = if pass.use_bias {
+                cp.separation[l]
+            } else {
+                let (rn_a, rn_b) = (cp.rn_a.get(l), cp.rn_b.get(l));
+                let s = cp.base_separation[l] + moved_apart + bb.dtheta.dot_fused(rn_b)
+                    - ba.dtheta.dot_fused(rn_a);
+                cp.separation[l] = s;
+                s
+            };
+            let (bias, mass, impulse_scale) = if s > R::ZERO {
+                (s * pass.inv_h, cp.normal_mass[l], R::ZERO)
             } else if pass.use_bias {
                 (
-                    (softness.bias_rate * s).max(-pass.max_push),
-                    softness.mass_scale,
-                    softness.impulse_scale,
+                    (bias_rate * s).max(-pass.max_push),
+                    cp.soft_normal_mass[l],
+                    impulse_scale,
                 )
             } else {
-                (R::ZERO, R::ONE, R::ZERO)
+                (R::ZERO, cp.normal_mass[l], R::ZERO)
             };
+            let (rn_a, rn_b) = (cp.rn_a.get(l), cp.rn_b.get(l));
             let vn = (bb.v - ba.v).dot_fused(normal) + bb.w.dot_fused(rn_b) - ba.w.dot_fused(rn_a);
             let old_impulse = cp.normal_impulse[l];
-            let impulse =
-                -(cp.normal_mass[l] * mass_scale * (vn + bias)) - impulse_scale * old_impulse;
+            let impulse = -(mass * (vn + bias)) - impulse_scale * old_impulse;
             let new_impulse = (old_impulse + impulse).max(R::ZERO);
             let applied = new_impulse - old_impulse;
             ba.v -= normal_a * applied;

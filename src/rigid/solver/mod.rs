@@ -19,6 +19,8 @@
 //! contact-key order; joints in slot order; bodies in slot order: the same on every
 //! machine.
 
+#[cfg(target_arch = "x86_64")]
+mod avx512;
 mod batching;
 mod body;
 mod contact_constraint;

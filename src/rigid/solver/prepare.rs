@@ -3,7 +3,7 @@
 
 use super::Solver;
 use super::body::STATIC_BODY;
-use super::contact_constraint::{ContactArms, ContactBlock};
+use super::contact_constraint::{ContactArms, ContactBlock, SolvePass};
 use crate::math::Real;
 use crate::rigid::bodies::Bodies;
 use crate::rigid::contact::Contact;
@@ -16,8 +16,9 @@ impl<R: Real> Solver<R> {
     /// Builds the step's constraints from `contacts` (the world's list) for the solver
     /// bodies already set up from `bodies`. A contact gets a constraint when at least one
     /// of its bodies has finite mass and moves. The blocks come in the batching's order;
-    /// the friction and restitution of a pair are the mix of its materials.
-    pub fn prepare(&mut self, contacts: &[Contact<R>], bodies: &Bodies<R>) {
+    /// the friction and restitution of a pair are the mix of its materials, and the soft
+    /// effective masses those of `pass`, the step's biased pass.
+    pub fn prepare(&mut self, contacts: &[Contact<R>], bodies: &Bodies<R>, pass: &SolvePass<R>) {
         let Self {
             bodies: solver_bodies,
             index_of_slot,
@@ -64,6 +65,7 @@ impl<R: Real> Solver<R> {
                 );
             }
             block.prepare_products(&arms, solver_bodies);
+            block.soften(pass);
         }
     }
 }

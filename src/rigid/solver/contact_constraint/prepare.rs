@@ -8,7 +8,7 @@
 //! contact); on I32F32 they go to the AVX-512 kernel when the processor has it, which gives
 //! the same bits.
 
-use super::ContactBlock;
+use super::{ContactBlock, SolvePass};
 use crate::math::{Real, Vec3};
 use crate::rigid::contact::Contact;
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
@@ -95,6 +95,7 @@ impl<R: Real> ContactBlock<R> {
             arms.r_a[p].set(l, point.point - centre_a);
             arms.r_b[p].set(l, point.point - centre_b);
             cp.base_separation[l] = point.separation;
+            cp.separation[l] = point.separation;
             cp.twist_arm[l] = twist_arms[p];
             cp.normal_impulse[l] = point.normal_impulse;
             cp.max_normal_impulse[l] = R::ZERO;
@@ -195,6 +196,27 @@ impl<R: Real> ContactBlock<R> {
                 self.tangents_a[j].set(l, t * ba.inv_mass);
                 self.tangents_b[j].set(l, t * bb.inv_mass);
             }
+        }
+    }
+
+    /// The soft effective masses of the step's biased passes: m_n · mass_scale (kg) for
+    /// every point in use, with the mass scale of `pass`'s softness for the lane (the
+    /// stiffer one for contacts with a static or kinematic body). Then, the block being
+    /// complete, whether the kernels may take it.
+    pub fn soften(&mut self, pass: &SolvePass<R>) {
+        for l in 0..self.len {
+            let scale = if self.rigid_partner[l] {
+                pass.soft_static.mass_scale
+            } else {
+                pass.soft.mass_scale
+            };
+            for cp in self.points.iter_mut().take(usize::from(self.count[l])) {
+                cp.soft_normal_mass[l] = cp.normal_mass[l] * scale;
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            self.kernel = super::avx512::KernelFacts::of(self);
         }
     }
 

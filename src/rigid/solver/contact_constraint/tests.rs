@@ -21,17 +21,31 @@ fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
     Vec3::new(value(rng, scale), value(rng, scale), value(rng, scale))
 }
 
+/// The masses of the moving bodies of a test.
+#[derive(Clone, Copy)]
+enum Masses {
+    /// From 0.01 to 100 kg.
+    Spread,
+    /// One mass from 0.01 to 100 kg for all.
+    Equal,
+    /// From 200 to 2000 kg: every velocity change per unit impulse within the narrow
+    /// kernels' bound.
+    Heavy,
+}
+
 /// `count` moving bodies after the static body, with velocities and motions up to
-/// `scale`, masses from 0.01 to 100 kg and inertias to match; every fifth one kinematic
-/// (zero inverse mass and inertia).
-fn bodies(rng: &mut Pcg32, count: usize, scale: f64) -> Vec<SolverBody<Fx>> {
+/// `scale`, masses as given and inertias to match; every fifth one kinematic (zero inverse
+/// mass and inertia).
+fn bodies(rng: &mut Pcg32, count: usize, scale: f64, masses: Masses) -> Vec<SolverBody<Fx>> {
     let mut bodies = vec![SolverBody::default()];
+    let common = rng.range(Fx::from_f64(0.01), Fx::from_int(100));
     for i in 0..count {
         let kinematic = i % 5 == 4;
-        let inv_mass = if kinematic {
-            Fx::ZERO
-        } else {
-            rng.range(Fx::from_f64(0.01), Fx::from_int(100))
+        let inv_mass = match masses {
+            _ if kinematic => Fx::ZERO,
+            Masses::Spread => rng.range(Fx::from_f64(0.01), Fx::from_int(100)),
+            Masses::Equal => common,
+            Masses::Heavy => rng.range(Fx::from_f64(0.0005), Fx::from_f64(0.005)),
         };
         let inv_inertia = Mat3::from_symmetric(
             Vec3::new(
@@ -56,16 +70,18 @@ fn bodies(rng: &mut Pcg32, count: usize, scale: f64) -> Vec<SolverBody<Fx>> {
 }
 
 /// A block of `lanes` contacts with no moving body twice (independent) or with bodies
-/// drawn at random (not independent), with impulses up to `impulse`, prepared.
+/// drawn at random (not independent), with impulses up to `impulse` and separations up to
+/// `separation`, prepared.
 fn block(
     rng: &mut Pcg32,
     bodies: &[SolverBody<Fx>],
     lanes: usize,
     independent: bool,
-    impulse: f64,
+    (impulse, separation): (f64, f64),
 ) -> ContactBlock<Fx> {
-    let (mut block, arms) = lanes_of(rng, bodies, lanes, independent, impulse, 1.0);
+    let (mut block, arms) = lanes_of(rng, bodies, lanes, independent, (impulse, separation), 1.0);
     block.prepare_products(&arms, bodies);
+    block.soften(&pass(true));
     block
 }
 
@@ -76,7 +92,7 @@ fn lanes_of(
     bodies: &[SolverBody<Fx>],
     lanes: usize,
     independent: bool,
-    impulse: f64,
+    (impulse, separation): (f64, f64),
     reach: f64,
 ) -> (ContactBlock<Fx>, ContactArms<Fx>) {
     let mut arms = ContactArms::ZERO;
@@ -104,7 +120,7 @@ fn lanes_of(
             let carried = if fresh { 0.0 } else { impulse };
             *p = ContactPoint {
                 point: vector(rng, 2.0 * reach),
-                separation: value(rng, 0.05),
+                separation: value(rng, separation),
                 id: 0,
                 normal_impulse: rng.range(Fx::ZERO, Fx::from_f64(carried)),
             };
@@ -149,7 +165,8 @@ fn pass(use_bias: bool) -> SolvePass<Fx> {
     }
 }
 
-/// Bits of everything a pass writes: the bodies' velocities and the block's impulses.
+/// Bits of everything a pass writes: the bodies' velocities and the block's impulses and
+/// kept separations.
 fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
     let mut bits = Vec::new();
     for b in bodies {
@@ -159,7 +176,14 @@ fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
     }
     for p in &block.points {
         for l in 0..LANES {
-            bits.extend([p.normal_impulse[l], p.max_normal_impulse[l]].map(Fx::to_bits));
+            bits.extend(
+                [
+                    p.normal_impulse[l],
+                    p.max_normal_impulse[l],
+                    p.separation[l],
+                ]
+                .map(Fx::to_bits),
+            );
         }
     }
     let f = &block.friction_rows;
@@ -176,58 +200,136 @@ fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
     bits
 }
 
-/// Runs `trials` random blocks at the given scales through both forms of both passes and
-/// returns how many blocks the kernels took.
-fn compare(seed: u64, trials: usize, scale: f64, impulse: f64) -> usize {
+/// A substep and a half, as the solver runs them: warm start, the biased pass, the relax
+/// pass (which keeps the separations), warm start and the biased pass again (which reads
+/// them); with the blocks' kernels (`fast`) or lane by lane. The bodies' motions stay as
+/// drawn, as if the positions had moved before the relax pass.
+fn run_passes(block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>], fast: bool) {
+    for use_bias in [true, false, true] {
+        if use_bias {
+            if fast {
+                block.warm_start(bodies);
+            } else {
+                block.warm_start_lanes(bodies);
+            }
+        }
+        if fast {
+            block.solve(bodies, &pass(use_bias));
+        } else {
+            block.solve_lanes(bodies, &pass(use_bias));
+        }
+    }
+}
+
+/// What the kernels did in a comparison: the passes each solve kernel took (the first
+/// pass of each independent block, with and without bias), and the blocks that shared the
+/// products λ n/m and λ t/m between their two sides.
+#[derive(Debug, Default)]
+struct Runs {
+    narrow: usize,
+    wide: usize,
+    shared: usize,
+}
+
+/// The magnitudes of a comparison: the largest velocity (m/s, and a hundredth of it for
+/// the motions), impulse (N·s) and separation (m), and the masses.
+struct Scales {
+    velocity: f64,
+    impulse: f64,
+    separation: f64,
+    masses: Masses,
+}
+
+/// Everyday magnitudes with bodies of `masses`.
+const fn everyday(masses: Masses) -> Scales {
+    Scales {
+        velocity: 5.0,
+        impulse: 5.0,
+        separation: 0.05,
+        masses,
+    }
+}
+
+/// Runs `trials` random blocks at the given magnitudes through both forms of the passes,
+/// asserting the same bits and saturation counts, and returns what the kernels did.
+fn compare(seed: u64, trials: usize, scales: &Scales) -> Runs {
     let mut rng = Pcg32::new(seed, 7);
-    let mut kernel_runs = 0;
+    let mut runs = Runs::default();
     for trial in 0..trials {
         let lanes = 1 + trial % LANES;
         let independent = trial % 7 != 6;
-        let bodies = bodies(&mut rng, 2 * LANES + 2, scale);
-        let block = block(&mut rng, &bodies, lanes, independent, impulse);
-        for use_bias in [true, false] {
-            let pass = pass(use_bias);
-            let (mut fast_bodies, mut fast_block) = (bodies.clone(), block.clone());
-            let (mut slow_bodies, mut slow_block) = (bodies.clone(), block.clone());
-            let ((), fast_saturations) = count_saturations(|| {
-                fast_block.warm_start(&mut fast_bodies);
-                fast_block.solve(&mut fast_bodies, &pass);
-            });
-            let ((), slow_saturations) = count_saturations(|| {
-                slow_block.warm_start_lanes(&mut slow_bodies);
-                slow_block.solve_lanes(&mut slow_bodies, &pass);
-            });
-            assert_eq!(
-                state(&fast_bodies, &fast_block),
-                state(&slow_bodies, &slow_block),
-                "trial {trial}, bias {use_bias}"
-            );
-            assert_eq!(fast_saturations, slow_saturations, "trial {trial}");
-            if independent && kernel_takes(&block, &bodies, &pass) {
-                kernel_runs += 1;
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scales.velocity, scales.masses);
+        let magnitudes = (scales.impulse, scales.separation);
+        let block = block(&mut rng, &bodies, lanes, independent, magnitudes);
+        let (mut fast_bodies, mut fast_block) = (bodies.clone(), block.clone());
+        let (mut slow_bodies, mut slow_block) = (bodies.clone(), block.clone());
+        let ((), fast_saturations) =
+            count_saturations(|| run_passes(&mut fast_block, &mut fast_bodies, true));
+        let ((), slow_saturations) =
+            count_saturations(|| run_passes(&mut slow_block, &mut slow_bodies, false));
+        assert_eq!(
+            state(&fast_bodies, &fast_block),
+            state(&slow_bodies, &slow_block),
+            "trial {trial}"
+        );
+        assert_eq!(fast_saturations, slow_saturations, "trial {trial}");
+        if independent {
+            for use_bias in [true, false] {
+                match kernel_taking(&block, &bodies, &pass(use_bias)) {
+                    Taken::Narrow => runs.narrow += 1,
+                    Taken::Wide => runs.wide += 1,
+                    Taken::None => {}
+                }
             }
         }
+        runs.shared += usize::from(shares_linear_products(&block));
     }
-    kernel_runs
+    runs
 }
 
-/// Whether the solve kernel takes `block` (a copy of it: nothing is kept).
+/// Whether the kernels share the products λ n/m and λ t/m between the sides of `block`.
 #[cfg(target_arch = "x86_64")]
-fn kernel_takes(block: &ContactBlock<Fx>, bodies: &[SolverBody<Fx>], pass: &SolvePass<Fx>) -> bool {
-    let (mut bodies, mut block) = (bodies.to_vec(), block.clone());
-    super::avx512::solve(&mut block, &mut bodies, pass)
+fn shares_linear_products(block: &ContactBlock<Fx>) -> bool {
+    block.kernel.linear_shared
 }
 
 #[cfg(not(target_arch = "x86_64"))]
-fn kernel_takes(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -> bool {
+fn shares_linear_products(_: &ContactBlock<Fx>) -> bool {
     false
+}
+
+/// Which solve kernel took a block, if any.
+enum Taken {
+    Narrow,
+    Wide,
+    None,
+}
+
+/// Which solve kernel takes `block` (a copy of it: nothing is kept).
+#[cfg(target_arch = "x86_64")]
+fn kernel_taking(
+    block: &ContactBlock<Fx>,
+    bodies: &[SolverBody<Fx>],
+    pass: &SolvePass<Fx>,
+) -> Taken {
+    use super::avx512::Kernel;
+    let (mut bodies, mut block) = (bodies.to_vec(), block.clone());
+    match super::avx512::solve(&mut block, &mut bodies, pass) {
+        Some(Kernel::Narrow) => Taken::Narrow,
+        Some(Kernel::Wide) => Taken::Wide,
+        None => Taken::None,
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn kernel_taking(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -> Taken {
+    Taken::None
 }
 
 /// Whether this processor runs the kernels.
 fn kernels_present() -> bool {
     #[cfg(target_arch = "x86_64")]
-    return super::avx512::has_kernels();
+    return crate::rigid::solver::avx512::has_kernels();
     #[cfg(not(target_arch = "x86_64"))]
     false
 }
@@ -239,30 +341,89 @@ const fn independent_passes(trials: usize) -> usize {
 
 #[test]
 fn blocks_at_everyday_magnitudes_match_the_lanes() {
-    let runs = compare(1, 400, 5.0, 5.0);
+    let runs = compare(1, 400, &everyday(Masses::Spread));
     if kernels_present() {
-        // Everyday values stay inside the kernel's bound: it takes every independent block.
-        assert_eq!(runs, independent_passes(400));
+        // Everyday values stay inside the wide bound: a kernel takes every independent
+        // block.
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
+    }
+}
+
+#[test]
+fn blocks_of_equal_masses_match_the_lanes() {
+    let runs = compare(7, 400, &everyday(Masses::Equal));
+    if kernels_present() {
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
+        // Lanes of two moving bodies, with the static body or with a kinematic one: every
+        // block can share.
+        assert_eq!(runs.shared, 400);
+    }
+}
+
+#[test]
+fn blocks_of_heavy_slow_bodies_take_the_narrow_kernel() {
+    // Velocities up to 0.2 m/s, impulses up to 10 N·s and separations up to 0.2 mm (a
+    // push-out below 0.05 m/s) on bodies of 200 to 2000 kg.
+    let scales = Scales {
+        velocity: 0.2,
+        impulse: 10.0,
+        separation: 0.0002,
+        masses: Masses::Heavy,
+    };
+    let runs = compare(8, 400, &scales);
+    if kernels_present() {
+        // All but the few blocks whose pass pushes a velocity past 0.5 m/s.
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
+        assert!(runs.narrow > 9 * independent_passes(400) / 10, "{runs:?}");
+    }
+}
+
+#[test]
+fn blocks_near_the_narrow_bound_match_the_lanes() {
+    // Velocities up to 0.3 m/s, relative velocities up to 0.6 m/s: past the narrow bound
+    // (0.5 m/s) in some blocks and not in others, or pushed past it by an impulse; the wide
+    // kernel takes those.
+    let scales = Scales {
+        velocity: 0.3,
+        impulse: 10.0,
+        separation: 0.0002,
+        masses: Masses::Heavy,
+    };
+    let runs = compare(9, 400, &scales);
+    if kernels_present() {
+        assert!(runs.narrow > 0 && runs.wide > 0, "{runs:?}");
+        assert_eq!(runs.narrow + runs.wide, independent_passes(400));
     }
 }
 
 #[test]
 fn blocks_near_the_kernel_bound_match_the_lanes() {
     // Velocities and impulses near 2¹⁴: some blocks pass the check, some do not.
-    let runs = compare(2, 400, 4_000.0, 4_000.0);
+    let scales = Scales {
+        velocity: 4_000.0,
+        impulse: 4_000.0,
+        ..everyday(Masses::Spread)
+    };
+    let runs = compare(2, 400, &scales);
     if kernels_present() {
+        let taken = runs.narrow + runs.wide;
         assert!(
-            runs > 0 && runs < independent_passes(400),
-            "the kernel ran {runs} times"
+            taken > 0 && taken < independent_passes(400),
+            "the kernels ran {taken} times"
         );
     }
 }
 
 #[test]
 fn blocks_that_saturate_match_the_lanes() {
-    // Values near the ends of the range: the kernel refuses, the lanes saturate and count.
-    let runs = compare(3, 100, 1.0e9, 1.0e9);
-    assert_eq!(runs, 0);
+    // Values near the ends of the range: the kernels refuse, the lanes saturate and count.
+    let scales = Scales {
+        velocity: 1.0e9,
+        impulse: 1.0e9,
+        ..everyday(Masses::Spread)
+    };
+    let runs = compare(3, 100, &scales);
+    assert_eq!(runs.narrow + runs.wide, 0);
 }
 
 /// Runs `trials` random blocks, velocities up to `scale` and anchors within `reach`, through
@@ -272,8 +433,9 @@ fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usiz
     let mut kernel_runs = 0;
     for trial in 0..trials {
         let lanes = 1 + trial % LANES;
-        let bodies = bodies(&mut rng, 2 * LANES + 2, scale);
-        let (block, arms) = lanes_of(&mut rng, &bodies, lanes, trial % 7 != 6, 1.0, reach);
+        let bodies = bodies(&mut rng, 2 * LANES + 2, scale, Masses::Spread);
+        let magnitudes = (1.0, 0.05);
+        let (block, arms) = lanes_of(&mut rng, &bodies, lanes, trial % 7 != 6, magnitudes, reach);
         let (mut fast, mut slow) = (block.clone(), block.clone());
         let (took, fast_saturations) =
             count_saturations(|| prepare_kernel(&mut fast, &arms, &bodies));

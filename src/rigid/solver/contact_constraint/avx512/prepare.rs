@@ -24,18 +24,18 @@
 use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_mask_i64gather_epi64,
-    _mm512_mask_storeu_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
+    _mm512_set1_epi64, _mm512_setzero_si512,
 };
 use core::mem::{offset_of, size_of};
 
 use super::{
     BODY_WORDS, V, W, add, has_kernels, lane_words, load3, mul, mul3, out_of_bound, out_of_bound3,
-    sub, sub3,
+    store_lanes, sub, sub3,
 };
 use crate::math::{Fx, Mat3, Real, Vec3};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::contact_constraint::{ContactArms, ContactBlock};
-use crate::rigid::solver::lanes::{Lanes, Lanes3};
+use crate::rigid::solver::lanes::Lanes3;
 
 /// Word offsets of the inverse mass and of the inverse inertia's first column in a
 /// `SolverBody<Fx>`; element (i, j) of the inertia is word `INV_INERTIA + 3j + i`.
@@ -160,8 +160,8 @@ unsafe fn prepare_block(
         store3(&mut cp.rn_b, in_use, rn_b);
         store3(&mut cp.in_a, in_use, in_a);
         store3(&mut cp.in_b, in_use, in_b);
-        store(&mut cp.normal_mass, in_use, k);
-        store(&mut cp.relative_velocity, in_use, approach);
+        store_lanes(&mut cp.normal_mass, in_use, k);
+        store_lanes(&mut cp.relative_velocity, in_use, approach);
     }
 
     // Friction, at the centre of each lane's points.
@@ -197,11 +197,11 @@ unsafe fn prepare_block(
         store3(&mut f.rt_b[j], active, rt_b[j]);
         store3(&mut f.it_a[j], active, it_a[j]);
         store3(&mut f.it_b[j], active, it_b[j]);
-        store(&mut f.tangent_mass[j], active, kt[j]);
+        store_lanes(&mut f.tangent_mass[j], active, kt[j]);
     }
     store3(&mut f.twist_a, active, twist_a);
     store3(&mut f.twist_b, active, twist_b);
-    store(&mut f.twist_mass, active, k_twist);
+    store_lanes(&mut f.twist_mass, active, k_twist);
     store3(&mut block.normal_a, active, mul3(normal, inv_mass_a));
     store3(&mut block.normal_b, active, mul3(normal, inv_mass_b));
     for (j, tangent) in tangents.into_iter().enumerate() {
@@ -249,18 +249,10 @@ fn out_of_bound_matrix(columns: [[__m512i; 3]; 3]) -> __mmask8 {
     out_of_bound3(columns[0]) | out_of_bound3(columns[1]) | out_of_bound3(columns[2])
 }
 
-/// Writes the lanes of `mask` to a lane array; the others keep their values.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn store(lanes: &mut Lanes<Fx>, mask: __mmask8, value: __m512i) {
-    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
-    unsafe { _mm512_mask_storeu_epi64(lanes.as_mut_ptr().cast(), mask, value) }
-}
-
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
 fn store3(lanes: &mut Lanes3<Fx>, mask: __mmask8, value: [__m512i; 3]) {
-    store(&mut lanes.x, mask, value[0]);
-    store(&mut lanes.y, mask, value[1]);
-    store(&mut lanes.z, mask, value[2]);
+    store_lanes(&mut lanes.x, mask, value[0]);
+    store_lanes(&mut lanes.y, mask, value[1]);
+    store_lanes(&mut lanes.z, mask, value[2]);
 }

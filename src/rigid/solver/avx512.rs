@@ -1,0 +1,169 @@
+//! Exact I32F32 arithmetic on eight `i64` lanes in AVX-512 (F and DQ), shared by the
+//! solver's kernels: loads and stores of lane arrays, sums, the checked `*` and the fused
+//! dot product of values within the bound [−2⁴⁶, 2⁴⁶), and the bound check itself.
+//!
+//! Values within the bound have products below 2⁶⁰ after rounding and sums of a few of
+//! them stay below 2⁶³, so these wrapping operations give exactly what the checked scalar
+//! operators give, which saturate nowhere there; each kernel states which values it checks.
+//!
+//! # Products
+//!
+//! `_mm512_mul_epi32` multiplies the signed low 32 bits of each lane into 64, and
+//! `_mm512_mullo_epi64` (AVX-512DQ) keeps the low 64 bits of a 64 × 64 product. With
+//! a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ (|a_h| ≤ 2¹⁴ for a checked a) and a_l ∈
+//! [−2³¹, 2³¹) the signed low half of a, and b likewise,
+//!
+//! ```text
+//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l + ⌊(a_l·b_l + 2³¹)/2³²⌋
+//! ```
+//!
+//! since a·b = a·b_h·2³² + a_h·b_l·2³² + a_l·b_l; this is the checked `*` (to nearest, ties
+//! toward +∞). The term a·b_h is below 2⁶⁰, so its low 64 bits are all of it. For the
+//! fused dot product Σ aᵢbᵢ rounded once, each a_l·b_l is split into q·2³² + r with
+//! 0 ≤ r < 2³², so that
+//! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
+//! Σ r + 2³¹ < 2³⁴ cannot overflow.
+//!
+
+use core::arch::x86_64::{
+    __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
+    _mm512_loadu_si512, _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_mul_epi32,
+    _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64,
+    _mm512_storeu_si512, _mm512_sub_epi64,
+};
+
+use super::lanes::{Lanes, Lanes3};
+use crate::math::Fx;
+
+/// Whether this processor runs the kernels: AVX-512F and AVX-512DQ (every processor with
+/// AVX-512 for servers and desktops has both).
+pub(super) fn has_kernels() -> bool {
+    std::arch::is_x86_feature_detected!("avx512f")
+        && std::arch::is_x86_feature_detected!("avx512dq")
+}
+
+/// The raw bits of a lane array.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn load(lanes: &Lanes<Fx>) -> __m512i {
+    // SAFETY: eight `Fx`, each one `i64`: 64 readable bytes.
+    unsafe { _mm512_loadu_si512(lanes.as_ptr().cast()) }
+}
+
+/// Writes raw bits to a lane array.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
+    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
+    unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) }
+}
+
+/// Writes the lanes of `mask` to a lane array; the others keep their values.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn store_lanes(lanes: &mut Lanes<Fx>, mask: __mmask8, value: __m512i) {
+    // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
+    unsafe { _mm512_mask_storeu_epi64(lanes.as_mut_ptr().cast(), mask, value) }
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn load3(lanes: &Lanes3<Fx>) -> [__m512i; 3] {
+    [load(&lanes.x), load(&lanes.y), load(&lanes.z)]
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn add(a: __m512i, b: __m512i) -> __m512i {
+    _mm512_add_epi64(a, b)
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn sub(a: __m512i, b: __m512i) -> __m512i {
+    _mm512_sub_epi64(a, b)
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn add3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+    [add(a[0], b[0]), add(a[1], b[1]), add(a[2], b[2])]
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+    [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
+}
+
+/// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn high(a: __m512i) -> __m512i {
+    _mm512_srai_epi64::<32>(add(a, _mm512_set1_epi64(1 << 31)))
+}
+
+/// The checked `*` of checked values: ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l +
+/// ⌊(a_l·b_l + 2³¹)/2³²⌋ (module documentation).
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn mul(a: __m512i, b: __m512i) -> __m512i {
+    let (ah, bh) = (high(a), high(b));
+    let upper = add(_mm512_mullo_epi64(a, bh), _mm512_mul_epi32(ah, b));
+    let low = _mm512_srai_epi64::<32>(add(_mm512_mul_epi32(a, b), _mm512_set1_epi64(1 << 31)));
+    add(upper, low)
+}
+
+/// Each component times the same factor.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn mul3(a: [__m512i; 3], b: __m512i) -> [__m512i; 3] {
+    [mul(a[0], b), mul(a[1], b), mul(a[2], b)]
+}
+
+/// The fused dot product of checked values: the exact Σ aᵢbᵢ rounded once.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
+    let mask = _mm512_set1_epi64(0xffff_ffff);
+    let mut whole = _mm512_setzero_si512();
+    let mut remainders = _mm512_setzero_si512();
+    for i in 0..3 {
+        let (ah, bh) = (high(a[i]), high(b[i]));
+        let upper = add(_mm512_mullo_epi64(a[i], bh), _mm512_mul_epi32(ah, b[i]));
+        let ll = _mm512_mul_epi32(a[i], b[i]);
+        whole = add(whole, add(upper, _mm512_srai_epi64::<32>(ll)));
+        remainders = add(remainders, _mm512_and_si512(ll, mask));
+    }
+    add(whole, high(remainders))
+}
+
+/// The lanes where x lies outside [−2⁴⁶, 2⁴⁶).
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn out_of_bound(x: __m512i) -> __mmask8 {
+    _mm512_cmpge_epu64_mask(
+        add(x, _mm512_set1_epi64(1 << 46)),
+        _mm512_set1_epi64(1 << 47),
+    )
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
+    out_of_bound(x[0]) | out_of_bound(x[1]) | out_of_bound(x[2])
+}
+
+/// `on` where the mask is set, `off` elsewhere.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
+    _mm512_mask_blend_epi64(mask, off, on)
+}
+
+/// The same value in every lane.
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+pub(super) fn splat(x: Fx) -> __m512i {
+    _mm512_set1_epi64(x.to_bits())
+}
