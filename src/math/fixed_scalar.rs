@@ -400,6 +400,15 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
         ))
     }
 
+    /// round(x / 2ˢʰⁱᶠᵗ), ties toward +∞: the raw bits shifted, which is exactly the checked
+    /// `x * 2⁻ˢʰⁱᶠᵗ` whenever the format holds that factor (F ≥ shift), and the one correct
+    /// rounding when it does not. Never out of range.
+    #[inline(always)]
+    fn mul_pow2_recip(self, shift: u32) -> Self {
+        let bits = self.to_bits() as i128;
+        Self::from_bits(((bits + (1i128 << (shift - 1))) >> shift) as i64)
+    }
+
     /// The wrapped sum; the guard trips exactly when the checked `+` would saturate.
     #[inline(always)]
     fn guarded_add(self, rhs: Self, guard: &mut Guard) -> Self {

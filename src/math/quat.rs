@@ -53,6 +53,11 @@ pub(crate) fn square_unscale<R: Real>() -> R {
     R::from_ratio(1, 1 << 16)
 }
 
+/// 17: a Newton step on the length multiplies by ½·[`square_unscale`] = 2⁻¹⁷, applied
+/// with [`Real::mul_pow2_recip`] so that formats with 16 fractional bits, which cannot hold
+/// 2⁻¹⁷, still halve (rounding the factor would double the step).
+const HALF_UNSCALE_SHIFT: u32 = 17;
+
 /// 2⁻¹⁰: the largest |ε| = ||q|² − 1| that [`Quat::normalize_near_unit`] takes to unit
 /// length in two Newton steps (the first leaves ¾ε² ≤ 2⁻²⁰, within the 2⁻¹⁶ that
 /// `norm_defect` needs).
@@ -184,8 +189,7 @@ impl<R: Real> Quat<R> {
             self.z / length,
         );
         let defect = estimate.norm_defect();
-        let half_unscale = square_unscale::<R>() * R::HALF;
-        let step = |c: R| c - (c * defect) * half_unscale;
+        let step = |c: R| c - (c * defect).mul_pow2_recip(HALF_UNSCALE_SHIFT);
         Some(Self::new(
             step(estimate.w),
             step(estimate.x),
@@ -265,8 +269,7 @@ impl<R: Real> Quat<R> {
             self.z * first,
         );
         let defect = estimate.norm_defect();
-        let half_unscale = square_unscale::<R>() * R::HALF;
-        let step = |c: R| c - (c * defect) * half_unscale;
+        let step = |c: R| c - (c * defect).mul_pow2_recip(HALF_UNSCALE_SHIFT);
         Self::new(
             step(estimate.w),
             step(estimate.x),

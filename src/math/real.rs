@@ -172,6 +172,15 @@ pub trait Real:
         self * rhs
     }
 
+    /// x·2⁻ˢʰⁱᶠᵗ (0 < shift < 32), rounded once as `*` rounds. The default multiplies by
+    /// 2⁻ˢʰⁱᶠᵗ, which is exact whenever the format can hold that power of two; a format
+    /// too coarse to hold it (fixed point with fewer than `shift` fractional bits) must
+    /// shift instead, or the factor itself would round (2⁻¹⁷ to 2⁻¹⁶ in I48F16).
+    #[inline]
+    fn mul_pow2_recip(self, shift: u32) -> Self {
+        self * Self::from_ratio(1, 1 << shift)
+    }
+
     /// 1/x. Zero gives the division-by-zero value of the format.
     #[inline]
     fn recip(self) -> Self {
