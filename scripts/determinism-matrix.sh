@@ -6,7 +6,7 @@
 #   scripts/determinism-matrix.sh [--targets LIST] [--no-install] [--strict]
 #
 # Targets (default: all, in this order):
-#   host-debug     x86_64, debug profile (overflow checks on)
+#   host-debug     x86_64, debug profile (overflow checks, debug assertions, opt-level 1)
 #   host-release   x86_64, release profile
 #   host-native    x86_64, release, -C target-cpu=native (FMA/AVX as the CPU allows)
 #   i686           32-bit x86, run natively
