@@ -60,6 +60,7 @@ mod sphere_capsule;
 mod sphere_sphere;
 mod tolerance;
 
+pub(crate) use self::box_box::{BoxPair, contact as box_box_contact, separating_axes_batch};
 use self::plane::WorldPlane;
 use self::segments::Segment;
 use super::manifold::Manifold;
