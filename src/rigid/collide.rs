@@ -108,39 +108,53 @@ impl<R: Real> RigidSystem<R> {
             bodies.kind[a as usize] == BodyKind::Dynamic
                 || bodies.kind[b as usize] == BodyKind::Dynamic
         };
-        // Pairs go in runs holding up to LANES box–box pairs, whose separating-axis tests
-        // are done together; then every pair of the run, in order, gets its manifold.
-        let mut next = 0;
-        while next < pairs.len() {
-            let unused = BoxPair {
-                half_a: Vec3::ZERO,
-                xf_a: &Transform::IDENTITY,
-                half_b: Vec3::ZERO,
-                xf_b: &Transform::IDENTITY,
-            };
-            let mut boxes = [unused; LANES];
-            let mut indices = [usize::MAX; LANES];
-            let mut count = 0;
-            let mut end = next;
-            while end < pairs.len() && count < LANES {
-                let (a, b) = pairs[end];
-                let (ia, ib) = (a as usize, b as usize);
-                if collides(pairs[end])
-                    && let (Shape::Box { half_extents: ha }, Shape::Box { half_extents: hb }) =
-                        (&bodies.shape[ia], &bodies.shape[ib])
+        let box_pair = |(a, b): (u32, u32)| {
+            let (ia, ib) = (a as usize, b as usize);
+            match (&bodies.shape[ia], &bodies.shape[ib]) {
+                (Shape::Box { half_extents: ha }, Shape::Box { half_extents: hb })
+                    if collides((a, b)) =>
                 {
-                    boxes[count] = BoxPair {
+                    Some(BoxPair {
                         half_a: *ha,
                         xf_a: &transforms[ia],
                         half_b: *hb,
                         xf_b: &transforms[ib],
-                    };
+                    })
+                }
+                _ => None,
+            }
+        };
+        // Pairs go in runs: from a box–box pair, up to LANES of them, whose separating-axis
+        // tests are done together, and the other pairs among them; otherwise the one pair.
+        // Every pair of a run, in order, then gets its manifold.
+        let unused = BoxPair {
+            half_a: Vec3::ZERO,
+            xf_a: &Transform::IDENTITY,
+            half_b: Vec3::ZERO,
+            xf_b: &Transform::IDENTITY,
+        };
+        let mut boxes = [unused; LANES];
+        let mut indices = [usize::MAX; LANES];
+        let mut next = 0;
+        while next < pairs.len() {
+            let mut count = 0;
+            let mut end = next;
+            while end < pairs.len() && count < LANES {
+                if let Some(pair) = box_pair(pairs[end]) {
+                    boxes[count] = pair;
                     indices[count] = end;
                     count += 1;
+                } else if count == 0 {
+                    end += 1;
+                    break;
                 }
                 end += 1;
             }
-            let axes = separating_axes_batch(&boxes[..count], margin);
+            let axes = if count > 0 {
+                separating_axes_batch(&boxes[..count], margin)
+            } else {
+                [None; LANES]
+            };
             let mut lane = 0;
             for (index, &(a, b)) in pairs.iter().enumerate().take(end).skip(next) {
                 if !collides((a, b)) {
