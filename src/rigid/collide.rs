@@ -10,7 +10,8 @@
 //!    Pairs of bodies joined by a joint that does not let them collide are dropped.
 //! 3. The narrowphase computes each pair's manifold (part by part for compounds); each
 //!    point takes the impulses of the point with the same feature id in last step's contact
-//!    of the same key.
+//!    of the same key. Box–box pairs have their separating-axis tests done up to
+//!    [`LANES`] at a time, with the same results as one by one.
 //! 4. Contacts between two bodies that do not move (sleeping or static) are kept as they
 //!    are, impulses included, so a sleeping island wakes with its contacts warm.
 //!
@@ -20,12 +21,15 @@ use super::aabb::Aabb;
 use super::contact::{Contact, ContactKey};
 use super::desc::BodyKind;
 use super::manifold::Manifold;
-use super::narrowphase::collide as collide_convex;
+use super::narrowphase::{
+    BoxPair, box_box_contact, collide as collide_convex, separating_axes_batch,
+};
 use super::shape::Shape;
+use super::solver::LANES;
 use super::system::RigidSystem;
 use super::transform::Transform;
-use crate::math::Real;
 use crate::math::saturation::record_saturation;
+use crate::math::{Real, Vec3};
 
 impl<R: Real> RigidSystem<R> {
     /// Stage 1: recomputes the contact list (see the [module](self) documentation).
@@ -91,32 +95,98 @@ impl<R: Real> RigidSystem<R> {
         // last step's contacts: the contacts before `cursor` have keys below every key to
         // come, so finding a manifold's previous contact is a walk, not a search.
         let mut cursor = 0;
-        for &(a, b) in &scratch.pairs {
-            let (ia, ib) = (a as usize, b as usize);
-            if bodies.kind[ia] != BodyKind::Dynamic && bodies.kind[ib] != BodyKind::Dynamic {
-                continue;
+        let mut push = |key: ContactKey, manifold: &Manifold<R>| {
+            while old.get(cursor).is_some_and(|c| c.key < key) {
+                cursor += 1;
             }
-            let (xf_a, xf_b) = (&scratch.transforms[ia], &scratch.transforms[ib]);
-            for_each_manifold(
-                &bodies.shape[ia],
-                xf_a,
-                &bodies.shape[ib],
-                xf_b,
-                margin,
-                |part_a, part_b, manifold| {
-                    let key = ContactKey {
-                        body_a: a,
-                        body_b: b,
-                        part_a,
-                        part_b,
-                    };
-                    while old.get(cursor).is_some_and(|c| c.key < key) {
-                        cursor += 1;
+            let previous = old.get(cursor).filter(|c| c.key == key);
+            contacts.push(Contact::from_manifold(key, manifold, previous));
+        };
+        let pairs = &scratch.pairs;
+        let transforms = &scratch.transforms;
+        let collides = |(a, b): (u32, u32)| {
+            bodies.kind[a as usize] == BodyKind::Dynamic
+                || bodies.kind[b as usize] == BodyKind::Dynamic
+        };
+        let box_pair = |(a, b): (u32, u32)| {
+            let (ia, ib) = (a as usize, b as usize);
+            match (&bodies.shape[ia], &bodies.shape[ib]) {
+                (Shape::Box { half_extents: ha }, Shape::Box { half_extents: hb })
+                    if collides((a, b)) =>
+                {
+                    Some(BoxPair {
+                        half_a: *ha,
+                        xf_a: &transforms[ia],
+                        half_b: *hb,
+                        xf_b: &transforms[ib],
+                    })
+                }
+                _ => None,
+            }
+        };
+        // Pairs go in runs: from a box–box pair, up to LANES of them, whose separating-axis
+        // tests are done together, and the other pairs among them; otherwise the one pair.
+        // Every pair of a run, in order, then gets its manifold.
+        let unused = BoxPair {
+            half_a: Vec3::ZERO,
+            xf_a: &Transform::IDENTITY,
+            half_b: Vec3::ZERO,
+            xf_b: &Transform::IDENTITY,
+        };
+        let mut boxes = [unused; LANES];
+        let mut indices = [usize::MAX; LANES];
+        let mut next = 0;
+        while next < pairs.len() {
+            let mut count = 0;
+            let mut end = next;
+            while end < pairs.len() && count < LANES {
+                if let Some(pair) = box_pair(pairs[end]) {
+                    boxes[count] = pair;
+                    indices[count] = end;
+                    count += 1;
+                } else if count == 0 {
+                    end += 1;
+                    break;
+                }
+                end += 1;
+            }
+            let axes = if count > 0 {
+                separating_axes_batch(&boxes[..count], margin)
+            } else {
+                [None; LANES]
+            };
+            let mut lane = 0;
+            for (index, &(a, b)) in pairs.iter().enumerate().take(end).skip(next) {
+                if !collides((a, b)) {
+                    continue;
+                }
+                let key = |part_a, part_b| ContactKey {
+                    body_a: a,
+                    body_b: b,
+                    part_a,
+                    part_b,
+                };
+                if lane < count && indices[lane] == index {
+                    if let Some(axes) = &axes[lane] {
+                        let manifold = box_box_contact(&boxes[lane], axes, margin);
+                        if manifold.count > 0 {
+                            push(key(0, 0), &manifold);
+                        }
                     }
-                    let previous = old.get(cursor).filter(|c| c.key == key);
-                    contacts.push(Contact::from_manifold(key, manifold, previous));
-                },
-            );
+                    lane += 1;
+                    continue;
+                }
+                let (ia, ib) = (a as usize, b as usize);
+                for_each_manifold(
+                    &bodies.shape[ia],
+                    &transforms[ia],
+                    &bodies.shape[ib],
+                    &transforms[ib],
+                    margin,
+                    |part_a, part_b, manifold| push(key(part_a, part_b), manifold),
+                );
+            }
+            next = end;
         }
         // Two runs, each in key order (the contacts kept, then the new ones), with distinct
         // keys: the stable sort merges them in one pass and leaves a single run untouched.

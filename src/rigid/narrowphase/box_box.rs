@@ -1,46 +1,37 @@
-//! Box against box: separating axes (3 + 3 face normals, 9 edge cross products), then a
-//! clipped reference face, or one point between two edges.
+//! Box against box: separating axes (3 + 3 face normals, 9 edge cross products, in
+//! `axes.rs`, and eight pairs at a time in `avx512.rs`), then a clipped reference face, or
+//! one point between two edges.
+
+#[cfg(target_arch = "x86_64")]
+mod avx512;
+mod axes;
+#[cfg(test)]
+mod tests;
+
+pub(crate) use axes::{Axes, Choice, separating_axes};
 
 use super::clip::{MAX_CLIPPED, Polygon, four_of};
 use super::segments::{Segment, closest_parameters};
-use super::tolerance::{parallel_sine_squared, side, unit};
+use super::tolerance::{side, unit};
 use crate::math::{Real, Vec3};
 use crate::rigid::manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
+use crate::rigid::solver::LANES;
 use crate::rigid::transform::Transform;
 
 /// Id bit of an edge–edge point; face points use bits 0–12.
 const EDGE_ID: u32 = 1 << 13;
 
-/// A face axis: which box (false A, true B), the axis index and its separation (m).
+/// One box–box pair of a batch: A's half extents (m) and placement, and B's.
 #[derive(Clone, Copy)]
-struct FaceAxis<R: Real> {
-    of_b: bool,
-    axis: usize,
-    separation: R,
+pub(crate) struct BoxPair<'a, R: Real> {
+    pub half_a: Vec3<R>,
+    pub xf_a: &'a Transform<R>,
+    pub half_b: Vec3<R>,
+    pub xf_b: &'a Transform<R>,
 }
 
-/// The contact of box A (half extents `half_a`, m, placed by `xf_a`) with box B.
-///
-/// **Separating axes.** With d = c_B − c_A, t = R_Aᵀ d (B's centre in A's frame) and
-/// C = R_Aᵀ R_B (C_ij = a_i·b_j), the separation along A's face axis i is
-/// |t_i| − (hA_i + Σ_j hB_j |C_ij|), along B's axis j |d·b_j| − (hB_j + Σ_i hA_i |C_ij|), and
-/// along a_i × b_j (Ericson, *Real-Time Collision Detection*, 4.4.1) it is
-/// (|t·L| − rA − rB)/|L| with |L|² = C_i1j² + C_i2j² (i1, i2 the other two axes of A). The
-/// first axis separated by more than `margin` returns an empty manifold; rows of C are
-/// computed as A's face axes need them, so a pair separated along A's first axis needs
-/// one. Edge axes within a sine of 2⁻¹⁰ of parallel are skipped (the face axes cover
-/// them), and edge axes are compared by their squares, without square roots (see
-/// [`ratio_greater`]). The deepest face axis of B is preferred to A's only when deeper by
-/// more than 2⁻¹¹ m, and an edge axis to the chosen face only when deeper by more than
-/// 2⁻¹⁰ m + 1/16 of the face's overlap, so that resting boxes keep the same reference face
-/// from step to step.
-///
-/// **Face contact** ([`face_contact`]): the incident face of the other box is clipped
-/// against the reference face's four side planes; points within the margin remain, and
-/// more than four are reduced to four ([`four_of`]).
-///
-/// **Edge contact** ([`edge_contact`]): one point midway between the closest points of
-/// the two edges.
+/// The contact of box A (half extents `half_a`, m, placed by `xf_a`) with box B: the
+/// [separating-axis test](separating_axes), then [`contact`].
 pub(super) fn box_box<R: Real>(
     half_a: Vec3<R>,
     xf_a: &Transform<R>,
@@ -48,142 +39,79 @@ pub(super) fn box_box<R: Real>(
     xf_b: &Transform<R>,
     margin: R,
 ) -> Manifold<R> {
-    let a = xf_a.rotation.cols;
-    let b = xf_b.rotation.cols;
-    let ha = half_a.to_array();
-    let hb = half_b.to_array();
-    let d = xf_b.translation - xf_a.translation;
-    let t = [a[0].dot(d), a[1].dot(d), a[2].dot(d)];
-    let mut c = [[R::ZERO; 3]; 3];
-    let mut abs = [[R::ZERO; 3]; 3];
-
-    // A's face axes, computing row i of C only when it is needed.
-    let mut face_a = FaceAxis {
-        of_b: false,
-        axis: 0,
-        separation: R::MIN,
+    let pair = BoxPair {
+        half_a,
+        xf_a,
+        half_b,
+        xf_b,
     };
-    for i in 0..3 {
-        for j in 0..3 {
-            c[i][j] = a[i].dot(b[j]);
-            abs[i][j] = c[i][j].abs();
-        }
-        let reach = ha[i] + hb[0] * abs[i][0] + hb[1] * abs[i][1] + hb[2] * abs[i][2];
-        let separation = t[i].abs() - reach;
-        if separation > margin {
-            return Manifold::EMPTY;
-        }
-        if separation > face_a.separation {
-            face_a = FaceAxis {
-                of_b: false,
-                axis: i,
-                separation,
-            };
-        }
-    }
-    let mut face_b = FaceAxis {
-        of_b: true,
-        axis: 0,
-        separation: R::MIN,
-    };
-    let mut tb = [R::ZERO; 3];
-    for j in 0..3 {
-        tb[j] = t[0] * c[0][j] + t[1] * c[1][j] + t[2] * c[2][j];
-        let reach = hb[j] + ha[0] * abs[0][j] + ha[1] * abs[1][j] + ha[2] * abs[2][j];
-        let separation = tb[j].abs() - reach;
-        if separation > margin {
-            return Manifold::EMPTY;
-        }
-        if separation > face_b.separation {
-            face_b = FaceAxis {
-                of_b: true,
-                axis: j,
-                separation,
-            };
-        }
-    }
-    let face = if face_b.separation > face_a.separation + R::from_ratio(1, 1 << 11) {
-        face_b
-    } else {
-        face_a
-    };
-
-    // Edge axes. An edge axis is kept only if its separation s/|L| exceeds the face's by
-    // the bias; among those the largest wins. (i, j, s, |L|²) of the best so far.
-    let threshold =
-        face.separation + R::from_ratio(1, 1 << 10) + face.separation.abs() * R::from_ratio(1, 16);
-    let threshold_squared = threshold * threshold;
-    let parallel = parallel_sine_squared::<R>();
-    let margin_squared = margin * margin;
-    let mut square = [[R::ZERO; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            square[i][j] = c[i][j] * c[i][j];
-        }
-    }
-    let mut edge: Option<(usize, usize, R, R)> = None;
-    for i in 0..3 {
-        let (i1, i2) = ((i + 1) % 3, (i + 2) % 3);
-        for j in 0..3 {
-            let (j1, j2) = ((j + 1) % 3, (j + 2) % 3);
-            let length_squared = square[i1][j] + square[i2][j];
-            if length_squared <= parallel {
-                continue;
-            }
-            let ra = ha[i1] * abs[i2][j] + ha[i2] * abs[i1][j];
-            let rb = hb[j1] * abs[i][j2] + hb[j2] * abs[i][j1];
-            let separation = (t[i2] * c[i1][j] - t[i1] * c[i2][j]).abs() - (ra + rb);
-            if separation > R::ZERO && separation * separation > margin_squared * length_squared {
-                return Manifold::EMPTY;
-            }
-            let beats_face = match (separation >= R::ZERO, threshold >= R::ZERO) {
-                (true, false) => true,
-                (false, true) => false,
-                (true, true) => separation * separation > threshold_squared * length_squared,
-                (false, false) => separation * separation < threshold_squared * length_squared,
-            };
-            if beats_face
-                && edge.is_none_or(|(_, _, s, l)| ratio_greater(separation, length_squared, s, l))
-            {
-                edge = Some((i, j, separation, length_squared));
-            }
-        }
-    }
-    if let Some((i, j, _, _)) = edge {
-        return edge_contact(half_a, xf_a, half_b, xf_b, i, j, margin);
-    }
-    if face.of_b {
-        // Reference B: A's centre is −tb in B's frame, A's axis i is row i of C.
-        let row = |i: usize| Vec3::new(c[i][0], c[i][1], c[i][2]);
-        let incident = Incident {
-            centre: -Vec3::new(tb[0], tb[1], tb[2]),
-            axes: [row(0), row(1), row(2)],
-            half: half_a,
-        };
-        let sign = -side(tb[face.axis]);
-        face_contact(half_b, xf_b, face.axis, sign, &incident, true, margin)
-    } else {
-        // Reference A: B's centre is t in A's frame, B's axis j is column j of C.
-        let column = |j: usize| Vec3::new(c[0][j], c[1][j], c[2][j]);
-        let incident = Incident {
-            centre: Vec3::new(t[0], t[1], t[2]),
-            axes: [column(0), column(1), column(2)],
-            half: half_b,
-        };
-        let sign = side(t[face.axis]);
-        face_contact(half_a, xf_a, face.axis, sign, &incident, false, margin)
-    }
+    separating_axes(half_a, xf_a, half_b, xf_b, margin)
+        .map_or(Manifold::EMPTY, |axes| contact(&pair, &axes, margin))
 }
 
-/// Whether s1/√l1 > s2/√l2 (l1, l2 > 0), without square roots: by the signs of s1 and
-/// s2, and otherwise by comparing s1² l2 with s2² l1 (reversed when both are negative).
-#[inline]
-fn ratio_greater<R: Real>(s1: R, l1: R, s2: R, l2: R) -> bool {
-    match (s1 >= R::ZERO, s2 >= R::ZERO) {
-        (true, false) => true,
-        (false, true) => false,
-        (true, true) => s1 * s1 * l2 > s2 * s2 * l1,
-        (false, false) => s1 * s1 * l2 < s2 * s2 * l1,
+/// The separating-axis tests of up to [`LANES`] pairs, in order: lane l is what
+/// [`separating_axes`] gives for `pairs[l]`, bit for bit (lanes past the pairs are `None`).
+///
+/// On I32F32 the pairs go to the AVX-512 kernel together when the processor has it; the
+/// lanes it leaves (values past its bound) are tested one by one.
+pub(crate) fn separating_axes_batch<R: Real>(
+    pairs: &[BoxPair<'_, R>],
+    margin: R,
+) -> [Option<Axes<R>>; LANES] {
+    let mut out = [None; LANES];
+    #[cfg(target_arch = "x86_64")]
+    let done = avx512::separating_axes_lanes(pairs, margin, &mut out);
+    #[cfg(not(target_arch = "x86_64"))]
+    let done = 0u8;
+    for (l, pair) in pairs.iter().enumerate().take(LANES) {
+        if done & (1 << l) == 0 {
+            out[l] = separating_axes(pair.half_a, pair.xf_a, pair.half_b, pair.xf_b, margin);
+        }
+    }
+    out
+}
+
+/// The contact of a pair that the separating-axis test did not separate, on the axis it
+/// chose:
+///
+/// **Face contact** ([`face_contact`]): the incident face of the other box is clipped
+/// against the reference face's four side planes; points within the margin remain, and
+/// more than four are reduced to four ([`four_of`]).
+///
+/// **Edge contact** ([`edge_contact`]): one point midway between the closest points of
+/// the two edges.
+pub(crate) fn contact<R: Real>(pair: &BoxPair<'_, R>, axes: &Axes<R>, margin: R) -> Manifold<R> {
+    let BoxPair {
+        half_a,
+        xf_a,
+        half_b,
+        xf_b,
+    } = *pair;
+    let Axes { c, t, tb, choice } = *axes;
+    match choice {
+        Choice::Edge { i, j } => edge_contact(half_a, xf_a, half_b, xf_b, i, j, margin),
+        Choice::Face { of_b: true, axis } => {
+            // Reference B: A's centre is −tb in B's frame, A's axis i is row i of C.
+            let row = |i: usize| Vec3::new(c[i][0], c[i][1], c[i][2]);
+            let incident = Incident {
+                centre: -Vec3::new(tb[0], tb[1], tb[2]),
+                axes: [row(0), row(1), row(2)],
+                half: half_a,
+            };
+            let sign = -side(tb[axis]);
+            face_contact(half_b, xf_b, axis, sign, &incident, true, margin)
+        }
+        Choice::Face { of_b: false, axis } => {
+            // Reference A: B's centre is t in A's frame, B's axis j is column j of C.
+            let column = |j: usize| Vec3::new(c[0][j], c[1][j], c[2][j]);
+            let incident = Incident {
+                centre: Vec3::new(t[0], t[1], t[2]),
+                axes: [column(0), column(1), column(2)],
+                half: half_b,
+            };
+            let sign = side(t[axis]);
+            face_contact(half_a, xf_a, axis, sign, &incident, false, margin)
+        }
     }
 }
 

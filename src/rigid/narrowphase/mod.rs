@@ -27,7 +27,7 @@
 //! | sphere–capsule | `sphere_capsule.rs` | 1 |
 //! | capsule–capsule | `capsule_capsule.rs` | 1, or 2 side by side |
 //! | capsule–box | `capsule_box.rs` | 1, or 2 lying on a face |
-//! | box–box | `box_box.rs` (with `clip.rs`) | 1 to 4 |
+//! | box–box | `box_box.rs` (with `clip.rs`; separating axes in `box_box/axes.rs`, eight pairs at a time in `box_box/avx512.rs`) | 1 to 4 |
 //! | plane–sphere, plane–capsule, plane–box | `plane.rs` | 1, 1–2, 1–4 |
 //!
 //! Shared helpers: `segments.rs` (closest points on segments), `clip.rs` (face clipping and
@@ -60,6 +60,7 @@ mod sphere_capsule;
 mod sphere_sphere;
 mod tolerance;
 
+pub(crate) use self::box_box::{BoxPair, contact as box_box_contact, separating_axes_batch};
 use self::plane::WorldPlane;
 use self::segments::Segment;
 use super::manifold::Manifold;

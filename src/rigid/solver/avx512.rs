@@ -1,5 +1,5 @@
 //! Exact I32F32 arithmetic on eight `i64` lanes in AVX-512 (F and DQ), shared by the
-//! solver's kernels: loads and stores of lane arrays, sums, the checked `*` and the fused
+//! solver's kernels and the narrowphase's box–box kernel: loads and stores of lane arrays, sums, the checked `*` and the fused
 //! dot product of values within the bound [−2⁴⁶, 2⁴⁶), and the bound check itself.
 //!
 //! Values within the bound have products below 2⁶⁰ after rounding and sums of a few of
@@ -37,7 +37,7 @@ use crate::math::Fx;
 
 /// Whether this processor runs the kernels: AVX-512F and AVX-512DQ (every processor with
 /// AVX-512 for servers and desktops has both).
-pub(super) fn has_kernels() -> bool {
+pub(crate) fn has_kernels() -> bool {
     std::arch::is_x86_feature_detected!("avx512f")
         && std::arch::is_x86_feature_detected!("avx512dq")
 }
@@ -45,7 +45,7 @@ pub(super) fn has_kernels() -> bool {
 /// The raw bits of a lane array.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn load(lanes: &Lanes<Fx>) -> __m512i {
+pub(crate) fn load(lanes: &Lanes<Fx>) -> __m512i {
     // SAFETY: eight `Fx`, each one `i64`: 64 readable bytes.
     unsafe { _mm512_loadu_si512(lanes.as_ptr().cast()) }
 }
@@ -53,7 +53,7 @@ pub(super) fn load(lanes: &Lanes<Fx>) -> __m512i {
 /// Writes raw bits to a lane array.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
+pub(crate) fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
     // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
     unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) }
 }
@@ -61,45 +61,45 @@ pub(super) fn store(lanes: &mut Lanes<Fx>, value: __m512i) {
 /// Writes the lanes of `mask` to a lane array; the others keep their values.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn store_lanes(lanes: &mut Lanes<Fx>, mask: __mmask8, value: __m512i) {
+pub(crate) fn store_lanes(lanes: &mut Lanes<Fx>, mask: __mmask8, value: __m512i) {
     // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
     unsafe { _mm512_mask_storeu_epi64(lanes.as_mut_ptr().cast(), mask, value) }
 }
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn load3(lanes: &Lanes3<Fx>) -> [__m512i; 3] {
+pub(crate) fn load3(lanes: &Lanes3<Fx>) -> [__m512i; 3] {
     [load(&lanes.x), load(&lanes.y), load(&lanes.z)]
 }
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn add(a: __m512i, b: __m512i) -> __m512i {
+pub(crate) fn add(a: __m512i, b: __m512i) -> __m512i {
     _mm512_add_epi64(a, b)
 }
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn sub(a: __m512i, b: __m512i) -> __m512i {
+pub(crate) fn sub(a: __m512i, b: __m512i) -> __m512i {
     _mm512_sub_epi64(a, b)
 }
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn add3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+pub(crate) fn add3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     [add(a[0], b[0]), add(a[1], b[1]), add(a[2], b[2])]
 }
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+pub(crate) fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
 }
 
 /// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn high(a: __m512i) -> __m512i {
+pub(crate) fn high(a: __m512i) -> __m512i {
     _mm512_srai_epi64::<32>(add(a, _mm512_set1_epi64(1 << 31)))
 }
 
@@ -107,7 +107,7 @@ pub(super) fn high(a: __m512i) -> __m512i {
 /// ⌊(a_l·b_l + 2³¹)/2³²⌋ (module documentation).
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn mul(a: __m512i, b: __m512i) -> __m512i {
+pub(crate) fn mul(a: __m512i, b: __m512i) -> __m512i {
     let (ah, bh) = (high(a), high(b));
     let upper = add(_mm512_mullo_epi64(a, bh), _mm512_mul_epi32(ah, b));
     let low = _mm512_srai_epi64::<32>(add(_mm512_mul_epi32(a, b), _mm512_set1_epi64(1 << 31)));
@@ -117,14 +117,14 @@ pub(super) fn mul(a: __m512i, b: __m512i) -> __m512i {
 /// Each component times the same factor.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn mul3(a: [__m512i; 3], b: __m512i) -> [__m512i; 3] {
+pub(crate) fn mul3(a: [__m512i; 3], b: __m512i) -> [__m512i; 3] {
     [mul(a[0], b), mul(a[1], b), mul(a[2], b)]
 }
 
 /// The fused dot product of checked values: the exact Σ aᵢbᵢ rounded once.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
+pub(crate) fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
     let mask = _mm512_set1_epi64(0xffff_ffff);
     let mut whole = _mm512_setzero_si512();
     let mut remainders = _mm512_setzero_si512();
@@ -141,7 +141,7 @@ pub(super) fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
 /// The lanes where x lies outside [−2⁴⁶, 2⁴⁶).
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn out_of_bound(x: __m512i) -> __mmask8 {
+pub(crate) fn out_of_bound(x: __m512i) -> __mmask8 {
     _mm512_cmpge_epu64_mask(
         add(x, _mm512_set1_epi64(1 << 46)),
         _mm512_set1_epi64(1 << 47),
@@ -150,20 +150,20 @@ pub(super) fn out_of_bound(x: __m512i) -> __mmask8 {
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
+pub(crate) fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
     out_of_bound(x[0]) | out_of_bound(x[1]) | out_of_bound(x[2])
 }
 
 /// `on` where the mask is set, `off` elsewhere.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
+pub(crate) fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
     _mm512_mask_blend_epi64(mask, off, on)
 }
 
 /// The same value in every lane.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(super) fn splat(x: Fx) -> __m512i {
+pub(crate) fn splat(x: Fx) -> __m512i {
     _mm512_set1_epi64(x.to_bits())
 }

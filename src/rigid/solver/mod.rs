@@ -20,7 +20,7 @@
 //! machine.
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+pub(crate) mod avx512;
 mod batching;
 mod body;
 mod contact_constraint;
@@ -38,6 +38,7 @@ pub(crate) use body::{STATIC_BODY, SolverBody};
 pub(crate) use contact_constraint::{ContactBlock, SolvePass};
 pub(crate) use joint_pose::{JointPose, twist_angle};
 pub(crate) use joint_row::JointPass;
+pub(crate) use lanes::LANES;
 pub(crate) use softness::Softness;
 
 use crate::math::Real;
