@@ -18,7 +18,8 @@
 //!
 //! Ranges: x < 2⁶³, so n < 2⁹⁵, q < 2⁴⁸ and r ≤ 2q < 2⁴⁹; 4r + 3 < 2⁵² fits a lane. The
 //! digits of x·2³² are those of x followed by sixteen zero digits; the top digits that
-//! are zero in every lane are skipped, as they leave q and r at zero.
+//! are zero in every lane are skipped, as they leave q and r at zero (all of them when
+//! every value is zero, as for one-point contacts' twist arms).
 
 use core::arch::x86_64::{
     __m512i, _mm_cvtsi64_si128, _mm512_add_epi64, _mm512_cmpge_epu64_mask, _mm512_cmpgt_epu64_mask,
@@ -41,29 +42,48 @@ pub(crate) fn sqrt<const N: usize>(values: [__m512i; N]) -> [__m512i; N] {
     let values = values.map(|x| _mm512_max_epi64(x, zero));
     let largest = values.iter().fold(zero, |m, &x| _mm512_max_epi64(m, x));
     let largest = _mm512_reduce_max_epi64(largest) as u64;
-    // Base-4 digits of the largest x, and x shifted so that its top digit is bits 63–62
-    // (a shift of 64 leaves 0, when every value is 0).
+    // Every value 0 (or negative): every root is 0.
+    if largest == 0 {
+        return [zero; N];
+    }
+    // Base-4 digits of the largest x, and x shifted so that its top digit is bits 63–62.
     let digits = (u64::BITS - largest.leading_zeros()).div_ceil(2);
     let shift = _mm_cvtsi64_si128(i64::from(64 - 2 * digits));
     let mut rest = values.map(|x| _mm512_sll_epi64(x, shift));
     let mut root = [zero; N];
     let mut remainder = [zero; N];
-    for _ in 0..digits + FRACTION_DIGITS {
+    for _ in 0..digits {
         for i in 0..N {
             let digit = _mm512_srli_epi64::<62>(rest[i]);
             rest[i] = _mm512_slli_epi64::<2>(rest[i]);
             let r = _mm512_or_si512(_mm512_slli_epi64::<2>(remainder[i]), digit);
-            let trial = _mm512_or_si512(_mm512_slli_epi64::<2>(root[i]), one);
-            let fits = _mm512_cmpge_epu64_mask(r, trial);
-            remainder[i] = _mm512_mask_sub_epi64(r, fits, r, trial);
-            let doubled = _mm512_add_epi64(root[i], root[i]);
-            root[i] = _mm512_mask_add_epi64(doubled, fits, doubled, one);
+            (root[i], remainder[i]) = next_digit(root[i], r);
+        }
+    }
+    for _ in 0..FRACTION_DIGITS {
+        for i in 0..N {
+            let r = _mm512_slli_epi64::<2>(remainder[i]);
+            (root[i], remainder[i]) = next_digit(root[i], r);
         }
     }
     core::array::from_fn(|i| {
         let up = _mm512_cmpgt_epu64_mask(remainder[i], root[i]);
         _mm512_mask_add_epi64(root[i], up, root[i], one)
     })
+}
+
+/// One digit of the root: (qₖ₊₁, rₖ₊₁) from qₖ and 4rₖ + d (module documentation).
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn next_digit(root: __m512i, r: __m512i) -> (__m512i, __m512i) {
+    let one = _mm512_set1_epi64(1);
+    let trial = _mm512_or_si512(_mm512_slli_epi64::<2>(root), one);
+    let fits = _mm512_cmpge_epu64_mask(r, trial);
+    let doubled = _mm512_add_epi64(root, root);
+    (
+        _mm512_mask_add_epi64(doubled, fits, doubled, one),
+        _mm512_mask_sub_epi64(r, fits, r, trial),
+    )
 }
 
 #[cfg(test)]
@@ -103,11 +123,14 @@ mod tests {
         bad
     }
 
-    /// Edge values, exact squares and their neighbours, rounding midpoints and their
+    /// Zeros and negative values, edge values, exact squares and their neighbours, rounding midpoints and their
     /// neighbours, and random bits of every magnitude (one magnitude per batch, and
     /// magnitudes mixed), against the scalar form.
     fn inputs() -> Vec<i64> {
-        let mut values = vec![
+        // First a batch of zeros and negative values only.
+        let mut values = vec![0, -1, i64::MIN, 0, -(1 << 40), 0, 0, -2];
+        values.extend([0; 8]);
+        values.extend([
             i64::MIN,
             i64::MIN + 1,
             -1,
@@ -118,7 +141,7 @@ mod tests {
             4,
             i64::MAX,
             i64::MAX - 1,
-        ];
+        ]);
         for bits in 0..63 {
             let p = 1i64 << bits;
             values.extend([p - 1, p, p + 1]);
