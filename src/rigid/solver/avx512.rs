@@ -25,6 +25,8 @@
 //! Σ r + 2³¹ < 2³⁴ cannot overflow.
 //!
 
+pub(crate) mod sqrt;
+
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
     _mm512_loadu_si512, _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_mul_epi32,

@@ -64,8 +64,10 @@
 //! few lanes where it applies; the twist clamp is a min and a max.
 
 mod prepare;
+mod twist_arms;
 
 pub(super) use prepare::prepare;
+pub(super) use twist_arms::twist_arms;
 
 use crate::rigid::solver::avx512::{
     add, add3, dot3, has_kernels, high, load, load3, mul, mul3, out_of_bound, out_of_bound3,

@@ -13,18 +13,21 @@ use crate::math::{Real, Vec3};
 use crate::rigid::contact::Contact;
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 use crate::rigid::solver::body::SolverBody;
-use crate::rigid::solver::lanes::Lanes3;
+use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
 
 /// The anchors of each point of each lane from the bodies' centres of mass,
 /// r_a = p − x_a and r_b = p − x_b (m), and those of each lane's friction centre c,
 /// c − x_a and c − x_b: what [`ContactBlock::prepare_lane`] leaves for
-/// [`ContactBlock::prepare_products`]. Points a lane does not use hold stale values, unread.
+/// [`ContactBlock::prepare_products`], with the squares of the points' twist arms,
+/// |p_k − c|² (m²), whose square roots that stage takes for the whole block at once.
+/// Points a lane does not use hold stale values, unread.
 #[derive(Clone, Debug)]
 pub(crate) struct ContactArms<R: Real> {
     pub r_a: [Lanes3<R>; MAX_MANIFOLD_POINTS],
     pub r_b: [Lanes3<R>; MAX_MANIFOLD_POINTS],
     pub centre_a: Lanes3<R>,
     pub centre_b: Lanes3<R>,
+    pub twist_arm_squared: [Lanes<R>; MAX_MANIFOLD_POINTS],
 }
 
 impl<R: Real> ContactArms<R> {
@@ -34,11 +37,13 @@ impl<R: Real> ContactArms<R> {
         r_b: [Lanes3::ZERO; MAX_MANIFOLD_POINTS],
         centre_a: Lanes3::ZERO,
         centre_b: Lanes3::ZERO,
+        twist_arm_squared: [[R::ZERO; LANES]; MAX_MANIFOLD_POINTS],
     };
 }
 
-/// The friction centre of a contact's points, their mean c = (Σ p_k)/N (m), and each
-/// point's distance from it, d_k = |p_k − c| (m). No points give the origin.
+/// The friction centre of a contact's points, their mean c = (Σ p_k)/N (m), and the
+/// square of each point's distance from it, d_k² = |p_k − c|² (m²). No points give the
+/// origin.
 fn friction_centre<R: Real>(
     points: &[crate::rigid::contact::ContactPoint<R>],
 ) -> (Vec3<R>, [R; MAX_MANIFOLD_POINTS]) {
@@ -56,7 +61,7 @@ fn friction_centre<R: Real>(
     }
     let centre = first.point + offset_sum / R::from_int(points.len() as i32);
     for (d, p) in distances.iter_mut().zip(points) {
-        *d = (p.point - centre).length();
+        *d = (p.point - centre).length_squared();
     }
     (centre, distances)
 }
@@ -70,9 +75,9 @@ impl<R: Real> ContactBlock<R> {
     /// Takes the next free lane for the constraint of `contact` between solver bodies `a`
     /// and `b` whose centres of mass are at `centre_a`, `centre_b` (m): the bodies, the
     /// normal and its two tangents (t₁ = any unit vector ⟂ n, t₂ = n × t₁), the mixed
-    /// friction and restitution, the separations, normal impulses and twist lever arms of
-    /// the points, the contact's carried friction impulses, and the anchors of the points
-    /// and of the friction centre into `arms`. [`prepare_products`](Self::prepare_products)
+    /// friction and restitution, the separations and normal impulses of the points, the
+    /// contact's carried friction impulses, and the anchors of the points and of the
+    /// friction centre and the squares of the points' twist lever arms into `arms`. [`prepare_products`](Self::prepare_products)
     /// completes the block. The block must not be full.
     #[allow(clippy::too_many_arguments)]
     pub fn prepare_lane(
@@ -90,13 +95,13 @@ impl<R: Real> ContactBlock<R> {
         self.len += 1;
         let n = contact.normal;
         let t0 = n.any_orthonormal();
-        let (centre, twist_arms) = friction_centre(contact.points());
+        let (centre, twist_arms_squared) = friction_centre(contact.points());
         for (p, (cp, point)) in self.points.iter_mut().zip(contact.points()).enumerate() {
             arms.r_a[p].set(l, point.point - centre_a);
             arms.r_b[p].set(l, point.point - centre_b);
             cp.base_separation[l] = point.separation;
             cp.separation[l] = point.separation;
-            cp.twist_arm[l] = twist_arms[p];
+            arms.twist_arm_squared[p][l] = twist_arms_squared[p];
             cp.normal_impulse[l] = point.normal_impulse;
             cp.max_normal_impulse[l] = R::ZERO;
         }
@@ -127,6 +132,7 @@ impl<R: Real> ContactBlock<R> {
     /// Completes every lane set up by [`prepare_lane`](Self::prepare_lane), from the
     /// anchors in `arms` and the solver bodies:
     ///
+    /// * per point, the twist lever arm d_k = √(d_k²) (m) ([`twist_arms`](Self::twist_arms));
     /// * n/m_a, n/m_b, t/m_a, t/m_b (1/kg), the velocity change per unit impulse;
     /// * per point, r × n and I⁻¹(r × n) on each side, the effective mass 1/k (kg),
     ///   k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × n))·(r_a × n) + (I_b⁻¹(r_b × n))·(r_b × n), and the
@@ -140,6 +146,7 @@ impl<R: Real> ContactBlock<R> {
     /// every value lies within its bound; otherwise, and on other formats, lane by lane.
     /// Both give the same bits.
     pub fn prepare_products(&mut self, arms: &ContactArms<R>, bodies: &[SolverBody<R>]) {
+        self.twist_arms(arms);
         #[cfg(target_arch = "x86_64")]
         let done = super::avx512::prepare(self, arms, bodies);
         #[cfg(not(target_arch = "x86_64"))]
@@ -148,6 +155,33 @@ impl<R: Real> ContactBlock<R> {
             self.prepare_products_lanes(arms, bodies);
         }
         self.invert_effective_masses();
+    }
+
+    /// Each point's twist lever arm, d_k = √(d_k²) (m), from the squares in `arms`. On
+    /// I32F32 the AVX-512 square roots take the whole block when the processor has them;
+    /// otherwise, and on other formats, one point after another with [`Real::sqrt`]. Both
+    /// give the same bits.
+    fn twist_arms(&mut self, arms: &ContactArms<R>) {
+        #[cfg(target_arch = "x86_64")]
+        if super::avx512::twist_arms(self, arms) {
+            return;
+        }
+        self.twist_arms_lanes(arms);
+    }
+
+    /// [`twist_arms`](Self::twist_arms) one point after another.
+    pub(super) fn twist_arms_lanes(&mut self, arms: &ContactArms<R>) {
+        for l in 0..self.len {
+            let count = usize::from(self.count[l]);
+            for (cp, squared) in self
+                .points
+                .iter_mut()
+                .zip(&arms.twist_arm_squared)
+                .take(count)
+            {
+                cp.twist_arm[l] = squared[l].sqrt();
+            }
+        }
     }
 
     /// The products of [`prepare_products`](Self::prepare_products), one lane after

@@ -457,9 +457,11 @@ fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usiz
                 "trial {trial}: the kernel took a block that saturates"
             );
         }
-        // The full stage, whichever path it takes, gives the lanes' effective masses.
+        // The full stage, whichever path it takes, gives the lanes' twist arms and
+        // effective masses.
         let (mut whole, mut by_lanes) = (block.clone(), block.clone());
         whole.prepare_products(&arms, &bodies);
+        by_lanes.twist_arms_lanes(&arms);
         by_lanes.prepare_products_lanes(&arms, &bodies);
         by_lanes.invert_effective_masses();
         assert_eq!(whole, by_lanes, "trial {trial}");
