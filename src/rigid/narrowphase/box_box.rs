@@ -181,11 +181,8 @@ fn face_contact<R: Real>(
     ]);
     let h = half.to_array();
     let slack = clip_slack::<R>();
-    let mut other = Polygon::empty();
-    polygon.clip(&mut other, u, true, h[u], 4, slack);
-    other.clip(&mut polygon, u, false, h[u], 5, slack);
-    polygon.clip(&mut other, w, true, h[w], 6, slack);
-    other.clip(&mut polygon, w, false, h[w], 7, slack);
+    let mut spare = Polygon::empty();
+    let polygon = polygon.clip_to_rectangle(&mut spare, (u, h[u]), (w, h[w]), slack);
 
     let reference_face = 2 * k as u32 + u32::from(sign < R::ZERO);
     let incident_face = 2 * j as u32 + u32::from(incident_sign < R::ZERO);
