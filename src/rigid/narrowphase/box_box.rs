@@ -198,7 +198,7 @@ fn face_contact<R: Real>(
         if separation <= margin {
             positions[count] = v.position;
             separations[count] = separation;
-            ids[count] = base | u32::from(v.feature) << 7;
+            ids[count] = base | v.feature << 7;
             count += 1;
         }
     }

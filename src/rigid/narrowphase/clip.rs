@@ -17,20 +17,23 @@ pub(super) const MAX_CLIPPED: usize = 8;
 
 /// The feature code of the point where lines `a` and `b` (0–7) meet: 8 min + max, 0–63.
 #[inline(always)]
-pub(super) fn pair_code(a: u8, b: u8) -> u8 {
+pub(super) fn pair_code(a: u32, b: u32) -> u32 {
     if a < b { 8 * a + b } else { 8 * b + a }
 }
 
 /// A polygon vertex: position in the reference frame (m), its feature code, and the line
 /// the polygon's edge leaving it lies on.
+///
+/// Code and line (both below 64) are `u32` so that a vertex fills 32 bytes without padding
+/// and is copied in whole moves.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct ClipVertex<R: Real> {
     /// Position, m.
     pub position: Vec3<R>,
     /// Feature code, see [`pair_code`].
-    pub feature: u8,
+    pub feature: u32,
     /// Line of the outgoing edge.
-    pub out_line: u8,
+    pub out_line: u32,
 }
 
 /// A convex polygon of up to [`MAX_CLIPPED`] vertices, in order.
@@ -61,7 +64,7 @@ impl<R: Real> Polygon<R> {
     pub fn quad(corners: [Vec3<R>; 4]) -> Self {
         let mut polygon = Self::empty();
         for (m, corner) in corners.into_iter().enumerate() {
-            let line = m as u8;
+            let line = m as u32;
             polygon.vertices[m] = ClipVertex {
                 position: corner,
                 feature: pair_code((line + 3) % 4, line),
@@ -115,7 +118,15 @@ impl<R: Real> Polygon<R> {
     /// each step would only append E); at the first vertex beyond the plane those before it
     /// go to `out` at once and the walk goes on as above. Each distance is computed as
     /// often either way (the last vertex's twice), so saturation counts do not change.
-    fn clip(&self, out: &mut Self, axis: usize, upper: bool, limit: R, line: u8, slack: R) -> bool {
+    fn clip(
+        &self,
+        out: &mut Self,
+        axis: usize,
+        upper: bool,
+        limit: R,
+        line: u32,
+        slack: R,
+    ) -> bool {
         let n = self.count;
         if n == 0 {
             return false;
@@ -201,7 +212,7 @@ fn crossing<R: Real>(
     de: R,
     axis: usize,
     at: R,
-    line: u8,
+    line: u32,
     entering: bool,
 ) -> ClipVertex<R> {
     let mut position = s.position + (e.position - s.position) * (ds / (ds - de));

@@ -15,7 +15,7 @@ fn reference_clip(
     axis: usize,
     upper: bool,
     limit: Fx,
-    line: u8,
+    line: u32,
     slack: Fx,
 ) {
     out.count = 0;
@@ -76,7 +76,7 @@ fn reference_rectangle(
 }
 
 /// Count, positions (raw bits), feature codes and outgoing lines of the vertices.
-fn contents(p: &Polygon<Fx>) -> Vec<([i64; 3], u8, u8)> {
+fn contents(p: &Polygon<Fx>) -> Vec<([i64; 3], u32, u32)> {
     p.vertices[..p.count]
         .iter()
         .map(|v| {
