@@ -6,6 +6,8 @@
 mod avx512;
 mod axes;
 #[cfg(test)]
+mod face_tests;
+#[cfg(test)]
 mod tests;
 
 pub(crate) use axes::{Axes, Choice, separating_axes};

@@ -10,7 +10,7 @@
 use crate::math::{Real, Vec3};
 
 #[cfg(test)]
-mod tests;
+pub(super) mod tests;
 
 /// Most vertices a quadrilateral clipped by four planes can have.
 pub(super) const MAX_CLIPPED: usize = 8;

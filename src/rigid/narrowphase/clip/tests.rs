@@ -60,7 +60,7 @@ fn reference_clip(
 }
 
 /// The four passes as `face_contact` made them before.
-fn reference_rectangle(
+pub(in crate::rigid::narrowphase) fn reference_rectangle(
     quad: &Polygon<Fx>,
     (u, hu): (usize, Fx),
     (w, hw): (usize, Fx),
