@@ -6,6 +6,8 @@
 mod avx512;
 mod axes;
 #[cfg(test)]
+mod face_tests;
+#[cfg(test)]
 mod tests;
 
 pub(crate) use axes::{Axes, Choice, separating_axes};
@@ -181,11 +183,8 @@ fn face_contact<R: Real>(
     ]);
     let h = half.to_array();
     let slack = clip_slack::<R>();
-    let mut other = Polygon::empty();
-    polygon.clip(&mut other, u, true, h[u], 4, slack);
-    other.clip(&mut polygon, u, false, h[u], 5, slack);
-    polygon.clip(&mut other, w, true, h[w], 6, slack);
-    other.clip(&mut polygon, w, false, h[w], 7, slack);
+    let mut spare = Polygon::empty();
+    let polygon = polygon.clip_to_rectangle(&mut spare, (u, h[u]), (w, h[w]), slack);
 
     let reference_face = 2 * k as u32 + u32::from(sign < R::ZERO);
     let incident_face = 2 * j as u32 + u32::from(incident_sign < R::ZERO);
@@ -201,7 +200,7 @@ fn face_contact<R: Real>(
         if separation <= margin {
             positions[count] = v.position;
             separations[count] = separation;
-            ids[count] = base | u32::from(v.feature) << 7;
+            ids[count] = base | v.feature << 7;
             count += 1;
         }
     }

@@ -9,25 +9,31 @@
 
 use crate::math::{Real, Vec3};
 
+#[cfg(test)]
+pub(super) mod tests;
+
 /// Most vertices a quadrilateral clipped by four planes can have.
 pub(super) const MAX_CLIPPED: usize = 8;
 
 /// The feature code of the point where lines `a` and `b` (0–7) meet: 8 min + max, 0–63.
 #[inline(always)]
-pub(super) fn pair_code(a: u8, b: u8) -> u8 {
+pub(super) fn pair_code(a: u32, b: u32) -> u32 {
     if a < b { 8 * a + b } else { 8 * b + a }
 }
 
 /// A polygon vertex: position in the reference frame (m), its feature code, and the line
 /// the polygon's edge leaving it lies on.
+///
+/// Code and line (both below 64) are `u32` so that a vertex fills 32 bytes without padding
+/// and is copied in whole moves.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct ClipVertex<R: Real> {
     /// Position, m.
     pub position: Vec3<R>,
     /// Feature code, see [`pair_code`].
-    pub feature: u8,
+    pub feature: u32,
     /// Line of the outgoing edge.
-    pub out_line: u8,
+    pub out_line: u32,
 }
 
 /// A convex polygon of up to [`MAX_CLIPPED`] vertices, in order.
@@ -58,7 +64,7 @@ impl<R: Real> Polygon<R> {
     pub fn quad(corners: [Vec3<R>; 4]) -> Self {
         let mut polygon = Self::empty();
         for (m, corner) in corners.into_iter().enumerate() {
-            let line = m as u8;
+            let line = m as u32;
             polygon.vertices[m] = ClipVertex {
                 position: corner,
                 feature: pair_code((line + 3) % 4, line),
@@ -69,9 +75,36 @@ impl<R: Real> Polygon<R> {
         polygon
     }
 
-    /// Writes to `out` the part of the polygon where x[axis] ≤ `limit` (`upper`) or
-    /// −x[axis] ≤ `limit` (not `upper`), the side plane being line `line`, with vertices up
-    /// to `slack` (m) beyond the plane kept as they are.
+    /// The part of the polygon inside the rectangle |x_u| ≤ `half_u`, |x_w| ≤ `half_w`
+    /// (m): [`clip`](Self::clip) against the side planes x_u ≤ h_u (line 4), −x_u ≤ h_u
+    /// (5), x_w ≤ h_w (6) and −x_w ≤ h_w (7) in turn, `spare` taking each pass's output
+    /// when it differs from its input. Returns whichever of the two holds the result.
+    pub fn clip_to_rectangle<'p>(
+        &'p mut self,
+        spare: &'p mut Self,
+        (u, half_u): (usize, R),
+        (w, half_w): (usize, R),
+        slack: R,
+    ) -> &'p Self {
+        let (mut polygon, mut other) = (self, spare);
+        for (axis, upper, limit, line) in [
+            (u, true, half_u, 4),
+            (u, false, half_u, 5),
+            (w, true, half_w, 6),
+            (w, false, half_w, 7),
+        ] {
+            if polygon.clip(other, axis, upper, limit, line, slack) {
+                core::mem::swap(&mut polygon, &mut other);
+            }
+        }
+        polygon
+    }
+
+    /// The part of the polygon where x[axis] ≤ `limit` (`upper`) or −x[axis] ≤ `limit` (not
+    /// `upper`), the side plane being line `line`, with vertices up to `slack` (m) beyond
+    /// the plane kept as they are. When every vertex is kept, that part is the polygon
+    /// itself: `out` is left alone and the result is `false`. Otherwise it is written to
+    /// `out` and the result is `true`.
     ///
     /// Sutherland–Hodgman with signed distances d = limit ∓ x[axis]: walking the
     /// edges S → E, a vertex is kept when d ≥ −slack, and where an edge goes from d > 0 to
@@ -80,11 +113,23 @@ impl<R: Real> Polygon<R> {
     /// slack is itself where the polygon leaves or re-enters, so there is no duplicate. The
     /// slack lets a corner level with a side (equal boxes stacked) keep its feature code
     /// while it jitters across the side, instead of alternating with a clipped point.
-    pub fn clip(&self, out: &mut Self, axis: usize, upper: bool, limit: R, line: u8, slack: R) {
-        out.count = 0;
+    ///
+    /// The walk copies nothing while every vertex so far is kept (S then is kept too, and
+    /// each step would only append E); at the first vertex beyond the plane those before it
+    /// go to `out` at once and the walk goes on as above. Each distance is computed as
+    /// often either way (the last vertex's twice), so saturation counts do not change.
+    fn clip(
+        &self,
+        out: &mut Self,
+        axis: usize,
+        upper: bool,
+        limit: R,
+        line: u32,
+        slack: R,
+    ) -> bool {
         let n = self.count;
         if n == 0 {
-            return;
+            return false;
         }
         let distance = |v: &ClipVertex<R>| {
             if upper {
@@ -96,10 +141,25 @@ impl<R: Real> Polygon<R> {
         let at = if upper { limit } else { -limit };
         let mut s = self.vertices[n - 1];
         let mut ds = distance(&s);
+        // Whether `out` holds the output so far (otherwise it is the input's first i).
+        let mut copied = ds < -slack;
+        if copied {
+            out.count = 0;
+        }
         // The last vertex is where the polygon leaves: fixed up once it has been pushed.
         let mut last_leaves = false;
         for (i, &e) in self.vertices[..n].iter().enumerate() {
             let de = distance(&e);
+            if !copied {
+                if de >= -slack {
+                    s = e;
+                    ds = de;
+                    continue;
+                }
+                out.vertices[..i].copy_from_slice(&self.vertices[..i]);
+                out.count = i;
+                copied = true;
+            }
             let s_inside = ds >= -slack;
             if de >= -slack {
                 if !s_inside && de > R::ZERO {
@@ -120,9 +180,13 @@ impl<R: Real> Polygon<R> {
             s = e;
             ds = de;
         }
+        if !copied {
+            return false;
+        }
         if last_leaves && out.count > 0 {
             out.vertices[out.count - 1].out_line = line;
         }
+        true
     }
 
     /// Appends a vertex (there is always room: clipping a convex polygon adds at most one
@@ -148,7 +212,7 @@ fn crossing<R: Real>(
     de: R,
     axis: usize,
     at: R,
-    line: u8,
+    line: u32,
     entering: bool,
 ) -> ClipVertex<R> {
     let mut position = s.position + (e.position - s.position) * (ds / (ds - de));

@@ -35,7 +35,10 @@ fn rotation(rng: &mut Pcg32, angle: f64) -> Quat<Fx> {
 /// edges meet edges, 4 far apart, 5 beyond the kernel's bound (half extents or offsets
 /// past 2¹⁴ m, and the threshold's square past it), 6 on a coarse lattice (see
 /// [`lattice_pair`]: exact ties between axes).
-fn pair(rng: &mut Pcg32, kind: u32) -> (Vec3<Fx>, Transform<Fx>, Vec3<Fx>, Transform<Fx>) {
+pub(super) fn pair(
+    rng: &mut Pcg32,
+    kind: u32,
+) -> (Vec3<Fx>, Transform<Fx>, Vec3<Fx>, Transform<Fx>) {
     let centre_a = Vec3::new(value(rng, 50.0), value(rng, 50.0), value(rng, 50.0));
     let xf = |position: Vec3<Fx>, q: Quat<Fx>| Transform::from_pose(position, q);
     match kind {
