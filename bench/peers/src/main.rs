@@ -6,12 +6,12 @@
 //! enhanced-determinism` for Rapier's cross-platform determinism mode.
 //! `scripts/peer-bench.sh` builds and runs both.
 //!
-//! Rigid bodies, the same for every engine: dt = 1/60 s, 4 solver substeps (Rapier's
-//! `num_solver_iterations`, its default; fixstep's default), one thread, gravity
-//! −9.81 m/s² along y, sleeping off, then `pyramid` and `balls` again with sleeping on.
-//! Rapier runs twice: with its default friction model (one friction constraint per
-//! manifold plus a twist row) and with Coulomb friction at every contact point, which is
-//! how fixstep solves friction: the like-for-like comparison.
+//! Rigid bodies, the same for every engine: dt = 1/60 s, each engine's default solver
+//! substeps (Rapier's `num_solver_iterations`, 4; fixstep's, 5 since state version 4), one
+//! thread, gravity −9.81 m/s² along y, sleeping off, then `pyramid` and `balls` again with
+//! sleeping on. Rapier runs twice: with its default friction model (one friction
+//! constraint per manifold plus a twist row, as fixstep solves friction since state version
+//! 4) and with Coulomb friction at every contact point.
 //!
 //! Fluids (`src/scenes.rs`): salva3d 0.11 (DFSPH, f32) beside fixstep's DFSPH, `water` (a
 //! cube of 20³ particles 1 cm apart settling in a tank) and `dam_break` (Martin & Moyce's
