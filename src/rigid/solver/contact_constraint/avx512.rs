@@ -69,6 +69,21 @@ mod twist_arms;
 pub(super) use prepare::prepare;
 pub(super) use twist_arms::twist_arms;
 
+/// `block` and `arms` as I32F32 values when `R` is I32F32 and the processor has AVX-512F
+/// and DQ (the preparation kernels' condition); `None` otherwise.
+fn fx_operands<'a, R: Real>(
+    block: &'a mut ContactBlock<R>,
+    arms: &'a ContactArms<R>,
+) -> Option<(&'a mut ContactBlock<Fx>, &'a ContactArms<Fx>)> {
+    if !has_kernels() {
+        return None;
+    }
+    Some((
+        (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>()?,
+        (arms as &dyn Any).downcast_ref::<ContactArms<Fx>>()?,
+    ))
+}
+
 use crate::rigid::solver::avx512::{
     add, add3, dot3, has_kernels, high, load, load3, mul, mul3, out_of_bound, out_of_bound3,
     select, splat, store, store_lanes, sub, sub3,
@@ -85,7 +100,7 @@ use core::arch::x86_64::{
 };
 use core::mem::{offset_of, size_of};
 
-use super::{ContactBlock, SolvePass};
+use super::{ContactArms, ContactBlock, SolvePass};
 use crate::math::{Fx, Real, Vec3};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};

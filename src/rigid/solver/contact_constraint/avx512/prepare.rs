@@ -21,7 +21,6 @@
 //! kernel returns false and the caller recomputes every lane with the scalar form, which
 //! overwrites whatever the kernel wrote.
 
-use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_mask_i64gather_epi64,
     _mm512_set1_epi64, _mm512_setzero_si512,
@@ -29,7 +28,7 @@ use core::arch::x86_64::{
 use core::mem::{offset_of, size_of};
 
 use super::{
-    BODY_WORDS, V, W, add, has_kernels, lane_words, load3, mul, mul3, out_of_bound, out_of_bound3,
+    BODY_WORDS, V, W, add, fx_operands, lane_words, load3, mul, mul3, out_of_bound, out_of_bound3,
     store_lanes, sub, sub3,
 };
 use crate::math::{Fx, Mat3, Real, Vec3};
@@ -56,18 +55,12 @@ pub(in crate::rigid::solver::contact_constraint) fn prepare<R: Real>(
     arms: &ContactArms<R>,
     bodies: &[SolverBody<R>],
 ) -> bool {
-    if !has_kernels() {
-        return false;
-    }
-    let (Some(block), Some(arms)) = (
-        (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>(),
-        (arms as &dyn Any).downcast_ref::<ContactArms<Fx>>(),
-    ) else {
+    let Some((block, arms)) = fx_operands(block, arms) else {
         return false;
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &*(core::ptr::from_ref(bodies) as *const [SolverBody<Fx>]) };
-    // SAFETY: AVX-512F and DQ were detected on this processor just above.
+    // SAFETY: `fx_operands` detected AVX-512F and DQ on this processor.
     unsafe { prepare_block(block, arms, bodies) }
 }
 

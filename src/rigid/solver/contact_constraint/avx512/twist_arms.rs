@@ -4,13 +4,12 @@
 //! [`sqrt`](crate::rigid::solver::avx512::sqrt), which round as `Real::sqrt` does). Only
 //! the points in use are written, as the scalar form writes them.
 
-use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_maskz_mov_epi64,
     _mm512_set1_epi64,
 };
 
-use super::{has_kernels, load, store_lanes};
+use super::{fx_operands, load, store_lanes};
 use crate::math::{Fx, Real};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 use crate::rigid::solver::avx512::sqrt::sqrt;
@@ -22,16 +21,10 @@ pub(in crate::rigid::solver::contact_constraint) fn twist_arms<R: Real>(
     block: &mut ContactBlock<R>,
     arms: &ContactArms<R>,
 ) -> bool {
-    if !has_kernels() {
-        return false;
-    }
-    let (Some(block), Some(arms)) = (
-        (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>(),
-        (arms as &dyn Any).downcast_ref::<ContactArms<Fx>>(),
-    ) else {
+    let Some((block, arms)) = fx_operands(block, arms) else {
         return false;
     };
-    // SAFETY: AVX-512F and DQ were detected on this processor just above.
+    // SAFETY: `fx_operands` detected AVX-512F and DQ on this processor.
     unsafe { roots(block, arms) };
     true
 }
