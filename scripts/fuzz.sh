@@ -19,8 +19,11 @@ cd "$(dirname "$0")/.."
 
 TARGETS=(replay_decode scene_ron snapshot_decode world_step)
 
+# cargo-fuzz has no --locked: check first that fuzz/Cargo.lock needs no change, so that
+# every run builds the dependency versions committed there.
 ensure_cargo_fuzz() {
   cargo fuzz --version >/dev/null 2>&1 || cargo install cargo-fuzz --locked --version 0.13.2
+  (cd fuzz && cargo fetch --locked --quiet)
 }
 
 # The replay format (src/replay/format.rs): for the I32F32 header the scene section's length
