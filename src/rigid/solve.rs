@@ -12,6 +12,9 @@ impl<R: Real> RigidSystem<R> {
         let n = self.bodies.len();
         let bodies = &mut self.bodies;
         let solver = &mut self.scratch.solver;
+        // The collision stage placed every live body at its current pose, and nothing has
+        // moved since: its rotation matrices are this step's.
+        let transforms = &self.scratch.transforms;
 
         // Solver bodies: the static body, then every moving body in slot order.
         solver.bodies.clear();
@@ -26,7 +29,8 @@ impl<R: Real> RigidSystem<R> {
             }
             solver.index_of_slot[i] = solver.bodies.len() as u32;
             solver.slots.push(i as u32);
-            let rotation = bodies.orientation[i].to_mat3();
+            let rotation = transforms[i].rotation;
+            debug_assert_eq!(rotation, bodies.orientation[i].to_mat3(), "slot {i}");
             solver.bodies.push(SolverBody {
                 v: bodies.linear_velocity[i],
                 w: bodies.angular_velocity[i],
