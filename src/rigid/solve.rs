@@ -15,6 +15,7 @@ impl<R: Real> RigidSystem<R> {
         // The collision stage placed every live body at its current pose, and nothing has
         // moved since: its rotation matrices are this step's.
         let transforms = &self.scratch.transforms;
+        debug_assert_eq!(transforms.len(), n);
 
         // Solver bodies: the static body, then every moving body in slot order.
         solver.bodies.clear();
@@ -23,13 +24,13 @@ impl<R: Real> RigidSystem<R> {
         solver.index_of_slot.resize(n, STATIC_BODY);
         solver.bodies.push(SolverBody::default());
         solver.slots.push(u32::MAX);
-        for i in 0..n {
+        for (i, placement) in transforms.iter().enumerate().take(n) {
             if !bodies.is_moving(i) {
                 continue;
             }
             solver.index_of_slot[i] = solver.bodies.len() as u32;
             solver.slots.push(i as u32);
-            let rotation = transforms[i].rotation;
+            let rotation = placement.rotation;
             debug_assert_eq!(rotation, bodies.orientation[i].to_mat3(), "slot {i}");
             solver.bodies.push(SolverBody {
                 v: bodies.linear_velocity[i],
