@@ -100,7 +100,7 @@ const TRANSLATION: [[i64; 8]; 2] = {
     index
 };
 
-/// Writes R pᵢ + t for the four points `local` to `world` when `R` is I32F32, the processor
+/// Writes R pᵢ + t (m) for the four points `local` (m) to `world` when `R` is I32F32, the processor
 /// has AVX-512F and DQ and every operand is within the bound (module documentation), and
 /// says whether it did.
 #[inline]
@@ -123,6 +123,8 @@ pub(super) fn to_world<R: Real>(
     unsafe { transform(xf, local, world) }
 }
 
+/// One of the index vectors above, as the permutes take it (lane l selects word
+/// `words[l]` of their sources).
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
 fn index(words: &[i64; 8]) -> __m512i {

@@ -27,6 +27,7 @@ fn word(rng: &mut Pcg32, bits: u32) -> i64 {
     }
 }
 
+/// A vector of three such words (see [`word`]), m.
 fn vector(rng: &mut Pcg32, bits: u32) -> Vec3<Fx> {
     let mut v = || Fx::from_bits(word(rng, bits));
     Vec3::new(v(), v(), v())
