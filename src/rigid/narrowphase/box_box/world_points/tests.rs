@@ -1,11 +1,11 @@
 //! [`to_world`] against [`Transform::point`] one point at a time: the same bits and the
 //! same saturation count on random rotations and matrices, raw words of every size up to
 //! the kernel's bound and past it, and every count of points; the kernel takes exactly the
-//! inputs within its bound.
+//! inputs within its bound. Other formats (I48F16, f64) go one by one, with the same bits.
 
 use super::to_world;
 use crate::math::saturation::count_saturations;
-use crate::math::{Fx, Mat3, Pcg32, Quat, Vec3};
+use crate::math::{Fx, FxI48F16, Mat3, Pcg32, Quat, Vec3};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 use crate::rigid::transform::Transform;
 
@@ -172,5 +172,55 @@ fn one_word_past_the_bound_is_left_to_the_scalar_form() {
         }
         let kernel = check(&xf, &local, MAX_MANIFOLD_POINTS);
         assert_eq!(kernel, kernel_present() && trial % 4 < 2, "trial {trial}");
+    }
+}
+
+/// `v`'s raw words shifted right by `shift` bits, as I48F16 words.
+fn coarse(v: Vec3<Fx>, shift: u32) -> Vec3<FxI48F16> {
+    let word = |x: Fx| FxI48F16::from_bits(x.to_bits() >> shift);
+    Vec3::new(word(v.x), word(v.y), word(v.z))
+}
+
+/// `v` in f64.
+fn float(v: Vec3<FxI48F16>) -> Vec3<f64> {
+    let [x, y, z] = v.to_f64();
+    Vec3::new(x, y, z)
+}
+
+#[test]
+fn other_formats_transform_one_by_one() {
+    let mut rng = Pcg32::new(0x0f64, 9);
+    for trial in 0..2_000 {
+        let count = trial % (MAX_MANIFOLD_POINTS + 1);
+        // A rotation in I48F16 (its I32F32 words less 16 bits), offsets of every size.
+        let [c0, c1, c2] = rotation(&mut rng).cols.map(|c| coarse(c, 16));
+        let xf = Transform {
+            rotation: Mat3::from_cols(c0, c1, c2),
+            translation: coarse(vector(&mut rng, 45), 0),
+        };
+        let bits = [30, 45, 62][trial % 3];
+        let local = core::array::from_fn(|_| coarse(vector(&mut rng, bits), 0));
+        let (expected, expected_saturations) = count_saturations(|| {
+            local[..count]
+                .iter()
+                .map(|&p| xf.point(p))
+                .collect::<Vec<_>>()
+        });
+        let (world, saturations) = count_saturations(|| to_world(&xf, &local, count));
+        assert_eq!(world[..count], expected[..], "trial {trial}");
+        assert_eq!(saturations, expected_saturations, "trial {trial}");
+        let [f0, f1, f2] = xf.rotation.cols.map(float);
+        let xf = Transform {
+            rotation: Mat3::from_cols(f0, f1, f2),
+            translation: float(xf.translation),
+        };
+        let local = local.map(float);
+        let world = to_world(&xf, &local, count);
+        for (w, &p) in world.iter().zip(&local).take(count) {
+            assert_eq!(
+                w.to_f64().map(f64::to_bits),
+                xf.point(p).to_f64().map(f64::to_bits)
+            );
+        }
     }
 }
