@@ -1,6 +1,7 @@
 //! Box against box: separating axes (3 + 3 face normals, 9 edge cross products, in
 //! `axes.rs`, and eight pairs at a time in `avx512.rs`), then a clipped reference face, or
-//! one point between two edges.
+//! one point between two edges. A face contact's points go to the world frame four at a
+//! time (`world_points.rs`).
 
 #[cfg(target_arch = "x86_64")]
 mod avx512;
@@ -9,6 +10,7 @@ mod axes;
 mod face_tests;
 #[cfg(test)]
 mod tests;
+mod world_points;
 
 pub(crate) use axes::{Axes, Choice, separating_axes};
 
@@ -210,23 +212,8 @@ fn face_contact<R: Real>(
         normal: if reference_is_b { -outward } else { outward },
         ..Manifold::EMPTY
     };
-    let mut emit = |index: usize| {
-        let mut p = positions[index];
-        let half = separations[index] * R::HALF;
-        let shift = if positive { half } else { -half };
-        match k {
-            0 => p.x -= shift,
-            1 => p.y -= shift,
-            _ => p.z -= shift,
-        }
-        manifold.push(ManifoldPoint {
-            point: xf.point(p),
-            separation: separations[index],
-            id: ids[index],
-        });
-    };
-    if count <= MAX_MANIFOLD_POINTS {
-        (0..count).for_each(&mut emit);
+    let chosen = if count <= MAX_MANIFOLD_POINTS {
+        [0, 1, 2, 3]
     } else {
         four_of(
             &positions[..count],
@@ -236,9 +223,28 @@ fn face_contact<R: Real>(
             u,
             w,
         )
-        .into_iter()
-        .for_each(&mut emit);
+    };
+    let count = count.min(MAX_MANIFOLD_POINTS);
+    let mut local = [Vec3::ZERO; MAX_MANIFOLD_POINTS];
+    for (p, &index) in local.iter_mut().zip(&chosen).take(count) {
+        *p = positions[index];
+        let half = separations[index] * R::HALF;
+        let shift = if positive { half } else { -half };
+        match k {
+            0 => p.x -= shift,
+            1 => p.y -= shift,
+            _ => p.z -= shift,
+        }
     }
+    let world = world_points::to_world(xf, &local, count);
+    for (slot, (&point, &index)) in world.iter().zip(&chosen).take(count).enumerate() {
+        manifold.points[slot] = ManifoldPoint {
+            point,
+            separation: separations[index],
+            id: ids[index],
+        };
+    }
+    manifold.count = count;
     manifold
 }
 

@@ -27,7 +27,7 @@
 //! | sphere–capsule | `sphere_capsule.rs` | 1 |
 //! | capsule–capsule | `capsule_capsule.rs` | 1, or 2 side by side |
 //! | capsule–box | `capsule_box.rs` | 1, or 2 lying on a face |
-//! | box–box | `box_box.rs` (with `clip.rs`; separating axes in `box_box/axes.rs`, eight pairs at a time in `box_box/avx512.rs`) | 1 to 4 |
+//! | box–box | `box_box.rs` (with `clip.rs`; separating axes in `box_box/axes.rs`, eight pairs at a time in `box_box/avx512.rs`; a face contact's points to the world frame in `box_box/world_points.rs`) | 1 to 4 |
 //! | plane–sphere, plane–capsule, plane–box | `plane.rs` | 1, 1–2, 1–4 |
 //!
 //! Shared helpers: `segments.rs` (closest points on segments), `clip.rs` (face clipping and
