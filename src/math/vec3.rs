@@ -169,14 +169,22 @@ impl<R: Real> Vec3<R> {
         self.try_normalize().map_or(Self::ZERO, |(n, _)| n)
     }
 
-    /// A unit vector perpendicular to `self` (which must be unit length).
+    /// A unit vector perpendicular to `self` (which must be unit length): the
+    /// [`any_orthogonal`](Self::any_orthogonal) vector normalised.
     pub fn any_orthonormal(self) -> Self {
+        self.any_orthogonal().normalize_or_zero()
+    }
+
+    /// A vector perpendicular to `self`, not normalised: v × h for the axis h = x̂ when
+    /// |v_x| < 0.577 (as a unit v's x component is for some axis) and h = ŷ otherwise, so
+    /// that for a unit v, |v × h| ≥ 0.577.
+    pub fn any_orthogonal(self) -> Self {
         let helper = if self.x.abs() < R::from_ratio(577, 1000) {
             Self::X
         } else {
             Self::Y
         };
-        self.cross(helper).normalize_or_zero()
+        self.cross(helper)
     }
 
     /// The components as an array.

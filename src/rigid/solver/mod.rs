@@ -31,6 +31,7 @@ mod joint_row;
 mod joint_rows;
 mod joints;
 mod lanes;
+mod mixed_materials;
 mod prepare;
 mod softness;
 

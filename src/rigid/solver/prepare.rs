@@ -4,10 +4,10 @@
 use super::Solver;
 use super::body::STATIC_BODY;
 use super::contact_constraint::{ContactArms, ContactBlock, SolvePass};
+use super::mixed_materials::MixedMaterials;
 use crate::math::Real;
 use crate::rigid::bodies::Bodies;
 use crate::rigid::contact::Contact;
-use crate::rigid::material::{mix_friction, mix_restitution};
 
 #[cfg(doc)]
 use super::lanes::LANES;
@@ -42,6 +42,7 @@ impl<R: Real> Solver<R> {
 
         *block_count = 0;
         let mut arms = ContactArms::ZERO;
+        let mut mixed = MixedMaterials::EMPTY;
         for (independent, batch) in batching.blocks() {
             if *block_count == blocks.len() {
                 blocks.push(ContactBlock::empty());
@@ -52,15 +53,15 @@ impl<R: Real> Solver<R> {
             for &k in batch {
                 let contact = &contacts[k as usize];
                 let (a, b) = (contact.key.body_a as usize, contact.key.body_b as usize);
-                let (ma, mb) = (&bodies.material[a], &bodies.material[b]);
+                let (friction, restitution) = mixed.of(&bodies.material[a], &bodies.material[b]);
                 block.prepare_lane(
                     contact,
                     k,
                     (index_of_slot[a], bodies.position[a]),
                     (index_of_slot[b], bodies.position[b]),
                     solver_bodies,
-                    mix_friction(ma.friction, mb.friction),
-                    mix_restitution(ma.restitution, mb.restitution),
+                    friction,
+                    restitution,
                     &mut arms,
                 );
             }

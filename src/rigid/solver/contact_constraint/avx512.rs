@@ -64,9 +64,11 @@
 //! few lanes where it applies; the twist clamp is a min and a max.
 
 mod prepare;
+mod tangents;
 mod twist_arms;
 
 pub(super) use prepare::prepare;
+pub(super) use tangents::tangents;
 pub(super) use twist_arms::twist_arms;
 
 /// `block` and `arms` as I32F32 values when `R` is I32F32 and the processor has AVX-512F

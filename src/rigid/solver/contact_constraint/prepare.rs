@@ -74,7 +74,8 @@ fn inverse_or_zero<R: Real>(k: R) -> R {
 impl<R: Real> ContactBlock<R> {
     /// Takes the next free lane for the constraint of `contact` between solver bodies `a`
     /// and `b` whose centres of mass are at `centre_a`, `centre_b` (m): the bodies, the
-    /// normal and its two tangents (t₁ = any unit vector ⟂ n, t₂ = n × t₁), the mixed
+    /// normal and a vector ⟂ n ([`Vec3::any_orthogonal`], which [`tangents`](Self::tangents)
+    /// turns into the two unit tangents), the mixed
     /// friction and restitution, the separations and normal impulses of the points, the
     /// contact's carried friction impulses, and the anchors of the points and of the
     /// friction centre and the squares of the points' twist lever arms into `arms`. [`prepare_products`](Self::prepare_products)
@@ -94,7 +95,6 @@ impl<R: Real> ContactBlock<R> {
         let l = self.len;
         self.len += 1;
         let n = contact.normal;
-        let t0 = n.any_orthonormal();
         let (centre, twist_arms_squared) = friction_centre(contact.points());
         for (p, (cp, point)) in self.points.iter_mut().zip(contact.points()).enumerate() {
             arms.r_a[p].set(l, point.point - centre_a);
@@ -120,8 +120,7 @@ impl<R: Real> ContactBlock<R> {
         self.b[l] = b;
         self.contact[l] = index;
         self.normal.set(l, n);
-        self.tangents[0].set(l, t0);
-        self.tangents[1].set(l, n.cross(t0));
+        self.tangents[0].set(l, n.any_orthogonal());
         self.friction[l] = friction;
         self.restitution[l] = restitution;
         self.rigid_partner[l] =
@@ -132,6 +131,8 @@ impl<R: Real> ContactBlock<R> {
     /// Completes every lane set up by [`prepare_lane`](Self::prepare_lane), from the
     /// anchors in `arms` and the solver bodies:
     ///
+    /// * the tangents t₁ = o/|o| for the vector o ⟂ n left in the first tangent (0 for
+    ///   o = 0) and t₂ = n × t₁ ([`tangents`](Self::tangents)), so that t₁ = `n.any_orthonormal()`;
     /// * per point, the twist lever arm d_k = √(d_k²) (m) ([`twist_arms`](Self::twist_arms));
     /// * n/m_a, n/m_b, t/m_a, t/m_b (1/kg), the velocity change per unit impulse;
     /// * per point, r × n and I⁻¹(r × n) on each side, the effective mass 1/k (kg),
@@ -146,6 +147,7 @@ impl<R: Real> ContactBlock<R> {
     /// every value lies within its bound; otherwise, and on other formats, lane by lane.
     /// Both give the same bits.
     pub fn prepare_products(&mut self, arms: &ContactArms<R>, bodies: &[SolverBody<R>]) {
+        self.tangents();
         self.twist_arms(arms);
         #[cfg(target_arch = "x86_64")]
         let done = super::avx512::prepare(self, arms, bodies);
@@ -155,6 +157,29 @@ impl<R: Real> ContactBlock<R> {
             self.prepare_products_lanes(arms, bodies);
         }
         self.invert_effective_masses();
+    }
+
+    /// Each lane's unit tangents (dimensionless) from the vector o ⟂ n that
+    /// [`prepare_lane`](Self::prepare_lane) left in the first: t₁ = o/|o| as
+    /// [`Vec3::normalize_or_zero`] computes it (|o| = √(o·o), then o·(1/|o|)), and
+    /// t₂ = n × t₁. On I32F32 the AVX-512 kernel takes the whole block when the processor
+    /// has it and every value lies within its bound; otherwise, and on other formats, one
+    /// lane after another. Both give the same bits.
+    pub(super) fn tangents(&mut self) {
+        #[cfg(target_arch = "x86_64")]
+        if super::avx512::tangents(self) {
+            return;
+        }
+        self.tangents_lanes();
+    }
+
+    /// [`tangents`](Self::tangents) one lane after another.
+    pub(super) fn tangents_lanes(&mut self) {
+        for l in 0..self.len {
+            let t0 = self.tangents[0].get(l).normalize_or_zero();
+            self.tangents[0].set(l, t0);
+            self.tangents[1].set(l, self.normal.get(l).cross(t0));
+        }
     }
 
     /// Each point's twist lever arm, d_k = √(d_k²) (m), from the squares in `arms`. On

@@ -461,6 +461,7 @@ fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usiz
         // effective masses.
         let (mut whole, mut by_lanes) = (block.clone(), block.clone());
         whole.prepare_products(&arms, &bodies);
+        by_lanes.tangents_lanes();
         by_lanes.twist_arms_lanes(&arms);
         by_lanes.prepare_products_lanes(&arms, &bodies);
         by_lanes.invert_effective_masses();
@@ -506,4 +507,101 @@ fn preparation_near_the_kernel_bound_matches_the_lanes() {
 fn preparation_that_saturates_matches_the_lanes() {
     let runs = compare_preparation(6, 100, 1.0e9, 1.0e8);
     assert_eq!(runs, 0);
+}
+
+/// Runs `trials` random blocks whose normals are unit vectors times a length drawn from
+/// `lengths` (one per lane) through both forms of the tangents, and returns how many blocks
+/// the kernel took and how many saturations the lanes counted. The bits and saturation
+/// counts must match whichever path runs.
+fn compare_tangents(seed: u64, trials: usize, lengths: &[f64]) -> (usize, u64) {
+    let mut rng = Pcg32::new(seed, 13);
+    let (mut kernel_runs, mut saturations) = (0, 0);
+    for trial in 0..trials {
+        let lanes = 1 + trial % LANES;
+        let bodies = bodies(&mut rng, 2 * LANES + 2, 1.0, Masses::Spread);
+        let (mut block, _) = lanes_of(&mut rng, &bodies, lanes, true, (1.0, 0.05), 1.0);
+        for l in 0..lanes {
+            let length = lengths[rng.below(lengths.len() as u32) as usize];
+            let n = rng.unit_vector::<Fx>() * Fx::from_f64(length);
+            block.normal.set(l, n);
+            block.tangents[0].set(l, n.any_orthogonal());
+        }
+        let (mut fast, mut slow) = (block.clone(), block.clone());
+        let (took, fast_saturations) = count_saturations(|| tangents_kernel(&mut fast));
+        if took {
+            kernel_runs += 1;
+        } else {
+            assert_eq!(fast, block, "trial {trial}: the kernel wrote and gave up");
+            fast.tangents_lanes();
+        }
+        let ((), slow_saturations) = count_saturations(|| slow.tangents_lanes());
+        saturations += slow_saturations;
+        assert_eq!(fast, slow, "trial {trial}");
+        if took {
+            assert_eq!(
+                (fast_saturations, slow_saturations),
+                (0, 0),
+                "trial {trial}"
+            );
+        }
+        // The whole stage, whichever path it takes, gives the lanes' tangents.
+        let mut whole = block.clone();
+        let ((), whole_saturations) = count_saturations(|| whole.tangents());
+        assert_eq!(whole, slow, "trial {trial}");
+        assert_eq!(whole_saturations, slow_saturations, "trial {trial}");
+    }
+    (kernel_runs, saturations)
+}
+
+/// The tangents kernel on `block`; whether it took it.
+#[cfg(target_arch = "x86_64")]
+fn tangents_kernel(block: &mut ContactBlock<Fx>) -> bool {
+    super::avx512::tangents(block)
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn tangents_kernel(_: &mut ContactBlock<Fx>) -> bool {
+    false
+}
+
+#[test]
+fn tangents_of_unit_normals_match_the_lanes() {
+    let (runs, saturations) = compare_tangents(7, 2000, &[1.0]);
+    assert_eq!(saturations, 0);
+    if kernels_present() {
+        assert_eq!(runs, 2000);
+    }
+}
+
+#[test]
+fn tangents_near_the_kernel_bounds_match_the_lanes() {
+    // |o| ≥ 0.577 |n|: lengths of n about the shortest |o| the kernel takes (2⁻¹³) and
+    // about the bound of o and n (2¹⁴), on either side, and zero.
+    let shortest = 2f64.powi(-13);
+    let lengths = [
+        0.0,
+        shortest,
+        shortest * 1.5,
+        shortest * 1.8,
+        shortest * 2.0,
+        1.0,
+        16_000.0,
+        16_400.0,
+        20_000.0,
+    ];
+    let (runs, _) = compare_tangents(8, 2000, &lengths);
+    if kernels_present() {
+        assert!(runs > 0 && runs < 2000, "the kernel ran {runs} times");
+    }
+}
+
+#[test]
+fn tangents_that_saturate_match_the_lanes() {
+    // |o|² leaves the range (2³¹ m²) beyond |o| ≈ 46 341 m; past the kernel's bound.
+    let (runs, saturations) = compare_tangents(9, 400, &[1.0, 50_000.0, 1.0e6, 2.0e9]);
+    assert!(saturations > 0);
+    if kernels_present() {
+        // Only blocks whose normals are all unit vectors.
+        assert!(runs > 0 && runs < 400, "the kernel ran {runs} times");
+    }
 }

@@ -207,7 +207,7 @@ unsafe fn prepare_block(
 /// a × b with each product rounded on its own, as [`Vec3::cross`].
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+pub(super) fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     [
         sub(mul(a[1], b[2]), mul(a[2], b[1])),
         sub(mul(a[2], b[0]), mul(a[0], b[2])),
@@ -218,7 +218,7 @@ fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
 /// a·b with each product rounded on its own, as [`Vec3::dot`].
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-fn dot(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
+pub(super) fn dot(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
     add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2]))
 }
 
@@ -244,7 +244,7 @@ fn out_of_bound_matrix(columns: [[__m512i; 3]; 3]) -> __mmask8 {
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-fn store3(lanes: &mut Lanes3<Fx>, mask: __mmask8, value: [__m512i; 3]) {
+pub(super) fn store3(lanes: &mut Lanes3<Fx>, mask: __mmask8, value: [__m512i; 3]) {
     store_lanes(&mut lanes.x, mask, value[0]);
     store_lanes(&mut lanes.y, mask, value[1]);
     store_lanes(&mut lanes.z, mask, value[2]);
