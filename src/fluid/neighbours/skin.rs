@@ -97,7 +97,8 @@ impl CandidateRows {
         self.start.push(0);
     }
 
-    /// Appends the candidates `candidates` to the current row.
+    /// Appends the candidates `candidates` to the current row (the AVX-512 search's way).
+    #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     pub(super) fn extend(&mut self, candidates: impl IntoIterator<Item = u32>) {
         self.index.extend(candidates);

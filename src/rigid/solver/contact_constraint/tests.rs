@@ -276,7 +276,9 @@ fn compare(seed: u64, trials: usize, scales: &Scales) -> Runs {
         if independent {
             for use_bias in [true, false] {
                 match kernel_taking(&block, &bodies, &pass(use_bias)) {
+                    #[cfg(target_arch = "x86_64")]
                     Taken::Narrow => runs.narrow += 1,
+                    #[cfg(target_arch = "x86_64")]
                     Taken::Wide => runs.wide += 1,
                     Taken::None => {}
                 }
@@ -300,7 +302,9 @@ fn shares_linear_products(_: &ContactBlock<Fx>) -> bool {
 
 /// Which solve kernel took a block, if any.
 enum Taken {
+    #[cfg(target_arch = "x86_64")]
     Narrow,
+    #[cfg(target_arch = "x86_64")]
     Wide,
     None,
 }
