@@ -34,7 +34,8 @@ fn rotation(rng: &mut Pcg32, angle: f64) -> Quat<Fx> {
 /// sizes, separations on a 2⁻¹² m lattice: ties between the faces), 3 turned so that
 /// edges meet edges, 4 far apart, 5 beyond the kernel's bound (half extents or offsets
 /// past 2¹⁴ m, and the threshold's square past it), 6 on a coarse lattice (see
-/// [`lattice_pair`]: exact ties between axes).
+/// [`lattice_pair`]: exact ties between axes), 7 with B's deepest face axis deeper than A's
+/// by the bias ± one raw bit (see [`bias_pair`]).
 pub(super) fn pair(
     rng: &mut Pcg32,
     kind: u32,
@@ -115,6 +116,7 @@ pub(super) fn pair(
             (ha, xf(centre_a, qa), hb, xf(centre_a + offset, qb))
         }
         6 => lattice_pair(rng),
+        7 => bias_pair(rng),
         _ => {
             let big = [200.0, 20_000.0, 3.0e5][rng.below(3) as usize];
             let (ha, hb) = (half_extents(rng, big), half_extents(rng, 2.0));
@@ -162,6 +164,59 @@ fn lattice_pair(rng: &mut Pcg32) -> (Vec3<Fx>, Transform<Fx>, Vec3<Fx>, Transfor
         Transform {
             rotation: rb,
             translation: centre + d,
+        },
+    )
+}
+
+/// A pair whose deepest face axis of B is deeper than A's deepest by exactly 2⁻¹¹ m (the
+/// bias below which A's face is kept) plus k raw bits, k ∈ {−1, 0, 1}, all products exact.
+/// A is the unit cube's double at the origin of its frame, B's matrix the identity but
+/// for ½ on the diagonal at axis m (not a rotation; the test does not need one), B's half
+/// extent along m ¼ and the offset along m t = ±(¾ − 2(2⁻¹¹ + k·2⁻³²)). Along m:
+/// s_A = |t| − (1 + ¼·½), s_B = |t|/2 − (¼ + 1·½), so s_B − s_A = (¾ − |t|)/2 =
+/// 2⁻¹¹ + k·2⁻³², and every other axis is at least ⅛ m shallower. A kernel whose bias is
+/// off by one raw bit chooses the other face for k = 0 or k = 1.
+fn bias_pair(rng: &mut Pcg32) -> (Vec3<Fx>, Transform<Fx>, Vec3<Fx>, Transform<Fx>) {
+    let m = rng.below(3) as usize;
+    let k = i64::from(rng.below(3)) - 1;
+    let mut t = Fx::from_ratio(3, 4) - Fx::from_bits(2 * ((1 << 21) + k));
+    if rng.below(2) == 0 {
+        t = -t;
+    }
+    let mut ha = [Fx::ONE; 3];
+    let mut hb = [Fx::ONE; 3];
+    let mut d = [Fx::ZERO; 3];
+    let mut cols = [Vec3::<Fx>::ZERO; 3];
+    for i in 0..3 {
+        let mut col = [Fx::ZERO; 3];
+        if i == m {
+            col[i] = Fx::HALF;
+            hb[i] = Fx::from_ratio(1, 4);
+            d[i] = t;
+        } else {
+            col[i] = Fx::ONE;
+            ha[i] = Fx::from_ratio(2 + rng.below(3) as i64, 4);
+            hb[i] = Fx::from_ratio(1 + rng.below(3) as i64, 4);
+            d[i] = Fx::from_ratio(rng.below(5) as i64 - 2, 8);
+        }
+        cols[i] = Vec3::new(col[0], col[1], col[2]);
+    }
+    let vec = |v: [Fx; 3]| Vec3::new(v[0], v[1], v[2]);
+    let centre = Vec3::new(
+        Fx::from_ratio(-7, 4),
+        Fx::from_ratio(1, 2),
+        Fx::from_ratio(9, 8),
+    );
+    (
+        vec(ha),
+        Transform {
+            rotation: Mat3::IDENTITY,
+            translation: centre,
+        },
+        vec(hb),
+        Transform {
+            rotation: Mat3::from_cols(cols[0], cols[1], cols[2]),
+            translation: centre + vec(d),
         },
     )
 }
@@ -306,4 +361,16 @@ fn values_past_the_bound_match_the_scalar_test() {
     let huge = Fx::from_ratio(1 << 10, 1);
     let tally = compare(6, 200, &[0, 1, 4], huge);
     assert_eq!(tally.taken, 0, "{tally:?}");
+}
+
+#[test]
+fn face_b_deeper_by_the_bias_give_the_scalar_choice() {
+    // B's face deeper than A's by the bias less a bit, the bias, the bias and a bit: A, A,
+    // B, in batches mixed with random and resting poses.
+    let margin = Fx::from_ratio(2, 100);
+    let tally = compare(10, 2000, &[7, 0, 7, 1], margin);
+    assert!(tally.face_a > 600 && tally.face_b > 600, "{tally:?}");
+    if kernel_present() {
+        assert!(tally.taken * 10 > 9_000 * 9, "{tally:?}");
+    }
 }
