@@ -96,9 +96,10 @@ use core::arch::x86_64::{
     __m512i, __mmask8, _mm256_loadu_si256, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
     _mm512_cmpge_epi64_mask, _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask,
     _mm512_cmpneq_epi64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_storeu_epi64,
-    _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32,
-    _mm512_mullo_epi64, _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64,
-    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_unpackhi_epi64, _mm512_unpacklo_epi64,
+    _mm512_maskz_loadu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64,
+    _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_permutex2var_epi64, _mm512_set_epi64,
+    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64, _mm512_unpackhi_epi64,
+    _mm512_unpacklo_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -613,31 +614,32 @@ struct Side {
 }
 
 impl Side {
-    /// Loads the bodies whose first words are at `words` in the first `len` lanes (zero
+    /// Loads the bodies whose first words are at `words` in the lanes of `active` (zero
     /// elsewhere): one 64-byte row per body, v, ω, Δp_x and Δp_y, turned into one vector
     /// per component; with the motions Δp and Δθ when `with_motion` (zero otherwise), from
-    /// the next row.
+    /// the next row. One masked load per lane, all eight unrolled, so that the rows stay
+    /// in registers; a lane outside `active` loads nothing.
     ///
     /// # Safety
-    /// Each of the first `len` words must be the first word of a body of the array at
+    /// Each word of a lane of `active` must be the first word of a body of the array at
     /// `bodies`.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
     unsafe fn load(
         bodies: *const i64,
         words: &[i64; LANES],
-        len: usize,
+        active: __mmask8,
         with_motion: bool,
     ) -> Self {
         let zero = _mm512_setzero_si512();
         let rows = |offset: usize| {
-            let mut rows = [zero; LANES];
-            for (row, &word) in rows.iter_mut().zip(&words[..len]) {
-                // SAFETY: words `word + offset` to `word + offset + 7` lie in the body (the
-                // caller's promise and the layout checked above).
-                *row = unsafe { _mm512_loadu_si512(bodies.add(word as usize + offset).cast()) };
-            }
-            transpose(rows)
+            transpose(core::array::from_fn(|l| {
+                let at = bodies.wrapping_add(words[l] as usize + offset);
+                // SAFETY: in a lane of `active`, words `word + offset` to
+                // `word + offset + 7` lie in the body (the caller's promise and the layout
+                // checked above); elsewhere the mask is empty and nothing is read.
+                unsafe { _mm512_maskz_loadu_epi64(lane_mask(active, l), at.cast()) }
+            }))
         };
         let [vx, vy, vz, wx, wy, wz, px, py] = rows(V as usize);
         let (dp, dtheta) = if with_motion {
@@ -674,25 +676,23 @@ impl Side {
             | beyond3::<NARROW>(b.w)
     }
 
-    /// Writes the velocities back: the first six words of each body's first row. Lanes that
-    /// share a body share it only when it does not move, and then write the values they
-    /// read.
+    /// Writes the velocities back: the first six words of each body's first row, in the
+    /// lanes of `active`. Lanes that share a body share it only when it does not move, and
+    /// then write the values they read.
     ///
     /// # Safety
     /// As for [`Side::load`], with `bodies` writable.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    unsafe fn store_velocities(&self, bodies: *mut i64, words: &[i64; LANES], len: usize) {
+    unsafe fn store_velocities(&self, bodies: *mut i64, words: &[i64; LANES], active: __mmask8) {
         let [vx, vy, vz] = self.v;
         let [wx, wy, wz] = self.w;
         let zero = _mm512_setzero_si512();
         let rows = transpose([vx, vy, vz, wx, wy, wz, zero, zero]);
-        for (row, &word) in rows.iter().zip(&words[..len]) {
-            // SAFETY: as in `load`; six words.
-            unsafe {
-                let at = bodies.add(word as usize + V as usize);
-                _mm512_mask_storeu_epi64(at.cast(), 0b11_1111, *row);
-            }
+        for (l, row) in rows.into_iter().enumerate() {
+            let at = bodies.wrapping_add(words[l] as usize + V as usize);
+            // SAFETY: as in `load`; six words, none outside `active`.
+            unsafe { _mm512_mask_storeu_epi64(at.cast(), lane_mask(active, l) & 0b11_1111, row) };
         }
     }
 
@@ -705,6 +705,13 @@ impl Side {
             | beyond3::<NARROW>(self.dp)
             | beyond3::<NARROW>(self.dtheta)
     }
+}
+
+/// The mask of a 64-byte load or store of lane `l`'s row: all eight words when `l` is
+/// one of the lanes of `active`, none otherwise.
+#[inline]
+fn lane_mask(active: __mmask8, l: usize) -> __mmask8 {
+    0u8.wrapping_sub((active >> l) & 1)
 }
 
 /// The transpose of an 8 × 8 matrix of words given by rows: row i of the result holds
@@ -774,9 +781,8 @@ fn lane_words(block: &ContactBlock<Fx>, body_count: usize) -> Option<(__mmask8, 
 
 /// Where the bodies of a block's lanes are.
 struct BodyLanes {
-    /// The lanes in use: the first `len`.
+    /// The lanes in use: the first `len` of the block.
     active: __mmask8,
-    len: usize,
     /// The first word of each lane's body A and body B.
     words_a: [i64; LANES],
     words_b: [i64; LANES],
@@ -817,7 +823,6 @@ impl BodyLanes {
         }
         Some(Self {
             active,
-            len: block.len,
             words_a,
             words_b,
             base: bodies.as_mut_ptr().cast::<i64>(),
@@ -834,8 +839,8 @@ impl BodyLanes {
         // SAFETY: every lane's index was checked in `new`.
         unsafe {
             (
-                Side::load(self.base, &self.words_a, self.len, with_motion),
-                Side::load(self.base, &self.words_b, self.len, with_motion),
+                Side::load(self.base, &self.words_a, self.active, with_motion),
+                Side::load(self.base, &self.words_b, self.active, with_motion),
             )
         }
     }
@@ -849,8 +854,8 @@ impl BodyLanes {
     unsafe fn store(&self, a: &Side, b: &Side) {
         // SAFETY: every lane's index was checked in `new`.
         unsafe {
-            a.store_velocities(self.base, &self.words_a, self.len);
-            b.store_velocities(self.base, &self.words_b, self.len);
+            a.store_velocities(self.base, &self.words_a, self.active);
+            b.store_velocities(self.base, &self.words_b, self.active);
         }
     }
 }
