@@ -97,9 +97,8 @@ use core::arch::x86_64::{
     _mm512_cmpge_epi64_mask, _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask,
     _mm512_cmpneq_epi64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_storeu_epi64,
     _mm512_maskz_loadu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64,
-    _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_permutex2var_epi64, _mm512_set_epi64,
-    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64, _mm512_unpackhi_epi64,
-    _mm512_unpacklo_epi64,
+    _mm512_mul_epi32, _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64,
+    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_unpackhi_epi64, _mm512_unpacklo_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -614,30 +613,28 @@ struct Side {
 }
 
 impl Side {
-    /// Loads the bodies whose first words are at `words` in the lanes of `active` (zero
-    /// elsewhere): one 64-byte row per body, v, ω, Δp_x and Δp_y, turned into one vector
+    /// Loads the bodies of `indices` in the lanes of `active` (zero elsewhere): one 64-byte row per body, v, ω, Δp_x and Δp_y, turned into one vector
     /// per component; with the motions Δp and Δθ when `with_motion` (zero otherwise), from
     /// the next row. One masked load per lane, all eight unrolled, so that the rows stay
     /// in registers; a lane outside `active` loads nothing.
     ///
     /// # Safety
-    /// Each word of a lane of `active` must be the first word of a body of the array at
-    /// `bodies`.
+    /// The index of each lane of `active` must be that of a body of the array at `bodies`.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
     unsafe fn load(
         bodies: *const i64,
-        words: &[i64; LANES],
+        indices: &[u32; LANES],
         active: __mmask8,
         with_motion: bool,
     ) -> Self {
         let zero = _mm512_setzero_si512();
         let rows = |offset: usize| {
             transpose(core::array::from_fn(|l| {
-                let at = bodies.wrapping_add(words[l] as usize + offset);
-                // SAFETY: in a lane of `active`, words `word + offset` to
-                // `word + offset + 7` lie in the body (the caller's promise and the layout
-                // checked above); elsewhere the mask is empty and nothing is read.
+                let at = bodies.wrapping_add(first_word(indices[l]) + offset);
+                // SAFETY: in a lane of `active`, words `offset` to `offset + 7` of the
+                // body lie in it (the caller's promise and the layout checked above);
+                // elsewhere the mask is empty and nothing is read.
                 unsafe { _mm512_maskz_loadu_epi64(lane_mask(active, l), at.cast()) }
             }))
         };
@@ -684,13 +681,13 @@ impl Side {
     /// As for [`Side::load`], with `bodies` writable.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    unsafe fn store_velocities(&self, bodies: *mut i64, words: &[i64; LANES], active: __mmask8) {
+    unsafe fn store_velocities(&self, bodies: *mut i64, indices: &[u32; LANES], active: __mmask8) {
         let [vx, vy, vz] = self.v;
         let [wx, wy, wz] = self.w;
         let zero = _mm512_setzero_si512();
         let rows = transpose([vx, vy, vz, wx, wy, wz, zero, zero]);
         for (l, row) in rows.into_iter().enumerate() {
-            let at = bodies.wrapping_add(words[l] as usize + V as usize);
+            let at = bodies.wrapping_add(first_word(indices[l]) + V as usize);
             // SAFETY: as in `load`; six words, none outside `active`.
             unsafe { _mm512_mask_storeu_epi64(at.cast(), lane_mask(active, l) & 0b11_1111, row) };
         }
@@ -705,6 +702,13 @@ impl Side {
             | beyond3::<NARROW>(self.dp)
             | beyond3::<NARROW>(self.dtheta)
     }
+}
+
+/// The first word of body `index` in an array of solver bodies taken as words:
+/// index · [`BODY_WORDS`].
+#[inline]
+fn first_word(index: u32) -> usize {
+    index as usize * BODY_WORDS as usize
 }
 
 /// The mask of a 64-byte load or store of lane `l`'s row: all eight words when `l` is
@@ -783,48 +787,35 @@ fn lane_words(block: &ContactBlock<Fx>, body_count: usize) -> Option<(__mmask8, 
 struct BodyLanes {
     /// The lanes in use: the first `len` of the block.
     active: __mmask8,
-    /// The first word of each lane's body A and body B.
-    words_a: [i64; LANES],
-    words_b: [i64; LANES],
+    /// The indices of each lane's body A and body B (checked in the lanes in use).
+    a: [u32; LANES],
+    b: [u32; LANES],
     /// The solver bodies, as words.
     base: *mut i64,
 }
 
 impl BodyLanes {
-    /// The body words of `block`'s lanes in `bodies`, or `None` if an index is out of
-    /// bounds.
+    /// The bodies of `block`'s lanes in `bodies`, or `None` if the index of a lane in use
+    /// is out of bounds.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
     fn new(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> Option<Self> {
         let active = ((1u16 << block.len) - 1) as __mmask8;
         let count = _mm512_set1_epi64(bodies.len() as i64);
-        let body_words = _mm512_set1_epi64(BODY_WORDS);
         // The lanes' indices, widened; the lanes in use must be below the body count.
-        let words = |indices: &[u32; LANES]| {
+        let outside = |indices: &[u32; LANES]| {
             // SAFETY: eight `u32`: 32 readable bytes.
             let indices =
                 _mm512_cvtepu32_epi64(unsafe { _mm256_loadu_si256(indices.as_ptr().cast()) });
-            let outside = _mm512_cmpge_epi64_mask(indices, count) & active;
-            let mut words = [0i64; LANES];
-            // SAFETY: 64 writable bytes.
-            unsafe {
-                _mm512_mask_storeu_epi64(
-                    words.as_mut_ptr().cast(),
-                    active,
-                    _mm512_mullo_epi64(indices, body_words),
-                );
-            }
-            (outside, words)
+            _mm512_cmpge_epi64_mask(indices, count) & active
         };
-        let (outside_a, words_a) = words(&block.a);
-        let (outside_b, words_b) = words(&block.b);
-        if outside_a | outside_b != 0 {
+        if outside(&block.a) | outside(&block.b) != 0 {
             return None;
         }
         Some(Self {
             active,
-            words_a,
-            words_b,
+            a: block.a,
+            b: block.b,
             base: bodies.as_mut_ptr().cast::<i64>(),
         })
     }
@@ -839,8 +830,8 @@ impl BodyLanes {
         // SAFETY: every lane's index was checked in `new`.
         unsafe {
             (
-                Side::load(self.base, &self.words_a, self.active, with_motion),
-                Side::load(self.base, &self.words_b, self.active, with_motion),
+                Side::load(self.base, &self.a, self.active, with_motion),
+                Side::load(self.base, &self.b, self.active, with_motion),
             )
         }
     }
@@ -854,8 +845,8 @@ impl BodyLanes {
     unsafe fn store(&self, a: &Side, b: &Side) {
         // SAFETY: every lane's index was checked in `new`.
         unsafe {
-            a.store_velocities(self.base, &self.words_a, self.active);
-            b.store_velocities(self.base, &self.words_b, self.active);
+            a.store_velocities(self.base, &self.a, self.active);
+            b.store_velocities(self.base, &self.b, self.active);
         }
     }
 }
