@@ -26,6 +26,14 @@
 //!
 //! So no operation leaves the `i64` range: the checked operators saturate nowhere and
 //! their results are the exact rounded values, which the kernel's exact residues equal.
+//!
+//! The linear velocities enter no product themselves, only their difference v_b − v_a,
+//! which is checked where it is used; in the warm start kernel no velocity enters a
+//! product. Such velocities are checked when loaded, not after each impulse: a pass adds
+//! to each at most seven changes (four points' λ n/m or λ I⁻¹(r × n), and two tangent
+//! changes and a twist change), each a product of checked values below 2⁶⁰, so they stay
+//! below 2⁴⁶ + 7·2⁶⁰ < 2⁶³ and every sum is exact. A velocity left past the bound by a
+//! pass fails the next pass's load check.
 //! When a check fails in a lane in use, the kernel stops before writing anything and the
 //! block takes [`ContactBlock::solve_lanes`], which saturates and counts as usual.
 //!
@@ -447,8 +455,9 @@ impl Linear {
 /// ω_a −= λ₁ I_a⁻¹(r_a × t₁) + λ₂ I_a⁻¹(r_a × t₂) + λ_twist I_a⁻¹n, and the opposite on B,
 /// as in [`ContactBlock::warm_start`] (zero impulses add zero, the same as skipping them).
 /// Narrow or wide products ([`times`]); the velocities, which enter no product here, are
-/// checked against the wide bound either way. Returns false, having written nothing, when
-/// a value leaves its checked bound in a lane in use.
+/// checked against the wide bound when loaded, either way, and not after each impulse (see
+/// the module documentation). Returns false, having written nothing, when a value leaves
+/// its checked bound in a lane in use.
 ///
 /// # Safety
 /// The processor must have AVX-512F and AVX-512DQ.
@@ -479,7 +488,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
         bad |= out_of_bound(n) & in_use;
         let (dv_a, dv_b) = linear.along_normal::<NARROW>(n);
-        bad |= Side::exchange::<false>(
+        Side::exchange(
             (&mut side_a, &mut side_b),
             [
                 dv_a,
@@ -487,7 +496,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
                 dv_b,
                 times3::<NARROW>(in_b, n),
             ],
-        ) & active;
+        );
         if bad != 0 {
             return false;
         }
@@ -505,7 +514,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
     let along =
         |a: [[__m512i; 3]; 2]| add3(times3::<NARROW>(a[0], t[0]), times3::<NARROW>(a[1], t[1]));
     let (dv_a, dv_b) = linear.along_tangents::<NARROW>(t);
-    bad |= Side::exchange::<false>(
+    Side::exchange(
         (&mut side_a, &mut side_b),
         [
             dv_a,
@@ -513,7 +522,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
             dv_b,
             add3(along(it_b), times3::<NARROW>(twist_b, twist)),
         ],
-    ) & active;
+    );
     if bad != 0 {
         return false;
     }
@@ -654,23 +663,25 @@ impl Side {
     }
 
     /// Applies an impulse's velocity changes, A losing and B gaining:
-    /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. Returns the lanes where a new
-    /// velocity left the bound of changing values ([`beyond`]): narrow when it enters
-    /// narrow products later.
+    /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. The new velocities are not
+    /// checked: a velocity that enters products later is checked there ([`Side::spin_beyond`]
+    /// and the relative velocity), and the sums are exact (see the module documentation).
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    fn exchange<const NARROW: bool>(
-        (a, b): (&mut Side, &mut Side),
-        [dv_a, dw_a, dv_b, dw_b]: [[__m512i; 3]; 4],
-    ) -> __mmask8 {
+    fn exchange((a, b): (&mut Side, &mut Side), [dv_a, dw_a, dv_b, dw_b]: [[__m512i; 3]; 4]) {
         a.v = sub3(a.v, dv_a);
         a.w = sub3(a.w, dw_a);
         b.v = add3(b.v, dv_b);
         b.w = add3(b.w, dw_b);
-        beyond3::<NARROW>(a.v)
-            | beyond3::<NARROW>(a.w)
-            | beyond3::<NARROW>(b.v)
-            | beyond3::<NARROW>(b.w)
+    }
+
+    /// The lanes where an angular velocity of either side, a factor of the next row's
+    /// products ω·(r × n) and ω·(r × t), lies outside the bound of changing values
+    /// ([`beyond`]).
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512dq")]
+    fn spin_beyond<const NARROW: bool>(a: &Side, b: &Side) -> __mmask8 {
+        beyond3::<NARROW>(a.w) | beyond3::<NARROW>(b.w)
     }
 
     /// Writes the velocities back: the first six words of each body's first row, in the
@@ -991,7 +1002,7 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
         let applied = select(in_use, sub(new, old), zero);
         bad |= out_of_bound(applied) & in_use;
         let (dv_a, dv_b) = linear.along_normal::<NARROW>(applied);
-        bad |= Side::exchange::<NARROW>(
+        Side::exchange(
             (&mut side_a, &mut side_b),
             [
                 dv_a,
@@ -999,7 +1010,8 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
                 dv_b,
                 times3::<NARROW>(in_b, applied),
             ],
-        ) & active;
+        );
+        bad |= Side::spin_beyond::<NARROW>(&side_a, &side_b) & active;
         normal_impulses[k] = select(in_use, new, old);
         max_normal_impulses[k] = select(in_use, _mm512_max_epi64(old_max, applied), old_max);
         if bad != 0 {
@@ -1088,10 +1100,11 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
             )
         };
         let (dv_a, dv_b) = linear.along_tangents::<NARROW>(applied);
-        bad |= Side::exchange::<NARROW>(
+        Side::exchange(
             (&mut side_a, &mut side_b),
             [dv_a, along(it_a), dv_b, along(it_b)],
-        ) & active;
+        );
+        // The twist row reads the angular velocities only through ω_b − ω_a, checked there.
         tangent_impulses = [
             select(in_use, new[0], old[0]),
             select(in_use, new[1], old[1]),
@@ -1111,7 +1124,8 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
             );
             let applied = select(in_use, sub(new_twist, old_twist), zero);
             bad |= out_of_bound(applied) & in_use;
-            bad |= Side::exchange::<NARROW>(
+            // The last row: its velocities enter no product in this pass.
+            Side::exchange(
                 (&mut side_a, &mut side_b),
                 [
                     [zero; 3],
@@ -1119,7 +1133,7 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
                     [zero; 3],
                     times3::<NARROW>(twist_b, applied),
                 ],
-            ) & active;
+            );
             if bad != 0 {
                 return false;
             }
