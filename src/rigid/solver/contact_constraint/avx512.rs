@@ -26,6 +26,14 @@
 //!
 //! So no operation leaves the `i64` range: the checked operators saturate nowhere and
 //! their results are the exact rounded values, which the kernel's exact residues equal.
+//!
+//! The linear velocities enter no product themselves, only their difference v_b − v_a,
+//! which is checked where it is used; in the warm start kernel no velocity enters a
+//! product. Such velocities are checked when loaded, not after each impulse: a pass adds
+//! to each at most seven changes (four points' λ n/m or λ I⁻¹(r × n), and two tangent
+//! changes and a twist change), each a product of checked values below 2⁶⁰, so they stay
+//! below 2⁴⁶ + 7·2⁶⁰ < 2⁶³ and every sum is exact. A velocity left past the bound by a
+//! pass fails the next pass's load check.
 //! When a check fails in a lane in use, the kernel stops before writing anything and the
 //! block takes [`ContactBlock::solve_lanes`], which saturates and counts as usual.
 //!
@@ -96,8 +104,8 @@ use core::arch::x86_64::{
     __m512i, __mmask8, _mm256_loadu_si256, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
     _mm512_cmpge_epi64_mask, _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask,
     _mm512_cmpneq_epi64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_storeu_epi64,
-    _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32,
-    _mm512_mullo_epi64, _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64,
+    _mm512_maskz_loadu_epi64, _mm512_maskz_mov_epi64, _mm512_max_epi64, _mm512_min_epi64,
+    _mm512_mul_epi32, _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64,
     _mm512_setzero_si512, _mm512_srai_epi64, _mm512_unpackhi_epi64, _mm512_unpacklo_epi64,
 };
 use core::mem::{offset_of, size_of};
@@ -447,8 +455,9 @@ impl Linear {
 /// ω_a −= λ₁ I_a⁻¹(r_a × t₁) + λ₂ I_a⁻¹(r_a × t₂) + λ_twist I_a⁻¹n, and the opposite on B,
 /// as in [`ContactBlock::warm_start`] (zero impulses add zero, the same as skipping them).
 /// Narrow or wide products ([`times`]); the velocities, which enter no product here, are
-/// checked against the wide bound either way. Returns false, having written nothing, when
-/// a value leaves its checked bound in a lane in use.
+/// checked against the wide bound when loaded, either way, and not after each impulse (see
+/// the module documentation). Returns false, having written nothing, when a value leaves
+/// its checked bound in a lane in use.
 ///
 /// # Safety
 /// The processor must have AVX-512F and AVX-512DQ.
@@ -479,7 +488,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
         let (in_a, in_b) = (load3(&cp.in_a), load3(&cp.in_b));
         bad |= out_of_bound(n) & in_use;
         let (dv_a, dv_b) = linear.along_normal::<NARROW>(n);
-        bad |= Side::exchange::<false>(
+        Side::exchange(
             (&mut side_a, &mut side_b),
             [
                 dv_a,
@@ -487,7 +496,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
                 dv_b,
                 times3::<NARROW>(in_b, n),
             ],
-        ) & active;
+        );
         if bad != 0 {
             return false;
         }
@@ -505,7 +514,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
     let along =
         |a: [[__m512i; 3]; 2]| add3(times3::<NARROW>(a[0], t[0]), times3::<NARROW>(a[1], t[1]));
     let (dv_a, dv_b) = linear.along_tangents::<NARROW>(t);
-    bad |= Side::exchange::<false>(
+    Side::exchange(
         (&mut side_a, &mut side_b),
         [
             dv_a,
@@ -513,7 +522,7 @@ unsafe fn warm_start_block<const NARROW: bool>(
             dv_b,
             add3(along(it_b), times3::<NARROW>(twist_b, twist)),
         ],
-    ) & active;
+    );
     if bad != 0 {
         return false;
     }
@@ -613,31 +622,30 @@ struct Side {
 }
 
 impl Side {
-    /// Loads the bodies whose first words are at `words` in the first `len` lanes (zero
-    /// elsewhere): one 64-byte row per body, v, ω, Δp_x and Δp_y, turned into one vector
+    /// Loads the bodies of `indices` in the lanes of `active` (zero elsewhere): one 64-byte row per body, v, ω, Δp_x and Δp_y, turned into one vector
     /// per component; with the motions Δp and Δθ when `with_motion` (zero otherwise), from
-    /// the next row.
+    /// the next row. One masked load per lane, all eight unrolled, so that the rows stay
+    /// in registers; a lane outside `active` loads nothing.
     ///
     /// # Safety
-    /// Each of the first `len` words must be the first word of a body of the array at
-    /// `bodies`.
+    /// The index of each lane of `active` must be that of a body of the array at `bodies`.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
     unsafe fn load(
         bodies: *const i64,
-        words: &[i64; LANES],
-        len: usize,
+        indices: &[u32; LANES],
+        active: __mmask8,
         with_motion: bool,
     ) -> Self {
         let zero = _mm512_setzero_si512();
         let rows = |offset: usize| {
-            let mut rows = [zero; LANES];
-            for (row, &word) in rows.iter_mut().zip(&words[..len]) {
-                // SAFETY: words `word + offset` to `word + offset + 7` lie in the body (the
-                // caller's promise and the layout checked above).
-                *row = unsafe { _mm512_loadu_si512(bodies.add(word as usize + offset).cast()) };
-            }
-            transpose(rows)
+            transpose(core::array::from_fn(|l| {
+                let at = bodies.wrapping_add(first_word(indices[l]) + offset);
+                // SAFETY: in a lane of `active`, words `offset` to `offset + 7` of the
+                // body lie in it (the caller's promise and the layout checked above);
+                // elsewhere the mask is empty and nothing is read.
+                unsafe { _mm512_maskz_loadu_epi64(lane_mask(active, l), at.cast()) }
+            }))
         };
         let [vx, vy, vz, wx, wy, wz, px, py] = rows(V as usize);
         let (dp, dtheta) = if with_motion {
@@ -655,44 +663,44 @@ impl Side {
     }
 
     /// Applies an impulse's velocity changes, A losing and B gaining:
-    /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. Returns the lanes where a new
-    /// velocity left the bound of changing values ([`beyond`]): narrow when it enters
-    /// narrow products later.
+    /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. The new velocities are not
+    /// checked: a velocity that enters products later is checked there ([`Side::spin_beyond`]
+    /// and the relative velocity), and the sums are exact (see the module documentation).
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    fn exchange<const NARROW: bool>(
-        (a, b): (&mut Side, &mut Side),
-        [dv_a, dw_a, dv_b, dw_b]: [[__m512i; 3]; 4],
-    ) -> __mmask8 {
+    fn exchange((a, b): (&mut Side, &mut Side), [dv_a, dw_a, dv_b, dw_b]: [[__m512i; 3]; 4]) {
         a.v = sub3(a.v, dv_a);
         a.w = sub3(a.w, dw_a);
         b.v = add3(b.v, dv_b);
         b.w = add3(b.w, dw_b);
-        beyond3::<NARROW>(a.v)
-            | beyond3::<NARROW>(a.w)
-            | beyond3::<NARROW>(b.v)
-            | beyond3::<NARROW>(b.w)
     }
 
-    /// Writes the velocities back: the first six words of each body's first row. Lanes that
-    /// share a body share it only when it does not move, and then write the values they
-    /// read.
+    /// The lanes where an angular velocity of either side, a factor of the next row's
+    /// products ω·(r × n) and ω·(r × t), lies outside the bound of changing values
+    /// ([`beyond`]).
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512dq")]
+    fn spin_beyond<const NARROW: bool>(a: &Side, b: &Side) -> __mmask8 {
+        beyond3::<NARROW>(a.w) | beyond3::<NARROW>(b.w)
+    }
+
+    /// Writes the velocities back: the first six words of each body's first row, in the
+    /// lanes of `active`. Lanes that share a body share it only when it does not move, and
+    /// then write the values they read.
     ///
     /// # Safety
     /// As for [`Side::load`], with `bodies` writable.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
-    unsafe fn store_velocities(&self, bodies: *mut i64, words: &[i64; LANES], len: usize) {
+    unsafe fn store_velocities(&self, bodies: *mut i64, indices: &[u32; LANES], active: __mmask8) {
         let [vx, vy, vz] = self.v;
         let [wx, wy, wz] = self.w;
         let zero = _mm512_setzero_si512();
         let rows = transpose([vx, vy, vz, wx, wy, wz, zero, zero]);
-        for (row, &word) in rows.iter().zip(&words[..len]) {
-            // SAFETY: as in `load`; six words.
-            unsafe {
-                let at = bodies.add(word as usize + V as usize);
-                _mm512_mask_storeu_epi64(at.cast(), 0b11_1111, *row);
-            }
+        for (l, row) in rows.into_iter().enumerate() {
+            let at = bodies.wrapping_add(first_word(indices[l]) + V as usize);
+            // SAFETY: as in `load`; six words, none outside `active`.
+            unsafe { _mm512_mask_storeu_epi64(at.cast(), lane_mask(active, l) & 0b11_1111, row) };
         }
     }
 
@@ -705,6 +713,20 @@ impl Side {
             | beyond3::<NARROW>(self.dp)
             | beyond3::<NARROW>(self.dtheta)
     }
+}
+
+/// The first word of body `index` in an array of solver bodies taken as words:
+/// index · [`BODY_WORDS`].
+#[inline]
+fn first_word(index: u32) -> usize {
+    index as usize * BODY_WORDS as usize
+}
+
+/// The mask of a 64-byte load or store of lane `l`'s row: all eight words when `l` is
+/// one of the lanes of `active`, none otherwise.
+#[inline]
+fn lane_mask(active: __mmask8, l: usize) -> __mmask8 {
+    0u8.wrapping_sub((active >> l) & 1)
 }
 
 /// The transpose of an 8 × 8 matrix of words given by rows: row i of the result holds
@@ -774,52 +796,37 @@ fn lane_words(block: &ContactBlock<Fx>, body_count: usize) -> Option<(__mmask8, 
 
 /// Where the bodies of a block's lanes are.
 struct BodyLanes {
-    /// The lanes in use: the first `len`.
+    /// The lanes in use: the first `len` of the block.
     active: __mmask8,
-    len: usize,
-    /// The first word of each lane's body A and body B.
-    words_a: [i64; LANES],
-    words_b: [i64; LANES],
+    /// The indices of each lane's body A and body B (checked in the lanes in use).
+    a: [u32; LANES],
+    b: [u32; LANES],
     /// The solver bodies, as words.
     base: *mut i64,
 }
 
 impl BodyLanes {
-    /// The body words of `block`'s lanes in `bodies`, or `None` if an index is out of
-    /// bounds.
+    /// The bodies of `block`'s lanes in `bodies`, or `None` if the index of a lane in use
+    /// is out of bounds.
     #[inline]
     #[target_feature(enable = "avx512f,avx512dq")]
     fn new(block: &ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) -> Option<Self> {
         let active = ((1u16 << block.len) - 1) as __mmask8;
         let count = _mm512_set1_epi64(bodies.len() as i64);
-        let body_words = _mm512_set1_epi64(BODY_WORDS);
         // The lanes' indices, widened; the lanes in use must be below the body count.
-        let words = |indices: &[u32; LANES]| {
+        let outside = |indices: &[u32; LANES]| {
             // SAFETY: eight `u32`: 32 readable bytes.
             let indices =
                 _mm512_cvtepu32_epi64(unsafe { _mm256_loadu_si256(indices.as_ptr().cast()) });
-            let outside = _mm512_cmpge_epi64_mask(indices, count) & active;
-            let mut words = [0i64; LANES];
-            // SAFETY: 64 writable bytes.
-            unsafe {
-                _mm512_mask_storeu_epi64(
-                    words.as_mut_ptr().cast(),
-                    active,
-                    _mm512_mullo_epi64(indices, body_words),
-                );
-            }
-            (outside, words)
+            _mm512_cmpge_epi64_mask(indices, count) & active
         };
-        let (outside_a, words_a) = words(&block.a);
-        let (outside_b, words_b) = words(&block.b);
-        if outside_a | outside_b != 0 {
+        if outside(&block.a) | outside(&block.b) != 0 {
             return None;
         }
         Some(Self {
             active,
-            len: block.len,
-            words_a,
-            words_b,
+            a: block.a,
+            b: block.b,
             base: bodies.as_mut_ptr().cast::<i64>(),
         })
     }
@@ -834,8 +841,8 @@ impl BodyLanes {
         // SAFETY: every lane's index was checked in `new`.
         unsafe {
             (
-                Side::load(self.base, &self.words_a, self.len, with_motion),
-                Side::load(self.base, &self.words_b, self.len, with_motion),
+                Side::load(self.base, &self.a, self.active, with_motion),
+                Side::load(self.base, &self.b, self.active, with_motion),
             )
         }
     }
@@ -849,8 +856,8 @@ impl BodyLanes {
     unsafe fn store(&self, a: &Side, b: &Side) {
         // SAFETY: every lane's index was checked in `new`.
         unsafe {
-            a.store_velocities(self.base, &self.words_a, self.len);
-            b.store_velocities(self.base, &self.words_b, self.len);
+            a.store_velocities(self.base, &self.a, self.active);
+            b.store_velocities(self.base, &self.b, self.active);
         }
     }
 }
@@ -995,7 +1002,7 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
         let applied = select(in_use, sub(new, old), zero);
         bad |= out_of_bound(applied) & in_use;
         let (dv_a, dv_b) = linear.along_normal::<NARROW>(applied);
-        bad |= Side::exchange::<NARROW>(
+        Side::exchange(
             (&mut side_a, &mut side_b),
             [
                 dv_a,
@@ -1003,7 +1010,8 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
                 dv_b,
                 times3::<NARROW>(in_b, applied),
             ],
-        ) & active;
+        );
+        bad |= Side::spin_beyond::<NARROW>(&side_a, &side_b) & active;
         normal_impulses[k] = select(in_use, new, old);
         max_normal_impulses[k] = select(in_use, _mm512_max_epi64(old_max, applied), old_max);
         if bad != 0 {
@@ -1092,10 +1100,11 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
             )
         };
         let (dv_a, dv_b) = linear.along_tangents::<NARROW>(applied);
-        bad |= Side::exchange::<NARROW>(
+        Side::exchange(
             (&mut side_a, &mut side_b),
             [dv_a, along(it_a), dv_b, along(it_b)],
-        ) & active;
+        );
+        // The twist row reads the angular velocities only through ω_b − ω_a, checked there.
         tangent_impulses = [
             select(in_use, new[0], old[0]),
             select(in_use, new[1], old[1]),
@@ -1115,7 +1124,8 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
             );
             let applied = select(in_use, sub(new_twist, old_twist), zero);
             bad |= out_of_bound(applied) & in_use;
-            bad |= Side::exchange::<NARROW>(
+            // The last row: its velocities enter no product in this pass.
+            Side::exchange(
                 (&mut side_a, &mut side_b),
                 [
                     [zero; 3],
@@ -1123,7 +1133,7 @@ unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
                     [zero; 3],
                     times3::<NARROW>(twist_b, applied),
                 ],
-            ) & active;
+            );
             if bad != 0 {
                 return false;
             }

@@ -419,6 +419,27 @@ fn blocks_near_the_kernel_bound_match_the_lanes() {
 }
 
 #[test]
+fn blocks_pushed_past_the_kernel_bound_match_the_lanes() {
+    // Velocities within 2¹⁴ when loaded and impulses large enough to push them past it
+    // during a pass: the kernels do not check the velocities after each impulse (only where
+    // they enter products), so they finish such a pass with exact sums and the next pass
+    // refuses the block.
+    let scales = Scales {
+        velocity: 12_000.0,
+        impulse: 12_000.0,
+        ..everyday(Masses::Spread)
+    };
+    let runs = compare(4, 400, &scales);
+    if kernels_present() {
+        let taken = runs.narrow + runs.wide;
+        assert!(
+            taken > 0 && taken < independent_passes(400),
+            "the kernels ran {taken} times"
+        );
+    }
+}
+
+#[test]
 fn blocks_that_saturate_match_the_lanes() {
     // Values near the ends of the range: the kernels refuse, the lanes saturate and count.
     let scales = Scales {
