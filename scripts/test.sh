@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The project's test command (README "Testing"): formatting, lints, every test in the test
 # profile (debug arithmetic checks on) and again in release (each re-simulating every
-# committed replay), the determinism matrix's i686 row, and the fuzz smoke run (every seed
-# and kept crash through every fuzz target, then 15 s of fuzzing per target). It ends with
-# one line totalling both test runs: `tests: N passed, N failed`.
+# committed replay), the determinism matrix's i686 row, the lints for i686, and the fuzz
+# smoke run (every seed and kept crash through every fuzz target, then 15 s of fuzzing per
+# target). It ends with one line totalling both test runs: `tests: N passed, N failed`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,6 +20,10 @@ cargo test --locked --release 2>&1 | tee -a "$log"
 # the host-debug and host-release settings (the test profile is the debug profile). So CI
 # runs the one row that adds a target.
 ./scripts/determinism-matrix.sh --targets i686 --strict
+# Lints off x86_64 too (the row above installed the target): code used only by the AVX-512
+# paths must not be dead elsewhere.
+cargo clippy --all-targets --locked --target i686-unknown-linux-gnu \
+  --target-dir target/clippy-i686 -- -D warnings
 ./scripts/fuzz.sh smoke 15
 
 awk '/^test result:/ { passed += $4; failed += $6 }
