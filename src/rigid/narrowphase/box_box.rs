@@ -237,14 +237,13 @@ fn face_contact<R: Real>(
         }
     }
     let world = world_points::to_world(xf, &local, count);
-    for (slot, (&point, &index)) in world.iter().zip(&chosen).take(count).enumerate() {
-        manifold.points[slot] = ManifoldPoint {
+    for (&point, &index) in world.iter().zip(&chosen).take(count) {
+        manifold.push(ManifoldPoint {
             point,
             separation: separations[index],
             id: ids[index],
-        };
+        });
     }
-    manifold.count = count;
     manifold
 }
 

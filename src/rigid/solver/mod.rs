@@ -45,6 +45,16 @@ pub(crate) use softness::Softness;
 use crate::math::Real;
 use batching::Batching;
 
+/// Whether this processor runs the rigid step's AVX-512 kernels (never off x86_64): for
+/// tests that check the kernels took their share of the cases they compare.
+#[cfg(test)]
+pub(crate) fn kernels_present() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return avx512::has_kernels();
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
 /// Buffers the solver reuses from step to step. They hold no state between steps, only
 /// capacity.
 #[derive(Clone, Debug, Default)]

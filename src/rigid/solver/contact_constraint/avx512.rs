@@ -622,9 +622,9 @@ struct Side {
 }
 
 impl Side {
-    /// Loads the bodies of `indices` in the lanes of `active` (zero elsewhere): one 64-byte row per body, v, ω, Δp_x and Δp_y, turned into one vector
-    /// per component; with the motions Δp and Δθ when `with_motion` (zero otherwise), from
-    /// the next row. One masked load per lane, all eight unrolled, so that the rows stay
+    /// Loads the bodies of `indices` in the lanes of `active` (zero elsewhere): one 64-byte
+    /// row per body, v, ω, Δp_x and Δp_y, turned into one vector per component; with the
+    /// motions Δp and Δθ when `with_motion` (zero otherwise), from the next row. One masked load per lane, all eight unrolled, so that the rows stay
     /// in registers; a lane outside `active` loads nothing.
     ///
     /// # Safety

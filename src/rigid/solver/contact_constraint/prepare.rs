@@ -75,11 +75,12 @@ impl<R: Real> ContactBlock<R> {
     /// Takes the next free lane for the constraint of `contact` between solver bodies `a`
     /// and `b` whose centres of mass are at `centre_a`, `centre_b` (m): the bodies, the
     /// normal and a vector ⟂ n ([`Vec3::any_orthogonal`], which [`tangents`](Self::tangents)
-    /// turns into the two unit tangents), the mixed
-    /// friction and restitution, the separations and normal impulses of the points, the
-    /// contact's carried friction impulses, and the anchors of the points and of the
-    /// friction centre and the squares of the points' twist lever arms into `arms`. [`prepare_products`](Self::prepare_products)
-    /// completes the block. The block must not be full.
+    /// turns into the two unit tangents), the mixed friction and restitution, the
+    /// separations and normal impulses of the points, the contact's carried friction
+    /// impulses, and the anchors of the points and of the friction centre and the squares
+    /// of the points' twist lever arms into `arms`.
+    /// [`prepare_products`](Self::prepare_products) completes the block. The block must not
+    /// be full.
     #[allow(clippy::too_many_arguments)]
     pub fn prepare_lane(
         &mut self,

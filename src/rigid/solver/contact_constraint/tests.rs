@@ -9,6 +9,7 @@ use crate::math::{Fx, Mat3, Pcg32, Real, Vec3};
 use crate::rigid::contact::{Contact, ContactKey, ContactPoint};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::kernels_present;
 use crate::rigid::solver::lanes::LANES;
 use crate::rigid::solver::softness::Softness;
 
@@ -328,14 +329,6 @@ fn kernel_taking(
 #[cfg(not(target_arch = "x86_64"))]
 fn kernel_taking(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -> Taken {
     Taken::None
-}
-
-/// Whether this processor runs the kernels.
-fn kernels_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return crate::rigid::solver::avx512::has_kernels();
-    #[cfg(not(target_arch = "x86_64"))]
-    false
 }
 
 /// Independent blocks among `trials`, each compared with and without bias.

@@ -4,6 +4,7 @@
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Quat, Real, Vec3};
 use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::kernels_present;
 use crate::rigid::solver::lanes::LANES;
 
 /// A value in [−scale, scale).
@@ -94,20 +95,12 @@ fn kernel(_: &[SolverBody<Fx>], _: &[u32], _: &mut [Quat<Fx>], _: Fx) -> u8 {
     0
 }
 
-/// Whether this processor runs the kernel.
-fn kernel_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return crate::rigid::solver::avx512::has_kernels();
-    #[cfg(not(target_arch = "x86_64"))]
-    false
-}
-
 #[test]
 fn rotations_near_unit_length_match_quat_integrate() {
     // Up to 5 rad/s in each axis: turns of up to 0.03 rad per substep, well inside the
     // near-unit path.
     let taken = compare(1, 400, 5.0, 1.0e-6);
-    if kernel_present() {
+    if kernels_present() {
         // About 1,440 spinning bodies, all within the kernel's reach.
         assert!(taken > 1400, "the kernel took {taken} lanes");
     }
@@ -118,7 +111,7 @@ fn rotations_off_unit_length_match_quat_integrate() {
     // Spins up to 20 rad/s and components off by up to 10⁻³: some past the near-unit test,
     // which the kernel leaves.
     let taken = compare(2, 400, 20.0, 1.0e-3);
-    if kernel_present() {
+    if kernels_present() {
         assert!(taken > 0, "the kernel took no lane");
     }
 }

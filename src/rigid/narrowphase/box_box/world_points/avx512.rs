@@ -44,28 +44,15 @@ const fn output(half: usize, lane: usize) -> (usize, usize) {
 
 /// Per output vector and column m, the index of p_i,m among the points' twelve words for
 /// each lane (0–7 the first vector of words, 8–15 the second).
-const POINT: [[[i64; 8]; 3]; 2] = {
-    let mut index = [[[0; 8]; 3]; 2];
-    let mut half = 0;
-    while half < 2 {
-        let mut m = 0;
-        while m < 3 {
-            let mut lane = 0;
-            while lane < 8 {
-                let (i, _) = output(half, lane);
-                index[half][m][lane] = (3 * i + m) as i64;
-                lane += 1;
-            }
-            m += 1;
-        }
-        half += 1;
-    }
-    index
-};
+const POINT: [[[i64; 8]; 3]; 2] = operand_indices(false);
 
 /// Per output vector and column m, the index of R_cm among the matrix's nine words
 /// (column-major: word 3m + c; the ninth is the second vector's first lane).
-const ROTATION: [[[i64; 8]; 3]; 2] = {
+const ROTATION: [[[i64; 8]; 3]; 2] = operand_indices(true);
+
+/// Per output vector and column m, each lane's operand index for its output (i, c):
+/// 3m + c (R_cm) when `rotation`, 3i + m (p_i,m) otherwise.
+const fn operand_indices(rotation: bool) -> [[[i64; 8]; 3]; 2] {
     let mut index = [[[0; 8]; 3]; 2];
     let mut half = 0;
     while half < 2 {
@@ -73,8 +60,8 @@ const ROTATION: [[[i64; 8]; 3]; 2] = {
         while m < 3 {
             let mut lane = 0;
             while lane < 8 {
-                let (_, c) = output(half, lane);
-                index[half][m][lane] = (3 * m + c) as i64;
+                let (i, c) = output(half, lane);
+                index[half][m][lane] = if rotation { 3 * m + c } else { 3 * i + m } as i64;
                 lane += 1;
             }
             m += 1;
@@ -82,7 +69,7 @@ const ROTATION: [[[i64; 8]; 3]; 2] = {
         half += 1;
     }
     index
-};
+}
 
 /// Per output vector, the index of t_c among the translation's three words.
 const TRANSLATION: [[i64; 8]; 2] = {

@@ -7,6 +7,7 @@ use super::to_world;
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, FxI48F16, Mat3, Pcg32, Quat, Vec3};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
+use crate::rigid::solver::kernels_present;
 use crate::rigid::transform::Transform;
 
 /// The kernel's bound on raw words: operands lie in [−2⁴⁶, 2⁴⁶).
@@ -85,14 +86,6 @@ fn within_bound(xf: &Transform<Fx>, local: &[Vec3<Fx>; MAX_MANIFOLD_POINTS]) -> 
         .all(|x| (-BOUND..BOUND).contains(&x.to_bits()))
 }
 
-/// Whether this processor runs the kernel.
-fn kernel_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return crate::rigid::solver::avx512::has_kernels();
-    #[cfg(not(target_arch = "x86_64"))]
-    false
-}
-
 #[test]
 fn rotations_and_points_of_every_size_match_the_scalar_form() {
     let mut rng = Pcg32::new(0x000f_0ce5, 7);
@@ -106,10 +99,10 @@ fn rotations_and_points_of_every_size_match_the_scalar_form() {
         let local = core::array::from_fn(|_| vector(&mut rng, bits));
         let count = trial % (MAX_MANIFOLD_POINTS + 1);
         let kernel = check(&xf, &local, count);
-        assert_eq!(kernel, kernel_present() && within_bound(&xf, &local));
+        assert_eq!(kernel, kernels_present() && within_bound(&xf, &local));
         taken += usize::from(kernel);
     }
-    if kernel_present() {
+    if kernels_present() {
         assert!(taken > 30_000, "{taken}");
     }
 }
@@ -133,13 +126,13 @@ fn any_matrix_up_to_and_past_the_bound_matches_the_scalar_form() {
         let local = core::array::from_fn(|_| vector(&mut rng, bits));
         let (_, saturations) = count_saturations(|| local.map(|p| xf.point(p)));
         let kernel = check(&xf, &local, MAX_MANIFOLD_POINTS);
-        assert_eq!(kernel, kernel_present() && within_bound(&xf, &local));
+        assert_eq!(kernel, kernels_present() && within_bound(&xf, &local));
         assert!(!kernel || saturations == 0);
         taken += usize::from(kernel);
         declined += usize::from(!kernel);
         saturated += usize::from(saturations > 0);
     }
-    if kernel_present() {
+    if kernels_present() {
         assert!(
             taken > 10_000 && declined > 15_000 && saturated > 5_000,
             "{taken} {declined} {saturated}"
@@ -171,7 +164,7 @@ fn one_word_past_the_bound_is_left_to_the_scalar_form() {
             _ => v.z = value,
         }
         let kernel = check(&xf, &local, MAX_MANIFOLD_POINTS);
-        assert_eq!(kernel, kernel_present() && trial % 4 < 2, "trial {trial}");
+        assert_eq!(kernel, kernels_present() && trial % 4 < 2, "trial {trial}");
     }
 }
 
