@@ -238,3 +238,55 @@ fn a_breaking_joint_is_reported_on_stderr() {
     assert_eq!(out.code, 0, "{out:?}");
     assert!(out.stderr.contains("tick 1: joint 0v0 broke ("), "{out:?}");
 }
+
+#[test]
+fn a_fluid_cfl_number_out_of_range_names_the_field() {
+    let fluid = "fluid: (solver: Dfsph, spacing: 0.02, substeps: 4, \
+                 tank: (min: (x: 0.0, y: 0.0, z: 0.0), max: (x: 0.2, y: 0.2, z: 0.2)), cfl: ";
+    for cfl in ["2.0", "-0.1", "0.001"] {
+        let text = format!("(name: \"x\", {fluid}{cfl}))");
+        assert_scene_rejected(text.as_bytes(), &["fluid.cfl", "must be 0", "or 0.01 to 1"]);
+    }
+}
+
+/// The hand-written scene with adaptive fluid substeps records a replay that verifies, and
+/// its metrics show the count adapting: one substep at the first tick, more as the front
+/// speeds up, never more than the scene's 8.
+#[test]
+fn adaptive_fluid_substeps_record_verify_and_report() {
+    let scene = scenes_dir().join("dam_break_adaptive.ron");
+    let scene = scene.to_str().expect("UTF-8");
+    let replay = TempPath::new("dam_break_adaptive.replay");
+    let metrics = TempPath::new("dam_break_adaptive.csv");
+    let run = fixstep(&[
+        "run",
+        scene,
+        "--record",
+        replay.str(),
+        "--metrics",
+        metrics.str(),
+    ]);
+    assert_eq!(run.code, 0, "{run:?}");
+    let verified = fixstep(&["verify", replay.str()]);
+    assert_eq!(verified.code, 0, "{verified:?}");
+    let text = std::fs::read_to_string(metrics.str()).expect("metrics written");
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().expect("a header").split(',').collect();
+    let column = header
+        .iter()
+        .position(|&c| c == "fluid_substeps")
+        .expect("a fluid_substeps column");
+    let counts: Vec<u32> = lines
+        .map(|l| {
+            l.split(',')
+                .nth(column)
+                .expect("the column")
+                .parse()
+                .expect("a count")
+        })
+        .collect();
+    assert_eq!(counts[0], 0, "before the first step");
+    assert_eq!(counts[1], 1, "the column at rest");
+    let most = *counts.iter().max().expect("rows");
+    assert!((3..=8).contains(&most), "{counts:?}");
+}

@@ -211,3 +211,24 @@ fn run_refuses_one_file_for_two_outputs() {
     run.assert_error(&[out.str(), "--metrics and --snapshot name the same file"]);
     assert!(!out.path().exists());
 }
+
+/// A fluid whose substeps adapt keeps its CFL number through a snapshot: the resumed run
+/// ends with the uninterrupted checksum (the count would differ without it).
+#[test]
+fn run_resumes_adaptive_fluid_substeps_from_a_snapshot() {
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/dam_break_adaptive.ron");
+    let snapshot = TempPath::new("adaptive.snapshot");
+    let whole = fixstep(&["run", scene, "--ticks", "12"]);
+    let first = fixstep(&["run", scene, "--ticks", "6", "--snapshot", snapshot.str()]);
+    assert_eq!(first.code, 0, "{first:?}");
+    let second = fixstep(&[
+        "run",
+        scene,
+        "--ticks",
+        "6",
+        "--from-snapshot",
+        snapshot.str(),
+    ]);
+    assert_eq!(second.code, 0, "{second:?}");
+    assert_eq!(whole.stdout.lines().last(), second.stdout.lines().last());
+}

@@ -103,6 +103,15 @@ impl<R: Real> FluidSettings<R> {
         SceneError::check_range("viscosity", desc.viscosity, R::ZERO, R::ONE, "")?;
         SceneError::check_range("xsph", desc.xsph, R::ZERO, R::ONE, "")?;
         check_count("substeps", desc.substeps, MAX_FLUID_SUBSTEPS)?;
+        if desc.cfl != R::ZERO && !(R::from_ratio(1, 100) <= desc.cfl && desc.cfl <= R::ONE) {
+            return Err(SceneError::new(
+                "cfl",
+                format!(
+                    "must be 0 (a fixed count of substeps) or 0.01 to 1 (got {})",
+                    desc.cfl
+                ),
+            ));
+        }
         SceneError::check_range(
             "max_density_error",
             desc.max_density_error,
@@ -121,6 +130,7 @@ impl<R: Real> FluidSettings<R> {
             viscosity: desc.viscosity,
             xsph: desc.xsph,
             substeps: desc.substeps,
+            cfl: desc.cfl,
             max_density_error: desc.max_density_error,
             max_iterations: desc.max_iterations,
             tank: desc.tank,
@@ -288,6 +298,7 @@ impl<R: Real> FluidSystem<R> {
         desc.viscosity = s.viscosity;
         desc.xsph = s.xsph;
         desc.substeps = s.substeps;
+        desc.cfl = s.cfl;
         desc.max_density_error = s.max_density_error;
         desc.max_iterations = s.max_iterations;
         let compiled = FluidSettings::compile(&desc, None).map_err(|e| e.within("settings"))?;

@@ -112,9 +112,18 @@ pub struct FluidDesc<R: Real = Fx> {
     /// XSPH velocity smoothing ε (0 to 1), the artificial viscosity. Default 0.05.
     #[serde(default = "default_xsph")]
     pub xsph: R,
-    /// Fluid substeps per world substep (1 to 1000). Default 1.
+    /// Fluid substeps per world substep (1 to 1000). Default 1. With a [`cfl`](Self::cfl)
+    /// number, the most substeps a step may take.
     #[serde(default = "default_substeps")]
     pub substeps: u32,
+    /// Adaptive substeps: the CFL number C (0.01 to 1), the most a particle may travel in one
+    /// substep, in kernel supports H. Each world substep then takes the fewest fluid substeps
+    /// n ≤ [`substeps`](Self::substeps) with Δt (u + |g| Δt) / n ≤ C H, u the fastest
+    /// particle's (or due emitter's) speed at its start, plus c for WCSPH (the acoustic
+    /// limit). 0.2 is the limit the fixed count is checked against. Default 0: always
+    /// `substeps`.
+    #[serde(default = "default_cfl")]
+    pub cfl: R,
     /// DFSPH: iterate until the mean predicted compression (ρ − ρ₀)/ρ₀ is below this
     /// (0.000 01 to 0.1). Default 0.0005.
     #[serde(default = "default_max_density_error")]
@@ -151,6 +160,9 @@ fn default_xsph<R: Real>() -> R {
 fn default_substeps() -> u32 {
     1
 }
+fn default_cfl<R: Real>() -> R {
+    R::ZERO
+}
 fn default_max_density_error<R: Real>() -> R {
     R::from_ratio(5, 10_000)
 }
@@ -171,6 +183,7 @@ impl<R: Real> FluidDesc<R> {
             viscosity: default_viscosity(),
             xsph: default_xsph(),
             substeps: default_substeps(),
+            cfl: default_cfl(),
             max_density_error: default_max_density_error(),
             max_iterations: default_max_iterations(),
             tank,

@@ -4,8 +4,11 @@
 //! raw fixed-point bits, vectors x, y, z):
 //!
 //! 1. the settings: solver code (`u8`), spacing, support, rest density, speed of sound,
-//!    viscosity α, XSPH ε, substeps (`u32`), density-error tolerance, iteration cap (`u32`), tank min
-//!    and max, the kernel's H, 1/H, c_w, c_g and D₀, and the stiffness c²/7;
+//!    viscosity α, XSPH ε, substeps (`u32`), density-error tolerance, iteration cap
+//!    (`u32`), tank min and max, the kernel's H, 1/H, c_w, c_g and D₀, and the stiffness
+//!    c²/7; then, only
+//!    when the substeps adapt (a CFL number other than 0, which fluids recorded before it
+//!    existed do not have), the CFL number;
 //! 2. the particle count (`u64`), then each particle by id: position, velocity;
 //! 3. the emitter count (`u64`), then each emitter in scene order: position, velocity,
 //!    speed, direction, width (`u32`), remaining (`u32`), distance travelled.
@@ -39,6 +42,9 @@ impl<R: Real> FluidSystem<R> {
         h.write_real(s.kernel.gradient_scale);
         h.write_real(s.kernel.lattice_gradient_norm);
         h.write_real(s.stiffness);
+        if s.cfl != R::ZERO {
+            h.write_real(s.cfl);
+        }
         h.write_len(self.positions.len());
         for (x, v) in self.positions.iter().zip(&self.velocities) {
             h.write_vec3(*x);

@@ -26,6 +26,9 @@ pub struct FluidMetrics {
     /// the particle's own volume), measured from the tank's back wall (min x), m; 0 without
     /// particles.
     pub front_x: f64, // ok-det: reporting
+    /// Fluid substeps the last step took ([`FluidSystem::last_substeps`]; 0 before the
+    /// first step of this copy of the system).
+    pub substeps: u32,
 }
 
 impl<R: Real> FluidSystem<R> {
@@ -40,6 +43,7 @@ impl<R: Real> FluidSystem<R> {
         let back = s.tank.min.x.to_f64(); // ok-det: reporting
         let mut m = FluidMetrics {
             particles: self.positions.len() as u64,
+            substeps: self.last_substeps(),
             ..FluidMetrics::default()
         };
         for (x, v) in self.positions.iter().zip(&self.velocities) {

@@ -10,7 +10,7 @@
 //! # Files
 //!
 //! Description and storage: [`desc`] scene types · [`build`] checks and compilation ·
-//! [`system`] the system and its step · [`hashing`] canonical state · [`metrics`]
+//! [`system`] the system and its step · [`substeps`] adaptive substeps · [`hashing`] canonical state · [`metrics`]
 //! reporting · [`presets`] the built-in scenes' fluids.
 //!
 //! Neighbours: [`kernel`] the Wendland C2 kernel in normalised form · [`grid`] counting
@@ -43,6 +43,7 @@ mod metrics;
 pub mod neighbours;
 pub mod presets;
 mod row_sums;
+mod substeps;
 mod system;
 mod wcsph;
 mod xsph;

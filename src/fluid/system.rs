@@ -30,8 +30,10 @@ pub struct FluidSettings<R: Real = Fx> {
     pub viscosity: R,
     /// XSPH smoothing ε.
     pub xsph: R,
-    /// Fluid substeps per world substep.
+    /// Fluid substeps per world substep; with a CFL number, the most.
     pub substeps: u32,
+    /// The CFL number C of adaptive substeps, in kernel supports; 0 for a fixed count.
+    pub cfl: R,
     /// DFSPH tolerance on the mean predicted compression.
     pub max_density_error: R,
     /// DFSPH iteration cap.
@@ -112,6 +114,8 @@ pub(crate) struct Scratch<R: Real> {
     pub rate: Vec<R>,
     /// Solver iterations of the last step, summed over its substeps (DFSPH), for reports.
     pub last_iterations: u32,
+    /// Substeps of the last step, for reports.
+    pub last_substeps: u32,
 }
 
 impl<R: Real> Clone for Scratch<R> {
@@ -163,6 +167,11 @@ impl<R: Real> FluidSystem<R> {
         self.scratch.last_iterations
     }
 
+    /// Fluid substeps the last step took (0 before the first step).
+    pub fn last_substeps(&self) -> u32 {
+        self.scratch.last_substeps
+    }
+
     /// Puts the state of `restored` in place, keeping this system's scratch memory.
     pub fn restore_from(&mut self, restored: Self) {
         let same_settings = restored.settings == self.settings;
@@ -174,12 +183,15 @@ impl<R: Real> FluidSystem<R> {
     }
 
     /// Advances the fluid by `dt` seconds under `gravity` (m/s²), in
-    /// [`FluidSettings::substeps`] equal substeps.
+    /// [`FluidSettings::substeps`] equal substeps, or with a CFL number as many as the flow
+    /// needs ([`substeps`](super::substeps)).
     pub fn step(&mut self, dt: R, gravity: Vec3<R>) {
         self.prepare();
         self.scratch.last_iterations = 0;
-        let h = dt * R::from_ratio(1, i64::from(self.settings.substeps));
-        for _ in 0..self.settings.substeps {
+        let substeps = self.substep_count(dt, gravity);
+        self.scratch.last_substeps = substeps;
+        let h = dt * R::from_ratio(1, i64::from(substeps));
+        for _ in 0..substeps {
             self.emit(h);
             if self.positions.is_empty() {
                 continue;

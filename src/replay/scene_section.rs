@@ -9,11 +9,15 @@
 //! later (fluids, soft bodies, joints were added so) changes nothing for existing files,
 //! and each scene has exactly one encoding: readers reject an empty or unordered list of
 //! additions.
+//!
+//! A fluid is written as format 3 wrote it ([`FluidFields`]: every field of [`FluidDesc`]
+//! but the CFL number); a fluid whose substeps adapt adds [`Addition::FluidCfl`] with its
+//! CFL number, which is never 0 and never without a fluid.
 
 use serde::{Deserialize, Serialize};
 
 use crate::codec::{self, CodecError};
-use crate::fluid::FluidDesc;
+use crate::fluid::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
 use crate::rigid::{JointsDesc, RigidDesc};
@@ -57,9 +61,11 @@ struct Base<R: Real> {
 #[serde(bound = "")]
 enum Addition<R: Real> {
     Rigid(RigidDesc<R>),
-    Fluid(FluidDesc<R>),
+    Fluid(FluidFields<R>),
     Soft(SoftDesc<R>),
     Joints(JointsDesc<R>),
+    /// The fluid's CFL number ([`FluidDesc::cfl`]), when not 0.
+    FluidCfl(R),
 }
 
 impl<R: Real> Addition<R> {
@@ -69,7 +75,64 @@ impl<R: Real> Addition<R> {
             Self::Fluid(_) => 1,
             Self::Soft(_) => 2,
             Self::Joints(_) => 3,
+            Self::FluidCfl(_) => 4,
         }
+    }
+}
+
+/// [`FluidDesc`]'s fields as format 3 wrote them, in that order: all but the CFL number.
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct FluidFields<R: Real> {
+    solver: FluidSolver,
+    spacing: R,
+    support: R,
+    rest_density: R,
+    speed_of_sound: R,
+    viscosity: R,
+    xsph: R,
+    substeps: u32,
+    max_density_error: R,
+    max_iterations: u32,
+    tank: FluidBox<R>,
+    blocks: Vec<FluidBlock<R>>,
+    emitters: Vec<FluidEmitter<R>>,
+}
+
+impl<R: Real> FluidFields<R> {
+    /// The fields of `desc` but its CFL number.
+    fn of(desc: &FluidDesc<R>) -> Self {
+        Self {
+            solver: desc.solver,
+            spacing: desc.spacing,
+            support: desc.support,
+            rest_density: desc.rest_density,
+            speed_of_sound: desc.speed_of_sound,
+            viscosity: desc.viscosity,
+            xsph: desc.xsph,
+            substeps: desc.substeps,
+            max_density_error: desc.max_density_error,
+            max_iterations: desc.max_iterations,
+            tank: desc.tank,
+            blocks: desc.blocks.clone(),
+            emitters: desc.emitters.clone(),
+        }
+    }
+
+    /// The description with a fixed count of substeps (CFL number 0).
+    fn into_desc(self) -> FluidDesc<R> {
+        let mut desc = FluidDesc::new(self.solver, self.spacing, self.tank);
+        desc.support = self.support;
+        desc.rest_density = self.rest_density;
+        desc.speed_of_sound = self.speed_of_sound;
+        desc.viscosity = self.viscosity;
+        desc.xsph = self.xsph;
+        desc.substeps = self.substeps;
+        desc.max_density_error = self.max_density_error;
+        desc.max_iterations = self.max_iterations;
+        desc.blocks = self.blocks;
+        desc.emitters = self.emitters;
+        desc
     }
 }
 
@@ -91,13 +154,16 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
         additions.push(Addition::Rigid(rigid.clone()));
     }
     if let Some(fluid) = &scene.fluid {
-        additions.push(Addition::Fluid(fluid.clone()));
+        additions.push(Addition::Fluid(FluidFields::of(fluid)));
     }
     if let Some(soft) = &scene.soft {
         additions.push(Addition::Soft(soft.clone()));
     }
     if let Some(joints) = &scene.joints {
         additions.push(Addition::Joints(joints.clone()));
+    }
+    if let Some(fluid) = scene.fluid.as_ref().filter(|f| f.cfl != Fx::ZERO) {
+        additions.push(Addition::FluidCfl(fluid.cfl));
     }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
@@ -152,9 +218,19 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
     for addition in additions {
         match addition {
             Addition::Rigid(rigid) => scene.rigid = Some(rigid),
-            Addition::Fluid(fluid) => scene.fluid = Some(fluid),
+            Addition::Fluid(fluid) => scene.fluid = Some(fluid.into_desc()),
             Addition::Soft(soft) => scene.soft = Some(soft),
             Addition::Joints(joints) => scene.joints = Some(joints),
+            Addition::FluidCfl(cfl) => {
+                let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
+                let Some(fluid) = &mut scene.fluid else {
+                    return not_canonical("a fluid CFL number without a fluid");
+                };
+                if cfl == Fx::ZERO {
+                    return not_canonical("a fluid CFL number of 0 (written by leaving it out)");
+                }
+                fluid.cfl = cfl;
+            }
         }
     }
     Ok(scene)
@@ -169,4 +245,72 @@ pub enum SceneSectionError {
     Trailing(usize),
     /// A value decodes but is not the one encoding this format allows.
     NotCanonical(&'static str),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::builtin_scene;
+
+    /// The built-in dam break, its fluid's substeps adapting at CFL number 0.2.
+    fn adaptive_dam_break() -> Scene<Fx> {
+        let mut scene = builtin_scene::<Fx>("dam_break").expect("a built-in scene");
+        scene.fluid.as_mut().expect("a fluid").cfl = Fx::from_ratio(1, 5);
+        scene
+    }
+
+    /// The section of `scene` with `additions` in place of its own.
+    fn with_additions(scene: &Scene<Fx>, additions: &[Addition<Fx>]) -> Vec<u8> {
+        let mut bare = scene.clone();
+        (bare.rigid, bare.fluid, bare.soft, bare.joints) = (None, None, None, None);
+        let mut bytes = encode_scene(&bare).expect("encodes");
+        bytes.extend(codec::encode(&additions).expect("encodes"));
+        bytes
+    }
+
+    fn rejection(bytes: &[u8]) -> String {
+        match decode_scene(bytes) {
+            Ok(_) => panic!("decoded"),
+            Err((_, SceneSectionError::NotCanonical(what))) => what.to_owned(),
+            Err((_, e)) => panic!("another error: {e:?}"),
+        }
+    }
+
+    #[test]
+    fn a_cfl_number_survives_the_round_trip() {
+        let scene = adaptive_dam_break();
+        let bytes = encode_scene(&scene).expect("encodes");
+        assert_eq!(decode_scene(&bytes).expect("decodes"), scene);
+    }
+
+    #[test]
+    fn a_fixed_count_writes_no_cfl_addition() {
+        let mut scene = adaptive_dam_break();
+        let adaptive = encode_scene(&scene).expect("encodes");
+        scene.fluid.as_mut().expect("a fluid").cfl = Fx::ZERO;
+        let fixed = encode_scene(&scene).expect("encodes");
+        let fluid = FluidFields::of(scene.fluid.as_ref().expect("a fluid"));
+        assert_eq!(fixed, with_additions(&scene, &[Addition::Fluid(fluid)]));
+        // The adaptive scene adds one addition: its count, then the variant and the number.
+        assert_eq!(adaptive.len(), fixed.len() + 4 + 8);
+        assert_eq!(decode_scene(&fixed).expect("decodes"), scene);
+    }
+
+    #[test]
+    fn a_cfl_number_without_a_fluid_is_refused() {
+        let scene = adaptive_dam_break();
+        let bytes = with_additions(&scene, &[Addition::FluidCfl(Fx::from_ratio(1, 5))]);
+        assert!(rejection(&bytes).contains("without a fluid"));
+    }
+
+    #[test]
+    fn a_written_cfl_number_of_zero_is_refused() {
+        let scene = adaptive_dam_break();
+        let fluid = FluidFields::of(scene.fluid.as_ref().expect("a fluid"));
+        let bytes = with_additions(
+            &scene,
+            &[Addition::Fluid(fluid), Addition::FluidCfl(Fx::ZERO)],
+        );
+        assert!(rejection(&bytes).contains("of 0"));
+    }
 }

@@ -32,6 +32,9 @@ pub struct Metrics {
     /// The furthest x of a fluid particle touching the floor layer, from the tank's back
     /// wall, m.
     pub front_x: f64, // ok-det: reporting
+    /// Fluid substeps in the last world substep (adaptive with a CFL number, else the
+    /// scene's count; 0 without a fluid or before its first step).
+    pub fluid_substeps: u32,
     /// Whether the divergence check has seen the energy blow up (see
     /// [`divergence`](super::divergence)); false when the check is off.
     pub diverged: bool,
@@ -51,12 +54,12 @@ pub struct Metrics {
 
 impl Metrics {
     /// The CSV header: the fixed columns, then one column per subsystem figure.
-    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies,max_stretch,mean_stretch,density_error_avg,density_error_max,front_x,joints,max_joint_error";
+    pub const CSV_HEADER: &'static str = "tick,time,kinetic_energy,potential_energy,momentum_x,momentum_y,momentum_z,max_speed,saturations,particles,diverged,max_penetration,awake_bodies,sleeping_bodies,max_stretch,mean_stretch,density_error_avg,density_error_max,front_x,joints,max_joint_error,fluid_substeps";
 
     /// The row as CSV, in [`Metrics::CSV_HEADER`] order.
     pub fn csv_row(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             self.tick,
             self.time,
             self.kinetic_energy,
@@ -77,7 +80,8 @@ impl Metrics {
             self.density_error_max,
             self.front_x,
             self.joints,
-            self.max_joint_error
+            self.max_joint_error,
+            self.fluid_substeps
         )
     }
 

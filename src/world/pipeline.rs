@@ -638,6 +638,7 @@ impl<R: Real> World<R> {
             m.density_error_avg = fm.density_error_avg;
             m.density_error_max = fm.density_error_max;
             m.front_x = fm.front_x;
+            m.fluid_substeps = fm.substeps;
         }
         m
     }
