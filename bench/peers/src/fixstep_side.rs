@@ -1,7 +1,7 @@
 //! fixstep's side: its built-in rigid scenes, and the fluid scenes built from their
 //! description.
 
-use crate::scenes::{FluidRun, FluidScene, RigidRun, Scene};
+use crate::scenes::{FixstepFluid, FluidRun, FluidScene, RigidRun, Scene};
 use crate::time_steps;
 use fixstep::fluid::{FluidBlock, FluidBox, FluidDesc, FluidSolver, FluidSystem};
 use fixstep::math::{Fx, Real, Vec3};
@@ -53,8 +53,8 @@ pub fn run_f64(scene: Scene) -> RigidRun {
     run::<f64>(scene)
 }
 
-/// fixstep's DFSPH on `scene` in `R`, timed after its warm-up steps.
-fn run_fluid<R: Real>(scene: &FluidScene) -> FluidRun {
+/// fixstep's DFSPH on `scene` in `R` with `settings`, timed after its warm-up steps.
+fn run_fluid<R: Real>(scene: &FluidScene, settings: FixstepFluid) -> FluidRun {
     let dx = R::from_f64(f64::from(scene.spacing));
     let corner = |c: [f32; 3]| {
         Vec3::new(
@@ -68,7 +68,9 @@ fn run_fluid<R: Real>(scene: &FluidScene) -> FluidRun {
         max: corner(scene.tank),
     };
     let mut desc = FluidDesc::new(FluidSolver::Dfsph, dx, tank);
-    desc.substeps = scene.fixstep_substeps;
+    desc.substeps = settings.substeps;
+    desc.max_density_error = R::from_f64(f64::from(settings.tolerance));
+    desc.cfl = R::from_f64(f64::from(settings.cfl));
     desc.blocks.push(FluidBlock {
         region: FluidBox {
             min: Vec3::ZERO,
@@ -90,11 +92,11 @@ fn run_fluid<R: Real>(scene: &FluidScene) -> FluidRun {
 }
 
 /// [`run_fluid`] in I32F32.
-pub fn run_fluid_fixed(scene: &FluidScene) -> FluidRun {
-    run_fluid::<Fx>(scene)
+pub fn run_fluid_fixed(scene: &FluidScene, settings: FixstepFluid) -> FluidRun {
+    run_fluid::<Fx>(scene, settings)
 }
 
 /// [`run_fluid`] in `f64`.
-pub fn run_fluid_f64(scene: &FluidScene) -> FluidRun {
-    run_fluid::<f64>(scene)
+pub fn run_fluid_f64(scene: &FluidScene, settings: FixstepFluid) -> FluidRun {
+    run_fluid::<f64>(scene, settings)
 }

@@ -15,9 +15,11 @@
 //!
 //! Fluids (`src/scenes.rs`): salva3d 0.11 (DFSPH, f32) beside fixstep's DFSPH, `water` (a
 //! cube of 20³ particles 1 cm apart settling in a tank) and `dam_break` (Martin & Moyce's
-//! column, 8000 particles), dt = 0.005 s, each engine substepping as its own time-step
-//! control requires. salva3d runs twice: with its default tolerance (mean predicted
-//! compression 5 %) and with fixstep's (0.05 %).
+//! column, 8000 particles), dt = 0.005 s. salva3d takes one substep per step (its CFL
+//! control is off in 0.11) and runs twice: with its default tolerance (mean predicted
+//! compression 5 %) and with fixstep's (0.05 %). fixstep runs at both tolerances too, with
+//! the fixed substep count its time-step limit asks for and, in the dam break, with
+//! adaptive substeps (CFL 0.2).
 //!
 //! Usage: `fixstep-peers [ROUNDS] [SCENE …]`.
 
@@ -27,7 +29,7 @@ mod rapier_side;
 mod salva_side;
 mod scenes;
 
-use scenes::{FLUID_SCENES, FluidRun, FluidScene, RigidRun, SCENES, Scene};
+use scenes::{FIXSTEP_TOLERANCE, FLUID_SCENES, FluidRun, FluidScene, RigidRun, SCENES, Scene};
 use std::time::Instant;
 
 /// One rigid-body engine: builds a scene afresh and runs it.
@@ -153,14 +155,23 @@ fn main() {
     }
 }
 
-/// The rows of `scene`: fixstep I32F32, salva3d at its tolerance and at fixstep's,
-/// fixstep `f64`, interleaved.
+/// The rows of `scene`: fixstep I32F32 with each of its settings, salva3d at its
+/// tolerance and at fixstep's, fixstep `f64` with the first settings, interleaved; ratios
+/// to the first row.
 fn fluid_table(scene: &FluidScene, rounds: usize) {
-    let mut times = [Vec::new(), Vec::new(), Vec::new(), Vec::new()];
-    let mut quality = vec![String::new(); 4];
+    let fixstep = scene.fixstep;
+    let mut names: Vec<String> = fixstep
+        .iter()
+        .map(|f| format!("fixstep I32F32 (DFSPH, {})", f.label()))
+        .collect();
+    names.push("salva3d 0.11 (DFSPH, f32, one substep, its default tolerance 5 %)".into());
+    names.push("salva3d 0.11 (DFSPH, f32, one substep, fixstep's tolerance 0.05 %)".into());
+    names.push(format!("fixstep f64 (same code, {})", fixstep[0].label()));
+    let mut times = vec![Vec::new(); names.len()];
+    let mut quality = vec![String::new(); names.len()];
     let mut counts = (0, 0);
     let elapsed = f64::from(scene.warm_steps + scene.steps) * f64::from(scene.dt);
-    let mut record = |k: usize, run: FluidRun, times: &mut [Vec<f64>; 4]| {
+    let mut record = |k: usize, run: FluidRun, times: &mut [Vec<f64>]| {
         times[k].push(run.ms);
         let compression = 100.0 * quality::mean_compression(scene, &run.positions);
         quality[k] = if scene.name == "dam_break" {
@@ -174,24 +185,23 @@ fn fluid_table(scene: &FluidScene, rounds: usize) {
             format!("mean compression {compression:.3} %")
         };
     };
+    let salva = fixstep.len();
     for _ in 0..rounds {
-        record(0, fixstep_side::run_fluid_fixed(scene), &mut times);
+        for (k, &settings) in fixstep.iter().enumerate() {
+            record(
+                k,
+                fixstep_side::run_fluid_fixed(scene, settings),
+                &mut times,
+            );
+        }
         let (run, fluid, boundary) = salva_side::run(scene, None);
         counts = (fluid, boundary);
-        record(1, run, &mut times);
-        let (run, _, _) = salva_side::run(scene, Some(salva_side::FIXSTEP_TOLERANCE));
-        record(2, run, &mut times);
-        record(3, fixstep_side::run_fluid_f64(scene), &mut times);
+        record(salva, run, &mut times);
+        let (run, _, _) = salva_side::run(scene, Some(FIXSTEP_TOLERANCE));
+        record(salva + 1, run, &mut times);
+        let run = fixstep_side::run_fluid_f64(scene, fixstep[0]);
+        record(salva + 2, run, &mut times);
     }
-    let names = [
-        format!(
-            "fixstep I32F32 (DFSPH, tolerance 0.05 %, {} substeps)",
-            scene.fixstep_substeps
-        ),
-        "salva3d 0.11 (DFSPH, f32, its default tolerance 5 %)".to_string(),
-        "salva3d 0.11 (DFSPH, f32, fixstep's tolerance 0.05 %)".to_string(),
-        "fixstep f64 (same code)".to_string(),
-    ];
     let medians: Vec<f64> = times.iter_mut().map(|t| median(t)).collect();
     for ((name, m), q) in names.iter().zip(&medians).zip(&quality) {
         println!(

@@ -8,10 +8,6 @@ use salva3d::object::interaction_groups::InteractionGroups;
 use salva3d::object::{Boundary, Fluid};
 use salva3d::solver::DFSPHSolver;
 
-/// fixstep's DFSPH tolerance, the mean predicted compression (`FluidDesc::max_density_error`'s
-/// default): 0.05 %.
-pub const FIXSTEP_TOLERANCE: f32 = 0.0005;
-
 fn vectors(points: Vec<[f32; 3]>) -> Vec<Vector<f32>> {
     points
         .into_iter()

@@ -39,11 +39,44 @@ pub const SCENES: [Scene; 5] = [
     },
 ];
 
+/// How fixstep runs a fluid scene: DFSPH's tolerance on the mean predicted compression,
+/// the substeps per step (with a CFL number, the most) and the CFL number of adaptive
+/// substeps (0: the fixed count).
+#[derive(Clone, Copy)]
+pub struct FixstepFluid {
+    pub tolerance: f32,
+    pub substeps: u32,
+    pub cfl: f32,
+}
+
+impl FixstepFluid {
+    /// The settings as the table names them.
+    pub fn label(&self) -> String {
+        let substeps = if self.cfl == 0.0 {
+            format!("{} substeps", self.substeps)
+        } else {
+            format!(
+                "adaptive substeps at CFL {}, at most {}",
+                self.cfl, self.substeps
+            )
+        };
+        format!("tolerance {} %, {substeps}", 100.0 * self.tolerance)
+    }
+}
+
+/// fixstep's tolerance (`FluidDesc::max_density_error`'s default), 0.05 %.
+pub const FIXSTEP_TOLERANCE: f32 = 0.0005;
+
+/// salva3d's default tolerance (`DFSPHSolver::max_density_error`), 5 %.
+pub const SALVA_TOLERANCE: f32 = 0.05;
+
 /// A fluid scene: a block of fluid on the lattice sites of `[0, block]` (m) resting in the
 /// corner of an open tank `[0, tank]` lined with two layers of boundary particles, particles
-/// `spacing` (m) apart; `steps` timed steps of `dt` (s) after `warm_steps`; fixstep takes
-/// `fixstep_substeps` substeps per step (the fewest its time-step limit 0.2 H/u allows, u =
-/// 2 m/s), salva3d chooses its own (CFL 0.4).
+/// `spacing` (m) apart; `steps` timed steps of `dt` (s) after `warm_steps`. fixstep runs once
+/// per entry of `fixstep` (the first is the reference of the ratios and the `f64` run):
+/// the fixed count is the fewest its time-step limit 0.2 H/u allows (u = c/10 = 2 m/s).
+/// salva3d 0.11 takes one substep per step whatever the flow: its CFL control is switched
+/// off (`TimestepManager::compute_substep` returns the whole step).
 pub struct FluidScene {
     pub name: &'static str,
     pub spacing: f32,
@@ -52,7 +85,7 @@ pub struct FluidScene {
     pub dt: f32,
     pub warm_steps: u32,
     pub steps: u32,
-    pub fixstep_substeps: u32,
+    pub fixstep: &'static [FixstepFluid],
 }
 
 /// Martin & Moyce's column width a = 2.25 in, m.
@@ -70,7 +103,18 @@ pub const FLUID_SCENES: [FluidScene; 2] = [
         dt: 0.005,
         warm_steps: 20,
         steps: 10,
-        fixstep_substeps: 3,
+        fixstep: &[
+            FixstepFluid {
+                tolerance: FIXSTEP_TOLERANCE,
+                substeps: 3,
+                cfl: 0.0,
+            },
+            FixstepFluid {
+                tolerance: SALVA_TOLERANCE,
+                substeps: 3,
+                cfl: 0.0,
+            },
+        ],
     },
     // `dam_break`: Martin & Moyce's column, a wide and 2a high at the back wall of a tank
     // 0.3 m long and 0.15 m high, 20 particles across a and 10 deep (8000 particles), as
@@ -84,7 +128,28 @@ pub const FLUID_SCENES: [FluidScene; 2] = [
         dt: 0.005,
         warm_steps: 0,
         steps: 22,
-        fixstep_substeps: 9,
+        fixstep: &[
+            FixstepFluid {
+                tolerance: FIXSTEP_TOLERANCE,
+                substeps: 9,
+                cfl: 0.0,
+            },
+            FixstepFluid {
+                tolerance: FIXSTEP_TOLERANCE,
+                substeps: 9,
+                cfl: 0.2,
+            },
+            FixstepFluid {
+                tolerance: SALVA_TOLERANCE,
+                substeps: 9,
+                cfl: 0.0,
+            },
+            FixstepFluid {
+                tolerance: SALVA_TOLERANCE,
+                substeps: 9,
+                cfl: 0.2,
+            },
+        ],
     },
 ];
 
