@@ -1,13 +1,16 @@
-//! The two sums over a particle's fluid neighbours that every DFSPH iteration repeats,
-//! kept apart so that I32F32 can take a vector kernel with the same bits.
+//! The sums over a particle's fluid neighbours that every substep (XSPH) and every DFSPH
+//! iteration (the other two) repeat, kept apart so that I32F32 can take a vector kernel
+//! with the same bits.
 //!
-//! For fluid particle i and its neighbour entries e = (j, V₀∇ᵢWᵢⱼ) (see
+//! For fluid particle i and its neighbour entries e = (j, V₀Wᵢⱼ, V₀∇ᵢWᵢⱼ) (see
 //! [`neighbours`](super::neighbours)):
 //!
 //! - density rate: Σⱼ (vᵢ − vⱼ)·V₀∇ᵢWᵢⱼ (1/s), each dot product the three rounded products
 //!   added in order, the terms added in entry order;
 //! - pressure push: Σⱼ (kᵢ + kⱼ) V₀∇ᵢWᵢⱼ (m/s²) for the stiffnesses k (m²/s²), each
-//!   component a rounded product, added in entry order.
+//!   component a rounded product, added in entry order;
+//! - smoothing sum: Σⱼ (vⱼ − vᵢ) wᵢⱼ (m/s) with the rounded weight wᵢⱼ = V₀Wᵢⱼ · ρ₀/ρⱼ,
+//!   each component a rounded product, added in entry order.
 //!
 //! # Same bits
 //!
@@ -18,7 +21,8 @@
 //! read (gradients, velocities or stiffnesses) and the longest row, and its result stands
 //! only when those bounds prove that no product and no partial sum, in any order, can leave
 //! the range: then the checked operators of the scalar form saturate nowhere and both give
-//! the exact sums. Otherwise the scalar form runs, saturating and counting as it always
+//! the exact sums (the smoothing sum's weights, themselves products, are checked the same
+//! way). Otherwise the scalar form runs, saturating and counting as it always
 //! does. Other formats and targets run the scalar form only.
 
 #[cfg(target_arch = "x86_64")]
@@ -88,5 +92,39 @@ pub(crate) fn pressure_pushes_scalar<R: Real>(
             push += lists.gradient(e) * (ki + stiffness[j]);
         }
         out.push(push);
+    }
+}
+
+/// Σⱼ (vⱼ − vᵢ) (V₀Wᵢⱼ · ρ₀/ρⱼ) over the fluid neighbours of each particle of `lists`
+/// (m/s), for the inverse densities `inv_density` (ρ₀/ρ), into `out`, one per particle:
+/// XSPH's sum ([`xsph`](super::xsph)).
+pub(crate) fn smoothing_sums<R: Real>(
+    lists: &NeighbourLists<R>,
+    velocities: &[Vec3<R>],
+    inv_density: &[R],
+    out: &mut Vec<Vec3<R>>,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if avx512::smoothing_sums(lists, velocities, inv_density, out) {
+        return;
+    }
+    smoothing_sums_scalar(lists, velocities, inv_density, out);
+}
+
+/// [`smoothing_sums`] with the checked operators, entry after entry.
+pub(crate) fn smoothing_sums_scalar<R: Real>(
+    lists: &NeighbourLists<R>,
+    velocities: &[Vec3<R>],
+    inv_density: &[R],
+    out: &mut Vec<Vec3<R>>,
+) {
+    out.clear();
+    for (i, &vi) in velocities.iter().enumerate().take(lists.len()) {
+        let mut sum = Vec3::ZERO;
+        for e in lists.range(i) {
+            let j = lists.index[e] as usize;
+            sum += (velocities[j] - vi) * (lists.value[e] * inv_density[j]);
+        }
+        out.push(sum);
     }
 }

@@ -1,7 +1,8 @@
 //! XSPH velocity smoothing (Monaghan 1989), the fluid's artificial viscosity.
 
+use super::row_sums;
 use super::system::FluidSystem;
-use crate::math::{Real, Vec3};
+use crate::math::Real;
 
 impl<R: Real> FluidSystem<R> {
     /// vᵢ ← vᵢ + ε Σⱼ (V₀Wᵢⱼ ρ₀/ρⱼ) (vⱼ − vᵢ) over fluid neighbours (m/s): each particle
@@ -17,18 +18,9 @@ impl<R: Real> FluidSystem<R> {
         s.inv_density.clear();
         s.inv_density
             .extend(s.density.iter().map(|&rho| rho.recip()));
-        s.delta.clear();
-        for i in 0..self.positions.len() {
-            let vi = self.velocities[i];
-            let mut sum = Vec3::ZERO;
-            for e in s.fluid.range(i) {
-                let j = s.fluid.index[e] as usize;
-                sum += (self.velocities[j] - vi) * (s.fluid.value[e] * s.inv_density[j]);
-            }
-            s.delta.push(sum * epsilon);
-        }
-        for (v, dv) in self.velocities.iter_mut().zip(&s.delta) {
-            *v += *dv;
+        row_sums::smoothing_sums(&s.fluid, &self.velocities, &s.inv_density, &mut s.delta);
+        for (v, &sum) in self.velocities.iter_mut().zip(&s.delta) {
+            *v += sum * epsilon;
         }
     }
 }

@@ -1,6 +1,11 @@
 //! The row sums in AVX-512F for I32F32: eight neighbour entries of one row side by side,
 //! one `i64` lane each, then the lanes added.
 //!
+//! The smoothing sum's weights w = V₀W · ρ₀/ρⱼ are products too: with V₀W of at most 2ᶜ
+//! and ρ₀/ρ of at most 2ᴰ, when C, D ≤ 61 and C + D − 32 ≤ 61 each weight is the checked
+//! `*`; the kernel then measures the weights it made (bit length A in place of the
+//! gradients' below) for the sum's bound.
+//!
 //! # Exactness
 //!
 //! Every operation is done modulo 2⁶⁴. The kernel ORs together the magnitudes of every
@@ -29,7 +34,7 @@ use core::arch::x86_64::{
 };
 use core::mem::size_of;
 
-use crate::fluid::lanes::{bit_length, magnitude, magnitude_of, product};
+use crate::fluid::lanes::{bit_length, magnitude, magnitude_of, mul, product};
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::{Fx, Real, Vec3};
 
@@ -112,6 +117,63 @@ pub(super) fn pressure_pushes<R: Real>(
             pressure_pushes_kernel::<false>(lists, stiffness, sum_bits, out)
         }
     }
+}
+
+/// [`smoothing_sums`](super::smoothing_sums) with the kernel, under the same conditions
+/// as [`density_rates`].
+#[allow(clippy::ptr_arg)] // `out` is downcast to the `Vec` it grows
+pub(super) fn smoothing_sums<R: Real>(
+    lists: &NeighbourLists<R>,
+    velocities: &[Vec3<R>],
+    inv_density: &[R],
+    out: &mut Vec<Vec3<R>>,
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let (Some(lists), Some(out)) = (
+        (lists as &dyn Any).downcast_ref::<NeighbourLists<Fx>>(),
+        (out as &mut dyn Any).downcast_mut::<Vec<Vec3<Fx>>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slices' types are unchanged.
+    let (velocities, inv_density) = unsafe {
+        (
+            &*(core::ptr::from_ref(velocities) as *const [Vec3<Fx>]),
+            &*(core::ptr::from_ref(inv_density) as *const [Fx]),
+        )
+    };
+    let velocity_bits = bit_length(velocities.iter().fold(0, |bits, v| {
+        bits | magnitude_of(v.x.to_bits())
+            | magnitude_of(v.y.to_bits())
+            | magnitude_of(v.z.to_bits())
+    }));
+    let density_bits = bit_length(
+        inv_density
+            .iter()
+            .fold(0, |bits, d| bits | magnitude_of(d.to_bits())),
+    );
+    let bits = Bits {
+        difference: velocity_bits + 1,
+        density: density_bits,
+    };
+    // SAFETY: AVX-512F was detected just above.
+    unsafe {
+        if bits.difference <= 31 {
+            smoothing_sums_kernel::<true>(lists, velocities, inv_density, bits, out)
+        } else {
+            smoothing_sums_kernel::<false>(lists, velocities, inv_density, bits, out)
+        }
+    }
+}
+
+/// Bit lengths of what the smoothing sum reads: velocity differences (at most
+/// 2^`difference`) and inverse densities (at most 2^`density`).
+#[derive(Clone, Copy)]
+struct Bits {
+    difference: u32,
+    density: u32,
 }
 
 /// Whether products and row sums with operands of `a` and `b` bits (see the module
@@ -266,4 +328,77 @@ unsafe fn pressure_pushes_kernel<const NARROW: bool>(
     }
     let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
     within_bound(a, sum_bits, longest)
+}
+
+/// The smoothing sum kernel, for velocity differences below 2^`bits.difference` (32-bit
+/// signed numbers when `NARROW`): returns false when a bound fails (`out` then holds
+/// nothing of use).
+///
+/// # Safety
+/// The processor must have AVX-512F; with `NARROW`, `bits.difference` must be at most 31.
+#[target_feature(enable = "avx512f")]
+unsafe fn smoothing_sums_kernel<const NARROW: bool>(
+    lists: &NeighbourLists<Fx>,
+    velocities: &[Vec3<Fx>],
+    inv_density: &[Fx],
+    bits: Bits,
+    out: &mut Vec<Vec3<Fx>>,
+) -> bool {
+    out.clear();
+    let zero = _mm512_setzero_si512();
+    let velocity_base = velocities.as_ptr().cast::<i64>();
+    let density_base = inv_density.as_ptr().cast::<i64>();
+    let points = _mm512_set1_epi64(velocities.len().min(inv_density.len()) as i64);
+    let entries = lists.index.len().min(lists.value.len());
+    let mut value_bits = zero;
+    let mut weight_bits = zero;
+    let mut longest = 0;
+    for (i, vi) in velocities.iter().enumerate().take(lists.len()) {
+        let range = lists.range(i);
+        if range.end > entries {
+            return false;
+        }
+        longest = longest.max(range.len());
+        let vi = [vi.x, vi.y, vi.z].map(|c| _mm512_set1_epi64(c.to_bits()));
+        let mut sum = [zero; 3];
+        let mut first = range.start;
+        while first < range.end {
+            let count = (range.end - first).min(8);
+            let mask = ((1u16 << count) - 1) as __mmask8;
+            // SAFETY: the masked loads read only the `count` entries from `first`, which
+            // exist (the row ends within the entries).
+            let (index32, value) = unsafe {
+                (
+                    _mm512_maskz_loadu_epi32(
+                        u16::from(mask),
+                        lists.index.as_ptr().add(first).cast(),
+                    ),
+                    _mm512_maskz_loadu_epi64(mask, lists.value.as_ptr().add(first).cast()),
+                )
+            };
+            let index = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
+            if _mm512_mask_cmplt_epu64_mask(mask, index, points) != mask {
+                return false;
+            }
+            // SAFETY: every index in use is below both slices' lengths (checked above).
+            let inverse =
+                unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, index, density_base) };
+            value_bits = _mm512_or_si512(value_bits, magnitude(value));
+            let weight = mul(value, inverse);
+            weight_bits = _mm512_or_si512(weight_bits, magnitude(weight));
+            let words = _mm512_add_epi64(_mm512_slli_epi64::<1>(index), index);
+            for (c, (s, vi)) in sum.iter_mut().zip(vi).enumerate() {
+                let at = _mm512_add_epi64(words, _mm512_set1_epi64(c as i64));
+                // SAFETY: every index in use is below `velocities.len()` (checked above).
+                let vj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, at, velocity_base) };
+                *s = _mm512_add_epi64(*s, product::<NARROW>(weight, _mm512_sub_epi64(vj, vi)));
+            }
+            first += count;
+        }
+        let [x, y, z] = sum.map(|s| Fx::from_bits(_mm512_reduce_add_epi64(s)));
+        out.push(Vec3::new(x, y, z));
+    }
+    let c = bit_length(_mm512_reduce_or_epi64(value_bits) as u64);
+    let a = bit_length(_mm512_reduce_or_epi64(weight_bits) as u64);
+    within_bound(c, bits.density, 1) && within_bound(a, bits.difference, longest)
 }

@@ -2,7 +2,10 @@
 //! for bit and saturation for saturation, on random rows at everyday magnitudes, near the
 //! kernel's bound and at the ends of the range.
 
-use super::{density_rates, density_rates_scalar, pressure_pushes, pressure_pushes_scalar};
+use super::{
+    density_rates, density_rates_scalar, pressure_pushes, pressure_pushes_scalar, smoothing_sums,
+    smoothing_sums_scalar,
+};
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Vec3};
@@ -40,7 +43,7 @@ fn vector(rng: &mut Pcg32, bits: u32, extremes: bool) -> Vec3<Fx> {
 }
 
 /// `n` rows of 0 to `longest` entries (every length mod 8 occurs), random neighbours below
-/// `n`, gradients of `gradient_bits` bits.
+/// `n`, kernel values and gradients of `gradient_bits` bits.
 fn lists(
     rng: &mut Pcg32,
     n: usize,
@@ -53,7 +56,7 @@ fn lists(
     for _ in 0..n {
         for _ in 0..rng.below(longest + 1) {
             lists.index.push(rng.below(n as u32));
-            lists.value.push(Fx::from_bits(0));
+            lists.value.push(value(rng, gradient_bits, extremes));
             let g = vector(rng, gradient_bits, extremes);
             for (list, c) in lists.gradients.iter_mut().zip([g.x, g.y, g.z]) {
                 list.push(c);
@@ -64,8 +67,9 @@ fn lists(
     lists
 }
 
-/// Compares both sums on one random case; returns whether the dispatched results came from
-/// the kernel (where it exists) rather than from the scalar fallback.
+/// Compares the three sums on one random case (inverse densities of the stiffnesses' bits);
+/// returns whether the dispatched results came from the kernels (where they exist) rather
+/// than from the scalar fallback.
 fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) -> bool {
     let mut rng = Pcg32::new(seed, 7);
     let lists = lists(&mut rng, n, longest, bits[0], extremes);
@@ -93,14 +97,31 @@ fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) ->
         fast_count, slow_count,
         "pressure push saturations, seed {seed}"
     );
+
+    let inv_density = &stiffness;
+    let (mut fast, mut slow) = (Vec::new(), Vec::new());
+    let ((), fast_count) =
+        count_saturations(|| smoothing_sums(&lists, &velocities, inv_density, &mut fast));
+    let ((), slow_count) = count_saturations(|| {
+        smoothing_sums_scalar(&lists, &velocities, inv_density, &mut slow);
+    });
+    assert_eq!(fast, slow, "smoothing sums, seed {seed}");
+    assert_eq!(
+        fast_count, slow_count,
+        "smoothing sum saturations, seed {seed}"
+    );
     kernel_takes(&lists, &velocities, &stiffness)
 }
 
-/// Whether both kernels take the case (not falling back to the scalar form).
+/// Whether the three kernels take the case (not falling back to the scalar form).
 #[cfg(target_arch = "x86_64")]
 fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: &[Fx]) -> bool {
-    super::avx512::density_rates(lists, velocities, &mut Vec::new())
-        && super::avx512::pressure_pushes(lists, stiffness, &mut Vec::new())
+    let takes = [
+        super::avx512::density_rates(lists, velocities, &mut Vec::new()),
+        super::avx512::pressure_pushes(lists, stiffness, &mut Vec::new()),
+        super::avx512::smoothing_sums(lists, velocities, stiffness, &mut Vec::new()),
+    ];
+    takes.iter().all(|&t| t)
 }
 
 #[cfg(not(target_arch = "x86_64"))]
