@@ -109,20 +109,17 @@ impl<R: Real> FluidSystem<R> {
     }
 
     /// αᵢ = (1/Δt) / (Δt max(Dᵢ, D₀/16)) into `factor`, and
-    /// Σ_b V₀∇W_ib into `wall_gradient`.
+    /// Σ_b V₀∇W_ib into `wall_gradient`. The fluid's gradient sums pass through `delta`
+    /// and `rate`, which the solves overwrite.
     fn compute_factors(&mut self, dt: R) {
         let inv_dt = dt.recip();
         let floor = self.settings.kernel.lattice_gradient_norm * R::from_ratio(1, 16);
         let s = &mut self.scratch;
+        row_sums::gradient_sums(&s.fluid, &mut s.delta, &mut s.rate);
         s.factor.clear();
         s.wall_gradient.clear();
         for i in 0..self.positions.len() {
-            let mut sum = Vec3::ZERO;
-            let mut squares = R::ZERO;
-            for g in s.fluid.range(i).map(|e| s.fluid.gradient(e)) {
-                sum += g;
-                squares += g.length_squared();
-            }
+            let (sum, squares) = (s.delta[i], s.rate[i]);
             let mut wall = Vec3::ZERO;
             for g in s.walls.range(i).map(|e| s.walls.gradient(e)) {
                 wall += g;

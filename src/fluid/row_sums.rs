@@ -1,5 +1,5 @@
-//! The sums over a particle's fluid neighbours that every substep (XSPH) and every DFSPH
-//! iteration (the other two) repeat, kept apart so that I32F32 can take a vector kernel
+//! The sums over a particle's fluid neighbours that every substep (XSPH, DFSPH's factors)
+//! and every DFSPH iteration (the other two) repeat, kept apart so that I32F32 can take a vector kernel
 //! with the same bits.
 //!
 //! For fluid particle i and its neighbour entries e = (j, V₀Wᵢⱼ, V₀∇ᵢWᵢⱼ) (see
@@ -10,7 +10,9 @@
 //! - pressure push: Σⱼ (kᵢ + kⱼ) V₀∇ᵢWᵢⱼ (m/s²) for the stiffnesses k (m²/s²), each
 //!   component a rounded product, added in entry order;
 //! - smoothing sum: Σⱼ (vⱼ − vᵢ) wᵢⱼ (m/s) with the rounded weight wᵢⱼ = V₀Wᵢⱼ · ρ₀/ρⱼ,
-//!   each component a rounded product, added in entry order.
+//!   each component a rounded product, added in entry order;
+//! - gradient sums, once per DFSPH substep: Σⱼ V₀∇ᵢWᵢⱼ (1/m) and Σⱼ |V₀∇ᵢWᵢⱼ|² (1/m²),
+//!   each square the three rounded products added in order.
 //!
 //! # Same bits
 //!
@@ -126,5 +128,40 @@ pub(crate) fn smoothing_sums_scalar<R: Real>(
             sum += (velocities[j] - vi) * (lists.value[e] * inv_density[j]);
         }
         out.push(sum);
+    }
+}
+
+/// Σⱼ V₀∇ᵢWᵢⱼ (1/m) into `sums` and Σⱼ |V₀∇ᵢWᵢⱼ|² (1/m²) into `squares` over the fluid
+/// neighbours of each particle of `lists`, one each per particle: DFSPH's factor
+/// ([`dfsph`](super::dfsph)).
+pub(crate) fn gradient_sums<R: Real>(
+    lists: &NeighbourLists<R>,
+    sums: &mut Vec<Vec3<R>>,
+    squares: &mut Vec<R>,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if avx512::gradient_sums(lists, sums, squares) {
+        return;
+    }
+    gradient_sums_scalar(lists, sums, squares);
+}
+
+/// [`gradient_sums`] with the checked operators, entry after entry.
+pub(crate) fn gradient_sums_scalar<R: Real>(
+    lists: &NeighbourLists<R>,
+    sums: &mut Vec<Vec3<R>>,
+    squares: &mut Vec<R>,
+) {
+    sums.clear();
+    squares.clear();
+    for i in 0..lists.len() {
+        let mut sum = Vec3::ZERO;
+        let mut square = R::ZERO;
+        for g in lists.range(i).map(|e| lists.gradient(e)) {
+            sum += g;
+            square += g.length_squared();
+        }
+        sums.push(sum);
+        squares.push(square);
     }
 }

@@ -168,6 +168,28 @@ pub(super) fn smoothing_sums<R: Real>(
     }
 }
 
+/// [`gradient_sums`](super::gradient_sums) with the kernel, under the same conditions as
+/// [`density_rates`].
+#[allow(clippy::ptr_arg)] // `sums` and `squares` are downcast to the `Vec`s they grow
+pub(super) fn gradient_sums<R: Real>(
+    lists: &NeighbourLists<R>,
+    sums: &mut Vec<Vec3<R>>,
+    squares: &mut Vec<R>,
+) -> bool {
+    if !std::arch::is_x86_feature_detected!("avx512f") {
+        return false;
+    }
+    let (Some(lists), Some(sums), Some(squares)) = (
+        (lists as &dyn Any).downcast_ref::<NeighbourLists<Fx>>(),
+        (sums as &mut dyn Any).downcast_mut::<Vec<Vec3<Fx>>>(),
+        (squares as &mut dyn Any).downcast_mut::<Vec<Fx>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: AVX-512F was detected just above.
+    unsafe { gradient_sums_kernel(lists, sums, squares) }
+}
+
 /// Bit lengths of what the smoothing sum reads: velocity differences (at most
 /// 2^`difference`) and inverse densities (at most 2^`density`).
 #[derive(Clone, Copy)]
@@ -401,4 +423,54 @@ unsafe fn smoothing_sums_kernel<const NARROW: bool>(
     let c = bit_length(_mm512_reduce_or_epi64(value_bits) as u64);
     let a = bit_length(_mm512_reduce_or_epi64(weight_bits) as u64);
     within_bound(c, bits.density, 1) && within_bound(a, bits.difference, longest)
+}
+
+/// The gradient sums kernel: returns false when the bound fails (`sums` and `squares` then
+/// hold nothing of use). With gradients of at most 2ᴬ in rows of at most L entries, the
+/// squares' sum is bounded as a row sum of 3L products of A-bit operands, and the
+/// gradients' sum needs A + ⌈log₂ L⌉ ≤ 61.
+///
+/// # Safety
+/// The processor must have AVX-512F.
+#[target_feature(enable = "avx512f")]
+unsafe fn gradient_sums_kernel(
+    lists: &NeighbourLists<Fx>,
+    sums: &mut Vec<Vec3<Fx>>,
+    squares: &mut Vec<Fx>,
+) -> bool {
+    sums.clear();
+    squares.clear();
+    let zero = _mm512_setzero_si512();
+    let entries = lists.gradients.iter().map(Vec::len).min().unwrap_or(0);
+    let mut gradient_bits = zero;
+    let mut longest = 0;
+    for i in 0..lists.len() {
+        let range = lists.range(i);
+        if range.end > entries {
+            return false;
+        }
+        longest = longest.max(range.len());
+        let mut sum = [zero; 3];
+        let mut square = zero;
+        let mut first = range.start;
+        while first < range.end {
+            let count = (range.end - first).min(8);
+            let mask = ((1u16 << count) - 1) as __mmask8;
+            for (s, g) in sum.iter_mut().zip(&lists.gradients) {
+                // SAFETY: the masked load reads only the `count` entries from `first`, which
+                // exist (the row ends within the entries).
+                let g = unsafe { _mm512_maskz_loadu_epi64(mask, g.as_ptr().add(first).cast()) };
+                gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
+                *s = _mm512_add_epi64(*s, g);
+                square = _mm512_add_epi64(square, mul(g, g));
+            }
+            first += count;
+        }
+        let [x, y, z] = sum.map(|s| Fx::from_bits(_mm512_reduce_add_epi64(s)));
+        sums.push(Vec3::new(x, y, z));
+        squares.push(Fx::from_bits(_mm512_reduce_add_epi64(square)));
+    }
+    let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
+    let sum_bits = usize::BITS - longest.max(1).saturating_sub(1).leading_zeros();
+    within_bound(a, a, 3 * longest) && a + sum_bits <= MAX_OPERAND_BITS
 }

@@ -3,8 +3,8 @@
 //! kernel's bound and at the ends of the range.
 
 use super::{
-    density_rates, density_rates_scalar, pressure_pushes, pressure_pushes_scalar, smoothing_sums,
-    smoothing_sums_scalar,
+    density_rates, density_rates_scalar, gradient_sums, gradient_sums_scalar, pressure_pushes,
+    pressure_pushes_scalar, smoothing_sums, smoothing_sums_scalar,
 };
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::saturation::count_saturations;
@@ -67,7 +67,7 @@ fn lists(
     lists
 }
 
-/// Compares the three sums on one random case (inverse densities of the stiffnesses' bits);
+/// Compares the four sums on one random case (inverse densities of the stiffnesses' bits);
 /// returns whether the dispatched results came from the kernels (where they exist) rather
 /// than from the scalar fallback.
 fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) -> bool {
@@ -110,16 +110,27 @@ fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) ->
         fast_count, slow_count,
         "smoothing sum saturations, seed {seed}"
     );
+
+    let (mut fast, mut slow) = ((Vec::new(), Vec::new()), (Vec::new(), Vec::new()));
+    let ((), fast_count) = count_saturations(|| gradient_sums(&lists, &mut fast.0, &mut fast.1));
+    let ((), slow_count) =
+        count_saturations(|| gradient_sums_scalar(&lists, &mut slow.0, &mut slow.1));
+    assert_eq!(fast, slow, "gradient sums, seed {seed}");
+    assert_eq!(
+        fast_count, slow_count,
+        "gradient sum saturations, seed {seed}"
+    );
     kernel_takes(&lists, &velocities, &stiffness)
 }
 
-/// Whether the three kernels take the case (not falling back to the scalar form).
+/// Whether the four kernels take the case (not falling back to the scalar form).
 #[cfg(target_arch = "x86_64")]
 fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: &[Fx]) -> bool {
     let takes = [
         super::avx512::density_rates(lists, velocities, &mut Vec::new()),
         super::avx512::pressure_pushes(lists, stiffness, &mut Vec::new()),
         super::avx512::smoothing_sums(lists, velocities, stiffness, &mut Vec::new()),
+        super::avx512::gradient_sums(lists, &mut Vec::new(), &mut Vec::new()),
     ];
     takes.iter().all(|&t| t)
 }
