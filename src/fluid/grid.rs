@@ -158,7 +158,7 @@ impl<R: Real> CellGrid<R> {
     /// for a span of 2), the rows whose nearest y and z distances to p already reach ρ are
     /// skipped, and each remaining row is trimmed at both ends the same way along x. Cells
     /// come in ascending index, points in ascending index within each cell: one slice per
-    /// row, whose cells are contiguous. Distances are measured in radii (scaled before
+    /// row, whose cells are contiguous, and none for a row whose cells are empty. Distances are measured in radii (scaled before
     /// squaring, once per cell coordinate) and compared with 1 + 2⁻⁸, so rounding never
     /// skips a cell it must visit.
     #[inline]
@@ -215,7 +215,9 @@ impl<R: Real> CellGrid<R> {
                 let row = self.cell_index([0, y, z]);
                 let first = self.start[(row + first_x) as usize] as usize;
                 let last = self.start[(row + last_x) as usize + 1] as usize;
-                visit(&self.entries[first..last]);
+                if first < last {
+                    visit(&self.entries[first..last]);
+                }
             }
         }
     }

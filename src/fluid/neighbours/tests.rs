@@ -165,6 +165,18 @@ fn a_lattice_with_pairs_on_the_support_matches() {
 }
 
 #[test]
+fn a_dense_cluster_matches() {
+    // 2500 points in a 2 cm cube, cells 5 mm wide: about 40 points per cell, so that the
+    // grid rows the vector search copies end to end hold many registers' worth of points.
+    let points: Vec<_> = random(2500, 21)
+        .into_iter()
+        .map(|p| p * Fx::from_ratio(1, 5))
+        .collect();
+    let taken = compare(&points, &points, Fx::from_ratio(5, 1000), true);
+    assert_eq!(taken, kernels_present());
+}
+
+#[test]
 fn points_beyond_the_grid_and_the_bounds_match() {
     let mut points = random(400, 9);
     points.push(Vec3::from_f64(-0.3, 0.0, 0.02));
