@@ -169,6 +169,62 @@ impl<R: Real> CellGrid<R> {
         span: u32,
         mut visit: impl FnMut(&[u32]),
     ) {
+        self.for_each_row_within(p, inv_radius, span, |cells| {
+            let points = self.points_in(cells);
+            if !points.is_empty() {
+                visit(points);
+            }
+        });
+    }
+
+    /// [`CellGrid::for_each_within`] in this grid and in `other`, which has the same cells
+    /// ([`CellGrid::same_cells`]), at once: `visit(0, points)` for this grid's points of a
+    /// row, then `visit(1, points)` for `other`'s, row by row. Each grid's slices are those
+    /// its own [`CellGrid::for_each_within`] gives, in the same order; the cells, the gaps
+    /// and the rows within reach, which depend on the cells alone, are found once.
+    #[inline]
+    pub fn for_each_within_both(
+        &self,
+        other: &Self,
+        p: Vec3<R>,
+        inv_radius: R,
+        span: u32,
+        mut visit: impl FnMut(usize, &[u32]),
+    ) {
+        self.for_each_row_within(p, inv_radius, span, |cells| {
+            for (k, grid) in [self, other].into_iter().enumerate() {
+                let points = grid.points_in(cells.clone());
+                if !points.is_empty() {
+                    visit(k, points);
+                }
+            }
+        });
+    }
+
+    /// Whether `other` has the same cells (edges along each axis) as this grid, so that
+    /// a cell index means the same cell in both.
+    pub fn same_cells(&self, other: &Self) -> bool {
+        self.edges == other.edges
+    }
+
+    /// The points of the consecutive cells `cells`.
+    #[inline(always)]
+    fn points_in(&self, cells: core::ops::Range<u32>) -> &[u32] {
+        let first = self.start[cells.start as usize] as usize;
+        let last = self.start[cells.end as usize] as usize;
+        &self.entries[first..last]
+    }
+
+    /// The rows of cells that [`CellGrid::for_each_within`] visits, as ranges of cell
+    /// indices, in ascending order.
+    #[inline(always)]
+    fn for_each_row_within(
+        &self,
+        p: Vec3<R>,
+        inv_radius: R,
+        span: u32,
+        mut visit: impl FnMut(core::ops::Range<u32>),
+    ) {
         let span = span.min(MAX_SPAN);
         let c = self.coords(p);
         let lo = c.map(|v| v.saturating_sub(span));
@@ -213,11 +269,7 @@ impl<R: Real> CellGrid<R> {
                     last_x -= 1;
                 }
                 let row = self.cell_index([0, y, z]);
-                let first = self.start[(row + first_x) as usize] as usize;
-                let last = self.start[(row + last_x) as usize + 1] as usize;
-                if first < last {
-                    visit(&self.entries[first..last]);
-                }
+                visit(row + first_x..row + last_x + 1);
             }
         }
     }

@@ -188,6 +188,46 @@ fn points_beyond_the_grid_and_the_bounds_match() {
     assert!(!compare(&points, &points, Fx::from_ratio(5, 1000), true));
 }
 
+#[test]
+fn both_searches_in_one_walk_match_two_scalar_searches() {
+    let spacing = Fx::from_ratio(5, 1000);
+    let kernel = Kernel::<Fx>::calibrated(spacing, Fx::TWO);
+    let tenth = Vec3::splat(Fx::from_ratio(1, 10));
+    for seed in 0..4 {
+        let fluid = random(1200, seed);
+        // Boundary points: a dense random cloud, and a lattice plane through it whose
+        // points lie on cell edges, so that neither grid's rows are the other's.
+        let mut boundary = random(2000, seed + 50);
+        for j in 0..20 {
+            for i in 0..20 {
+                let at = |k: i32| spacing * Fx::from_int(k);
+                boundary.push(Vec3::new(at(i), at(j), Fx::from_ratio(1, 20)));
+            }
+        }
+        let mut grid = CellGrid::new(Vec3::ZERO, tenth, kernel.support);
+        grid.fill(&fluid);
+        // The same cells, then other cells (the walk cannot be shared).
+        for lower in [Vec3::ZERO, Vec3::splat(Fx::from_ratio(-3, 1000))] {
+            let mut boundary_grid = CellGrid::new(lower, tenth, kernel.support);
+            boundary_grid.fill(&boundary);
+            let (mut fast, mut fast_walls) = (NeighbourLists::default(), NeighbourLists::default());
+            NeighbourLists::build_both(
+                [&mut fast, &mut fast_walls],
+                &fluid,
+                &grid,
+                (&boundary, &boundary_grid),
+                &kernel,
+            );
+            let (mut slow, mut slow_walls) = (NeighbourLists::default(), NeighbourLists::default());
+            slow.build_scalar(&fluid, &fluid, &grid, &kernel, true);
+            slow_walls.build_scalar(&fluid, &boundary, &boundary_grid, &kernel, false);
+            assert_same(&fast, &slow);
+            assert_same(&fast_walls, &slow_walls);
+            assert!(!slow_walls.index.is_empty());
+        }
+    }
+}
+
 /// The kernel's square root against `Fx::sqrt` over [0, 1): random values, and the values
 /// around every square and every rounding midpoint of a sample of roots.
 #[cfg(target_arch = "x86_64")]
