@@ -158,9 +158,9 @@ impl<R: Real> CellGrid<R> {
     /// for a span of 2), the rows whose nearest y and z distances to p already reach ρ are
     /// skipped, and each remaining row is trimmed at both ends the same way along x. Cells
     /// come in ascending index, points in ascending index within each cell: one slice per
-    /// row, whose cells are contiguous, and none for a row whose cells are empty. Distances are measured in radii (scaled before
-    /// squaring, once per cell coordinate) and compared with 1 + 2⁻⁸, so rounding never
-    /// skips a cell it must visit.
+    /// row, whose cells are contiguous, and none for a row whose cells are empty.
+    /// Distances are measured in radii (scaled before squaring, once per cell coordinate)
+    /// and compared with 1 + 2⁻⁸, so rounding never skips a cell it must visit.
     #[inline]
     pub fn for_each_within(
         &self,
@@ -201,10 +201,10 @@ impl<R: Real> CellGrid<R> {
         });
     }
 
-    /// Whether `other` has the same cells (edges along each axis) as this grid, so that
-    /// a cell index means the same cell in both.
+    /// Whether `other` has the same cells (width and edges along each axis) as this grid,
+    /// so that a cell index means the same cell in both and a search visits the same ones.
     pub fn same_cells(&self, other: &Self) -> bool {
-        self.edges == other.edges
+        self.size == other.size && self.edges == other.edges
     }
 
     /// The points of the consecutive cells `cells`.
