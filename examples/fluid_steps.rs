@@ -10,7 +10,7 @@
 //! Δt = 5 ms). TOLERANCE sets the DFSPH tolerance on the mean density error (default
 //! 0.0005) and SOUND the speed of sound, m/s (default 20; the time-step limit allows one
 //! DFSPH substep of 5 ms at 1 cm spacing from SOUND = 4 down). `dam` runs DFSPH on
-//! Martin & Moyce's column with N particles across its width and N/2 deep (2·N²·N/2
+//! Martin & Moyce's column with N particles across its width, 2N up and N/2 deep (N³
 //! particles) instead of the cube: `dam 20 200 9 0 22 fx 0.05` is the peer benchmark's
 //! `dam_break` (8000 particles, the whole collapse from the start) at a loose tolerance.
 
