@@ -1,14 +1,18 @@
-//! Steps the benchmark's fluid (`presets::cube`) and prints the mean time per step and the
-//! solver's iterations, for profiling (`perf record ./target/release/examples/fluid_steps`).
-//! The benchmark figures come from `cargo bench --bench fluid`, not from here.
+//! Steps the benchmark's fluid (`presets::cube`) or a dam break (`presets::dam_break`) and
+//! prints the mean time per step and the solver's iterations, for profiling
+//! (`perf record ./target/release/examples/fluid_steps`). The benchmark figures come from
+//! `cargo bench --bench fluid`, not from here.
 //!
-//! Usage: `cargo run --release --example fluid_steps [dfsph|wcsph] [N] [RATE] [SUBSTEPS]
-//! [WARM] [STEPS] [fx|f64] [TOLERANCE] [SOUND]`: N³ particles, steps of 1/RATE s in
-//! SUBSTEPS fluid substeps, WARM steps untimed, then STEPS timed (default
+//! Usage: `cargo run --release --example fluid_steps [dfsph|wcsph|dam] [N] [RATE]
+//! [SUBSTEPS] [WARM] [STEPS] [fx|f64] [TOLERANCE] [SOUND]`: N³ particles, steps of 1/RATE s
+//! in SUBSTEPS fluid substeps, WARM steps untimed, then STEPS timed (default
 //! `dfsph 20 200 3 20 10 fx`: the DFSPH case of the benchmark, 8000 particles at
 //! Δt = 5 ms). TOLERANCE sets the DFSPH tolerance on the mean density error (default
 //! 0.0005) and SOUND the speed of sound, m/s (default 20; the time-step limit allows one
-//! DFSPH substep of 5 ms at 1 cm spacing from SOUND = 4 down).
+//! DFSPH substep of 5 ms at 1 cm spacing from SOUND = 4 down). `dam` runs DFSPH on
+//! Martin & Moyce's column with N particles across its width, 2N up and N/2 deep (N³
+//! particles) instead of the cube: `dam 20 200 9 0 22 fx 0.05` is the peer benchmark's
+//! `dam_break` (8000 particles, the whole collapse from the start) at a loose tolerance.
 
 use std::time::{Duration, Instant};
 
@@ -18,6 +22,8 @@ use fixstep::math::{Fx, Real, Vec3};
 /// The command line's settings.
 struct Run {
     solver: FluidSolver,
+    /// The dam break instead of the cube.
+    dam: bool,
     n: u32,
     rate: i64,
     substeps: u32,
@@ -30,7 +36,13 @@ struct Run {
 fn run<R: Real>(r: &Run) {
     let dt = R::from_ratio(1, r.rate);
     let gravity = Vec3::new(R::ZERO, R::from_f64(-9.81), R::ZERO);
-    let mut desc = presets::cube::<R>(r.n, r.solver, r.substeps);
+    let mut desc = if r.dam {
+        let mut desc = presets::dam_break::<R>(r.n, r.n / 2, r.solver);
+        desc.substeps = r.substeps;
+        desc
+    } else {
+        presets::cube::<R>(r.n, r.solver, r.substeps)
+    };
     if let Some(tolerance) = r.tolerance {
         desc.max_density_error = R::from_f64(tolerance);
     }
@@ -90,12 +102,14 @@ fn main() {
             })
         })
     };
-    let solver = match arg(0, "dfsph").as_str() {
+    let scene = arg(0, "dfsph");
+    let solver = match scene.as_str() {
         "wcsph" => FluidSolver::Wcsph,
         _ => FluidSolver::Dfsph,
     };
     let r = Run {
         solver,
+        dam: scene == "dam",
         n: number(1, "20"),
         rate: i64::from(number(2, "200")),
         substeps: number(3, "3"),

@@ -158,9 +158,9 @@ impl<R: Real> CellGrid<R> {
     /// for a span of 2), the rows whose nearest y and z distances to p already reach ρ are
     /// skipped, and each remaining row is trimmed at both ends the same way along x. Cells
     /// come in ascending index, points in ascending index within each cell: one slice per
-    /// row, whose cells are contiguous. Distances are measured in radii (scaled before
-    /// squaring, once per cell coordinate) and compared with 1 + 2⁻⁸, so rounding never
-    /// skips a cell it must visit.
+    /// row, whose cells are contiguous, and none for a row whose cells are empty.
+    /// Distances are measured in radii (scaled before squaring, once per cell coordinate)
+    /// and compared with 1 + 2⁻⁸, so rounding never skips a cell it must visit.
     #[inline]
     pub fn for_each_within(
         &self,
@@ -168,6 +168,62 @@ impl<R: Real> CellGrid<R> {
         inv_radius: R,
         span: u32,
         mut visit: impl FnMut(&[u32]),
+    ) {
+        self.for_each_row_within(p, inv_radius, span, |cells| {
+            let points = self.points_in(cells);
+            if !points.is_empty() {
+                visit(points);
+            }
+        });
+    }
+
+    /// [`CellGrid::for_each_within`] in this grid and in `other`, which has the same cells
+    /// ([`CellGrid::same_cells`]), at once: `visit(0, points)` for this grid's points of a
+    /// row, then `visit(1, points)` for `other`'s, row by row. Each grid's slices are those
+    /// its own [`CellGrid::for_each_within`] gives, in the same order; the cells, the gaps
+    /// and the rows within reach, which depend on the cells alone, are found once.
+    #[inline]
+    pub fn for_each_within_both(
+        &self,
+        other: &Self,
+        p: Vec3<R>,
+        inv_radius: R,
+        span: u32,
+        mut visit: impl FnMut(usize, &[u32]),
+    ) {
+        self.for_each_row_within(p, inv_radius, span, |cells| {
+            for (k, grid) in [self, other].into_iter().enumerate() {
+                let points = grid.points_in(cells.clone());
+                if !points.is_empty() {
+                    visit(k, points);
+                }
+            }
+        });
+    }
+
+    /// Whether `other` has the same cells (width and edges along each axis) as this grid,
+    /// so that a cell index means the same cell in both and a search visits the same ones.
+    pub fn same_cells(&self, other: &Self) -> bool {
+        self.size == other.size && self.edges == other.edges
+    }
+
+    /// The points of the consecutive cells `cells`.
+    #[inline(always)]
+    fn points_in(&self, cells: core::ops::Range<u32>) -> &[u32] {
+        let first = self.start[cells.start as usize] as usize;
+        let last = self.start[cells.end as usize] as usize;
+        &self.entries[first..last]
+    }
+
+    /// The rows of cells that [`CellGrid::for_each_within`] visits, as ranges of cell
+    /// indices, in ascending order.
+    #[inline(always)]
+    fn for_each_row_within(
+        &self,
+        p: Vec3<R>,
+        inv_radius: R,
+        span: u32,
+        mut visit: impl FnMut(core::ops::Range<u32>),
     ) {
         let span = span.min(MAX_SPAN);
         let c = self.coords(p);
@@ -213,9 +269,7 @@ impl<R: Real> CellGrid<R> {
                     last_x -= 1;
                 }
                 let row = self.cell_index([0, y, z]);
-                let first = self.start[(row + first_x) as usize] as usize;
-                let last = self.start[(row + last_x) as usize + 1] as usize;
-                visit(&self.entries[first..last]);
+                visit(row + first_x..row + last_x + 1);
             }
         }
     }

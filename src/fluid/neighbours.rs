@@ -84,6 +84,32 @@ impl<R: Real> NeighbourLists<R> {
         self.build_scalar(queries, points, grid, kernel, skip_self);
     }
 
+    /// [`NeighbourLists::build`] of `fluid`, the neighbours of the `positions` among
+    /// themselves (sorted into `grid`, each particle skipping itself), and of `walls`,
+    /// their neighbours among the `boundary` points (sorted into `boundary_grid`): the
+    /// same lists. Where the vector search runs and both grids have the same cells, one
+    /// walk of the cells serves both searches (the cells around each particle, their
+    /// distances and the rows within reach are found once).
+    pub fn build_both(
+        [fluid, walls]: [&mut Self; 2],
+        positions: &[Vec3<R>],
+        grid: &CellGrid<R>,
+        (boundary, boundary_grid): (&[Vec3<R>], &CellGrid<R>),
+        kernel: &Kernel<R>,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if avx512::build_both(
+            [&mut *fluid, &mut *walls],
+            positions,
+            [(positions, grid), (boundary, boundary_grid)],
+            kernel,
+        ) {
+            return;
+        }
+        fluid.build(positions, positions, grid, kernel, true);
+        walls.build(positions, boundary, boundary_grid, kernel, false);
+    }
+
     /// [`NeighbourLists::build`], one candidate after another with [`Kernel::evaluate`].
     pub fn build_scalar(
         &mut self,

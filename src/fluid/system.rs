@@ -278,9 +278,13 @@ impl<R: Real> FluidSystem<R> {
         let s = &mut self.scratch;
         let (positions, kernel) = (&self.positions, &self.settings.kernel);
         s.grid.fill(positions);
-        s.fluid.build(positions, positions, &s.grid, kernel, true);
-        s.walls
-            .build(positions, &s.boundary, &s.boundary_grid, kernel, false);
+        NeighbourLists::build_both(
+            [&mut s.fluid, &mut s.walls],
+            positions,
+            &s.grid,
+            (&s.boundary, &s.boundary_grid),
+            kernel,
+        );
     }
 }
 

@@ -2,7 +2,8 @@
 //! the support test, the survivors packed in order, then eight survivors side by side
 //! through the kernel's value and gradient.
 //!
-//! Three searches share it: a fresh search of the grid ([`build`]), the evaluation of
+//! Three searches share it: a fresh search of the grid ([`build`]; [`build_both`] runs
+//! the fluid's and the boundary's in one walk of the cells), the evaluation of
 //! candidate rows ([`evaluate`], see [`skin`](super::skin)) and the selection of those
 //! candidates ([`select`]: the support test alone, at the candidate radius ρ in place of
 //! H, which the bounds below then concern; its rows are the candidates of
@@ -86,6 +87,51 @@ pub(super) fn build<R: Real>(
     let (queries, points) = (admitted.queries, admitted.points);
     // SAFETY: `admit` detected AVX-512F and checked the bounds.
     unsafe { build_kernel(lists, queries, points, within, search) }
+}
+
+/// [`NeighbourLists::build_both`] with the kernel, on the conditions of [`build`] for both
+/// searches and when both grids have the same cells ([`CellGrid::same_cells`]); returns
+/// whether it did (if not, the lists hold nothing of use).
+pub(super) fn build_both<R: Real>(
+    [fluid, walls]: [&mut NeighbourLists<R>; 2],
+    queries: &[Vec3<R>],
+    [(points, grid), (boundary, boundary_grid)]: [(&[Vec3<R>], &CellGrid<R>); 2],
+    kernel: &Kernel<R>,
+) -> bool {
+    let scales = [kernel.density_scale, kernel.gradient_scale];
+    let support = (kernel.support, kernel.inv_support);
+    let (Some(fluid), Some(walls), Some(grid), Some(boundary_grid)) = (
+        (fluid as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
+        (walls as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
+        (grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
+        (boundary_grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
+    ) else {
+        return false;
+    };
+    let (Some(among_fluid), Some(among_walls)) = (
+        admit(queries, points, support, scales, true),
+        admit(queries, boundary, support, scales, false),
+    ) else {
+        return false;
+    };
+    if !grid.same_cells(boundary_grid) {
+        return false;
+    }
+    let span = grid.span(among_fluid.search.radius);
+    let searches = [
+        (among_fluid.points, &among_fluid.search),
+        (among_walls.points, &among_walls.search),
+    ];
+    // SAFETY: `admit` detected AVX-512F and checked the bounds of both searches.
+    unsafe {
+        build_both_kernel(
+            [fluid, walls],
+            among_fluid.queries,
+            [grid, boundary_grid],
+            span,
+            searches,
+        )
+    }
 }
 
 /// [`NeighbourLists::evaluate`] with the kernel, on the conditions of [`build`]; returns
@@ -255,17 +301,50 @@ impl<'a> Within<'a> {
     }
 }
 
-impl Candidates for Within<'_> {
-    #[inline(always)]
-    fn of(&mut self, _: usize, xi: Vec3<Fx>) -> &[u32] {
+impl Within<'_> {
+    /// The candidates of a query at `xi`.
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    fn collect(&mut self, xi: Vec3<Fx>) -> &[u32] {
         self.found.clear();
         let found = &mut self.found;
         self.grid
-            .for_each_within(xi, self.inv_radius, self.span, |row| {
-                found.extend_from_slice(row)
-            });
+            .for_each_within(xi, self.inv_radius, self.span, |row| append(found, row));
         &self.found
     }
+}
+
+impl Candidates for Within<'_> {
+    #[inline(always)]
+    fn of(&mut self, _: usize, xi: Vec3<Fx>) -> &[u32] {
+        // SAFETY: a `Within` is made only for a search that `admit` let through, which
+        // detected AVX-512F.
+        unsafe { self.collect(xi) }
+    }
+}
+
+/// Appends `row` to `found` sixteen at a time: a masked load, then a whole store into the
+/// spare capacity. A grid row holds a few points (one per cell at rest), which a call to
+/// `memcpy` per row (`extend_from_slice`) copied at several times the cost.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn append(found: &mut Vec<u32>, row: &[u32]) {
+    let len = found.len();
+    found.reserve(row.len() + 16);
+    let mut first = 0;
+    while first < row.len() {
+        let count = (row.len() - first).min(16) as u32;
+        let mask = (u32::MAX >> (32 - count)) as u16;
+        // SAFETY: the masked load reads only `row[first..first + count]`; the store writes
+        // 16 values from `len + first`, within the capacity reserved above.
+        unsafe {
+            let lanes = _mm512_maskz_loadu_epi32(mask, row.as_ptr().add(first).cast());
+            _mm512_storeu_si512(found.as_mut_ptr().add(len + first).cast(), lanes);
+        }
+        first += 16;
+    }
+    // SAFETY: the `row.len()` values past `len` were stored above.
+    unsafe { found.set_len(len + row.len()) };
 }
 
 impl Candidates for &CandidateRows {
@@ -335,18 +414,83 @@ unsafe fn build_kernel(
     for (i, &xi) in queries.iter().enumerate() {
         let candidates = candidates.of(i, xi);
         // SAFETY: the caller's conditions are this function's.
-        if !unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) } {
+        if !unsafe { add_row(lists, &mut survivors, candidates, i, xi, points, search) } {
             return false;
-        }
-        // The survivors of several rows are evaluated together, in full blocks: the row
-        // ends where its survivors will have been appended.
-        lists.start.push((lists.index.len() + survivors.len) as u32);
-        if survivors.len >= PENDING {
-            evaluate_survivors(lists, &survivors, search);
-            survivors.clear();
         }
     }
     evaluate_survivors(lists, &survivors, search);
+    true
+}
+
+/// [`build_kernel`] for two sets of points in grids of the same cells (the fluid, then
+/// the boundary), in one walk of the cells: each list gets the rows its own search would.
+///
+/// # Safety
+/// The processor must have AVX-512F; the bounds of [`build`] must hold for both searches.
+#[target_feature(enable = "avx512f")]
+unsafe fn build_both_kernel(
+    lists: [&mut NeighbourLists<Fx>; 2],
+    queries: &[Vec3<Fx>],
+    [grid, other]: [&CellGrid<Fx>; 2],
+    span: u32,
+    searches: [(&[Vec3<Fx>], &Search); 2],
+) -> bool {
+    let mut survivors: [Survivors; 2] = Default::default();
+    let mut found: [Vec<u32>; 2] = Default::default();
+    let inv_radius = searches[0].1.inv_radius;
+    let [fluid, walls] = lists;
+    let mut lists = [fluid, walls];
+    for list in &mut lists {
+        list.clear();
+    }
+    for (i, &xi) in queries.iter().enumerate() {
+        for found in &mut found {
+            found.clear();
+        }
+        grid.for_each_within_both(other, xi, inv_radius, span, |k, row| {
+            append(&mut found[k], row);
+        });
+        for (k, list) in lists.iter_mut().enumerate() {
+            let (points, search) = searches[k];
+            // SAFETY: the caller's conditions are this function's.
+            if !unsafe { add_row(list, &mut survivors[k], &found[k], i, xi, points, search) } {
+                return false;
+            }
+        }
+    }
+    for (k, list) in lists.into_iter().enumerate() {
+        evaluate_survivors(list, &survivors[k], searches[k].1);
+    }
+    true
+}
+
+/// Tests the candidates of query `i` at `xi` and closes its row; evaluates the pending
+/// survivors once there are enough. False when a candidate is not a point's index.
+///
+/// # Safety
+/// The processor must have AVX-512F; the bounds of [`build`] must hold.
+#[inline]
+#[target_feature(enable = "avx512f")]
+unsafe fn add_row(
+    lists: &mut NeighbourLists<Fx>,
+    survivors: &mut Survivors,
+    candidates: &[u32],
+    i: usize,
+    xi: Vec3<Fx>,
+    points: &[Vec3<Fx>],
+    search: &Search,
+) -> bool {
+    // SAFETY: the caller's conditions are this function's.
+    if !unsafe { test_candidates(survivors, candidates, i, xi, points, search) } {
+        return false;
+    }
+    // The survivors of several rows are evaluated together, in full blocks: the row ends
+    // where its survivors will have been appended.
+    lists.start.push((lists.index.len() + survivors.len) as u32);
+    if survivors.len >= PENDING {
+        evaluate_survivors(lists, survivors, search);
+        survivors.clear();
+    }
     true
 }
 

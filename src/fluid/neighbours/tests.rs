@@ -165,6 +165,18 @@ fn a_lattice_with_pairs_on_the_support_matches() {
 }
 
 #[test]
+fn a_dense_cluster_matches() {
+    // 2500 points in a 2 cm cube, cells 5 mm wide: about 40 points per cell, so that the
+    // grid rows the vector search copies end to end hold many registers' worth of points.
+    let points: Vec<_> = random(2500, 21)
+        .into_iter()
+        .map(|p| p * Fx::from_ratio(1, 5))
+        .collect();
+    let taken = compare(&points, &points, Fx::from_ratio(5, 1000), true);
+    assert_eq!(taken, kernels_present());
+}
+
+#[test]
 fn points_beyond_the_grid_and_the_bounds_match() {
     let mut points = random(400, 9);
     points.push(Vec3::from_f64(-0.3, 0.0, 0.02));
@@ -174,6 +186,46 @@ fn points_beyond_the_grid_and_the_bounds_match() {
     // Coordinates beyond 2⁶⁰ as bits (2.7·10⁸ m): the scalar search.
     points.push(Vec3::new(Fx::MAX, Fx::ZERO, Fx::MIN));
     assert!(!compare(&points, &points, Fx::from_ratio(5, 1000), true));
+}
+
+#[test]
+fn both_searches_in_one_walk_match_two_scalar_searches() {
+    let spacing = Fx::from_ratio(5, 1000);
+    let kernel = Kernel::<Fx>::calibrated(spacing, Fx::TWO);
+    let tenth = Vec3::splat(Fx::from_ratio(1, 10));
+    for seed in 0..4 {
+        let fluid = random(1200, seed);
+        // Boundary points: a dense random cloud, and a lattice plane through it whose
+        // points lie on cell edges, so that neither grid's rows are the other's.
+        let mut boundary = random(2000, seed + 50);
+        for j in 0..20 {
+            for i in 0..20 {
+                let at = |k: i32| spacing * Fx::from_int(k);
+                boundary.push(Vec3::new(at(i), at(j), Fx::from_ratio(1, 20)));
+            }
+        }
+        let mut grid = CellGrid::new(Vec3::ZERO, tenth, kernel.support);
+        grid.fill(&fluid);
+        // The same cells, then other cells (the walk cannot be shared).
+        for lower in [Vec3::ZERO, Vec3::splat(Fx::from_ratio(-3, 1000))] {
+            let mut boundary_grid = CellGrid::new(lower, tenth, kernel.support);
+            boundary_grid.fill(&boundary);
+            let (mut fast, mut fast_walls) = (NeighbourLists::default(), NeighbourLists::default());
+            NeighbourLists::build_both(
+                [&mut fast, &mut fast_walls],
+                &fluid,
+                &grid,
+                (&boundary, &boundary_grid),
+                &kernel,
+            );
+            let (mut slow, mut slow_walls) = (NeighbourLists::default(), NeighbourLists::default());
+            slow.build_scalar(&fluid, &fluid, &grid, &kernel, true);
+            slow_walls.build_scalar(&fluid, &boundary, &boundary_grid, &kernel, false);
+            assert_same(&fast, &slow);
+            assert_same(&fast_walls, &slow_walls);
+            assert!(!slow_walls.index.is_empty());
+        }
+    }
 }
 
 /// The kernel's square root against `Fx::sqrt` over [0, 1): random values, and the values
