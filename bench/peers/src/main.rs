@@ -19,7 +19,7 @@
 //! control is off in 0.11) and runs twice: with its default tolerance (mean predicted
 //! compression 5 %) and with fixstep's (0.05 %). fixstep runs at both tolerances too, with
 //! the fixed substep count its time-step limit asks for and, in the dam break, with
-//! adaptive substeps (CFL 0.2).
+//! adaptive substeps (CFL 0.2, and 0.3 at salva3d's tolerance).
 //!
 //! Usage: `fixstep-peers [ROUNDS] [SCENE …]`.
 

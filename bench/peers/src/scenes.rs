@@ -149,6 +149,11 @@ pub const FLUID_SCENES: [FluidScene; 2] = [
                 substeps: 9,
                 cfl: 0.2,
             },
+            FixstepFluid {
+                tolerance: SALVA_TOLERANCE,
+                substeps: 9,
+                cfl: 0.3,
+            },
         ],
     },
 ];
