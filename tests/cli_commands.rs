@@ -143,12 +143,32 @@ fn info_describes_a_replay() {
         "particles: ",
         "rigid bodies: none",
         "joints: none",
+        "fluid: none",
     ] {
         assert!(
             run.stdout.contains(expected),
             "{expected:?} in {}",
             run.stdout
         );
+    }
+}
+
+#[test]
+fn info_describes_the_fluid_and_its_substeps() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (file, line) in [
+        (
+            "replays/dam_break_adaptive.replay",
+            "fluid: Dfsph, spacing 0.01143 m, 1 blocks, 0 emitters, adaptive substeps (CFL 0.2), at most 8\n",
+        ),
+        (
+            "replays/pour.replay",
+            "fluid: Dfsph, spacing 0.02 m, 0 blocks, 1 emitters, 10 substeps\n",
+        ),
+    ] {
+        let run = fixstep(&["info", root.join(file).to_str().expect("UTF-8")]);
+        assert_eq!(run.code, 0, "{run:?}");
+        assert!(run.stdout.contains(line), "{line:?} in {}", run.stdout);
     }
 }
 

@@ -4,7 +4,8 @@ use std::path::Path;
 
 use super::output::print_line;
 use super::status::Status;
-use crate::math::Fx;
+use crate::fluid::FluidDesc;
+use crate::math::{Fx, Real};
 use crate::particles::{ForceDesc, ParticlesDesc};
 use crate::replay::format::FORMAT_VERSION;
 use crate::replay::{Replay, StateVersionCheck};
@@ -53,6 +54,13 @@ pub fn info(path: &Path) -> Result<Status, String> {
                 .joints
                 .as_ref()
                 .map_or_else(|| "none".to_owned(), joints_summary)
+        ),
+        format!(
+            "fluid: {}",
+            scene
+                .fluid
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), fluid_summary)
         ),
         format!("ticks: {}", replay.ticks()),
         format!("input ticks: {}", replay.inputs().len()),
@@ -106,6 +114,25 @@ fn joints_summary(desc: &JointsDesc<Fx>) -> String {
         .map(|(kind, n)| format!("{n} {kind}"))
         .collect();
     format!("{total} ({})", kinds.join(", "))
+}
+
+/// Solver, spacing, blocks, emitters and substeps of the scene's fluid.
+fn fluid_summary(desc: &FluidDesc<Fx>) -> String {
+    let substeps = if desc.cfl == Fx::ZERO {
+        format!("{} substeps", desc.substeps)
+    } else {
+        format!(
+            "adaptive substeps (CFL {}), at most {}",
+            desc.cfl, desc.substeps
+        )
+    };
+    format!(
+        "{:?}, spacing {} m, {} blocks, {} emitters, {substeps}",
+        desc.solver,
+        desc.spacing,
+        desc.blocks.len(),
+        desc.emitters.len()
+    )
 }
 
 /// Particle count, templates, emitters and forces of the scene's particle section.
