@@ -66,11 +66,7 @@ pub(super) fn density_rates<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let velocities = unsafe { &*(core::ptr::from_ref(velocities) as *const [Vec3<Fx>]) };
-    let velocity_bits = bit_length(velocities.iter().fold(0, |bits, v| {
-        bits | magnitude_of(v.x.to_bits())
-            | magnitude_of(v.y.to_bits())
-            | magnitude_of(v.z.to_bits())
-    }));
+    let velocity_bits = vector_bits(velocities);
     // |vᵢ − vⱼ| < 2^(B + 1).
     let difference_bits = velocity_bits + 1;
     // SAFETY: AVX-512F was detected just above.
@@ -102,11 +98,7 @@ pub(super) fn pressure_pushes<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let stiffness = unsafe { &*(core::ptr::from_ref(stiffness) as *const [Fx]) };
-    let stiffness_bits = bit_length(
-        stiffness
-            .iter()
-            .fold(0, |bits, k| bits | magnitude_of(k.to_bits())),
-    );
+    let stiffness_bits = scalar_bits(stiffness);
     // |kᵢ + kⱼ| < 2^(B + 1).
     let sum_bits = stiffness_bits + 1;
     // SAFETY: AVX-512F was detected just above.
@@ -144,16 +136,8 @@ pub(super) fn smoothing_sums<R: Real>(
             &*(core::ptr::from_ref(inv_density) as *const [Fx]),
         )
     };
-    let velocity_bits = bit_length(velocities.iter().fold(0, |bits, v| {
-        bits | magnitude_of(v.x.to_bits())
-            | magnitude_of(v.y.to_bits())
-            | magnitude_of(v.z.to_bits())
-    }));
-    let density_bits = bit_length(
-        inv_density
-            .iter()
-            .fold(0, |bits, d| bits | magnitude_of(d.to_bits())),
-    );
+    let velocity_bits = vector_bits(velocities);
+    let density_bits = scalar_bits(inv_density);
     let bits = Bits {
         difference: velocity_bits + 1,
         density: density_bits,
@@ -205,6 +189,46 @@ fn within_bound(a: u32, b: u32, terms: usize) -> bool {
     a <= MAX_OPERAND_BITS && b <= MAX_OPERAND_BITS && (a + b).saturating_sub(32) + sum_bits <= 61
 }
 
+/// The bit length of the largest magnitude of any component of `vectors`.
+fn vector_bits(vectors: &[Vec3<Fx>]) -> u32 {
+    bit_length(vectors.iter().fold(0, |bits, v| {
+        bits | magnitude_of(v.x.to_bits())
+            | magnitude_of(v.y.to_bits())
+            | magnitude_of(v.z.to_bits())
+    }))
+}
+
+/// The bit length of the largest magnitude in `values`.
+fn scalar_bits(values: &[Fx]) -> u32 {
+    bit_length(
+        values
+            .iter()
+            .fold(0, |bits, v| bits | magnitude_of(v.to_bits())),
+    )
+}
+
+/// The neighbour indices of entries `first..first + count` (count 1 to 8) of a row: the
+/// lane mask and the indices as `i64`; or `None` when an index is not below `points`.
+///
+/// # Safety
+/// `first + count` must not exceed the number of entries of `lists.index`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+unsafe fn load_indices(
+    lists: &NeighbourLists<Fx>,
+    first: usize,
+    count: usize,
+    points: __m512i,
+) -> Option<(__mmask8, __m512i)> {
+    let mask = ((1u16 << count) - 1) as __mmask8;
+    // SAFETY: the masked load reads only the `count` entries from `first`, which exist.
+    let index32 = unsafe {
+        _mm512_maskz_loadu_epi32(u16::from(mask), lists.index.as_ptr().add(first).cast())
+    };
+    let index = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
+    (_mm512_mask_cmplt_epu64_mask(mask, index, points) == mask).then_some((mask, index))
+}
+
 /// The entries `first..first + count` (count 1 to 8) of a row: the lane mask, the
 /// neighbour indices as `i64`, and the three gradient components (zero past `count`); or
 /// `None` when an index is not below `points`.
@@ -220,15 +244,8 @@ unsafe fn load_entries(
     count: usize,
     points: __m512i,
 ) -> Option<(__mmask8, __m512i, [__m512i; 3])> {
-    let mask = ((1u16 << count) - 1) as __mmask8;
-    // SAFETY: the masked load reads only the `count` entries from `first`, which exist.
-    let index32 = unsafe {
-        _mm512_maskz_loadu_epi32(u16::from(mask), lists.index.as_ptr().add(first).cast())
-    };
-    let index = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
-    if _mm512_mask_cmplt_epu64_mask(mask, index, points) != mask {
-        return None;
-    }
+    // SAFETY: the caller's condition covers `lists.index`.
+    let (mask, index) = unsafe { load_indices(lists, first, count, points) }?;
     // SAFETY: the masked loads read only the `count` entries from `first`, which exist.
     let gradient = lists
         .gradients
@@ -386,22 +403,14 @@ unsafe fn smoothing_sums_kernel<const NARROW: bool>(
         let mut first = range.start;
         while first < range.end {
             let count = (range.end - first).min(8);
-            let mask = ((1u16 << count) - 1) as __mmask8;
-            // SAFETY: the masked loads read only the `count` entries from `first`, which
-            // exist (the row ends within the entries).
-            let (index32, value) = unsafe {
-                (
-                    _mm512_maskz_loadu_epi32(
-                        u16::from(mask),
-                        lists.index.as_ptr().add(first).cast(),
-                    ),
-                    _mm512_maskz_loadu_epi64(mask, lists.value.as_ptr().add(first).cast()),
-                )
-            };
-            let index = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
-            if _mm512_mask_cmplt_epu64_mask(mask, index, points) != mask {
+            // SAFETY: `first + count` is within the row, which ends within the entries.
+            let Some((mask, index)) = (unsafe { load_indices(lists, first, count, points) }) else {
                 return false;
-            }
+            };
+            // SAFETY: the masked load reads only the `count` entries from `first`, which
+            // exist (the row ends within the entries).
+            let value =
+                unsafe { _mm512_maskz_loadu_epi64(mask, lists.value.as_ptr().add(first).cast()) };
             // SAFETY: every index in use is below both slices' lengths (checked above).
             let inverse =
                 unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, index, density_base) };
