@@ -4,15 +4,16 @@
 //! `cargo bench --bench fluid`, not from here.
 //!
 //! Usage: `cargo run --release --example fluid_steps [dfsph|wcsph|dam] [N] [RATE]
-//! [SUBSTEPS] [WARM] [STEPS] [fx|f64] [TOLERANCE] [SOUND]`: N³ particles, steps of 1/RATE s
-//! in SUBSTEPS fluid substeps, WARM steps untimed, then STEPS timed (default
+//! [SUBSTEPS] [WARM] [STEPS] [fx|f64] [TOLERANCE] [SOUND] [CFL]`: N³ particles, steps of
+//! 1/RATE s in SUBSTEPS fluid substeps (at most SUBSTEPS, adaptive, when CFL is given), WARM steps untimed, then STEPS timed (default
 //! `dfsph 20 200 3 20 10 fx`: the DFSPH case of the benchmark, 8000 particles at
 //! Δt = 5 ms). TOLERANCE sets the DFSPH tolerance on the mean density error (default
 //! 0.0005) and SOUND the speed of sound, m/s (default 20; the time-step limit allows one
 //! DFSPH substep of 5 ms at 1 cm spacing from SOUND = 4 down). `dam` runs DFSPH on
 //! Martin & Moyce's column with N particles across its width, 2N up and N/2 deep (N³
 //! particles) instead of the cube: `dam 20 200 9 0 22 fx 0.05` is the peer benchmark's
-//! `dam_break` (8000 particles, the whole collapse from the start) at a loose tolerance.
+//! `dam_break` (8000 particles, the whole collapse from the start) at a loose tolerance, and
+//! `dam 20 200 9 0 22 fx 0.05 20 0.3` its fastest row (adaptive substeps at CFL 0.3).
 
 use std::time::{Duration, Instant};
 
@@ -31,6 +32,7 @@ struct Run {
     steps: u32,
     tolerance: Option<f64>,
     sound: Option<f64>,
+    cfl: Option<f64>,
 }
 
 fn run<R: Real>(r: &Run) {
@@ -49,6 +51,9 @@ fn run<R: Real>(r: &Run) {
     if let Some(sound) = r.sound {
         desc.speed_of_sound = R::from_f64(sound);
     }
+    if let Some(cfl) = r.cfl {
+        desc.cfl = R::from_f64(cfl);
+    }
     let mut fluid = match FluidSystem::from_desc(&desc, dt) {
         Ok(fluid) => fluid,
         Err(e) => {
@@ -61,22 +66,24 @@ fn run<R: Real>(r: &Run) {
     }
     let mut elapsed = Duration::ZERO;
     let mut iterations = 0;
+    let mut substeps = 0;
     for _ in 0..r.steps {
         let start = Instant::now();
         fluid.step(dt, gravity);
         elapsed += start.elapsed();
         iterations += fluid.last_iterations();
+        substeps += fluid.last_substeps();
     }
     let m = fluid.metrics(gravity);
     println!(
-        "{} {:?} {} particles, dt 1/{} s in {} substeps: {:?} per step over {} steps; \
+        "{} {:?} {} particles, dt 1/{} s in {:.2} substeps: {:?} per step over {} steps; \
          {:.1} solver iterations per step; mean density error {:.5}, max speed \
          {:.3} m/s",
         R::NAME,
         r.solver,
         fluid.len(),
         r.rate,
-        r.substeps,
+        f64::from(substeps) / f64::from(r.steps.max(1)),
         elapsed / r.steps.max(1),
         r.steps,
         f64::from(iterations) / f64::from(r.steps.max(1)),
@@ -117,6 +124,7 @@ fn main() {
         steps: number(5, "10"),
         tolerance: decimal(7),
         sound: decimal(8),
+        cfl: decimal(9),
     };
     match arg(6, "fx").as_str() {
         "f64" => run::<f64>(&r),

@@ -143,6 +143,7 @@ fn info_describes_a_replay() {
         "particles: ",
         "rigid bodies: none",
         "joints: none",
+        "soft bodies: none",
         "fluid: none",
     ] {
         assert!(
@@ -164,6 +165,29 @@ fn info_describes_the_fluid_and_its_substeps() {
         (
             "replays/pour.replay",
             "fluid: Dfsph, spacing 0.02 m, 0 blocks, 1 emitters, 10 substeps\n",
+        ),
+    ] {
+        let run = fixstep(&["info", root.join(file).to_str().expect("UTF-8")]);
+        assert_eq!(run.code, 0, "{run:?}");
+        assert!(run.stdout.contains(line), "{line:?} in {}", run.stdout);
+    }
+}
+
+#[test]
+fn info_describes_the_soft_bodies() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (file, line) in [
+        (
+            "replays/cloth.replay",
+            "soft bodies: 1 (32x32 cloth, XPBD), 1024 vertices, 0 colliders, XPBD 10 substeps of 1 iterations\n",
+        ),
+        (
+            "replays/rope.replay",
+            "soft bodies: 1 (20-link rope, XPBD), 21 vertices, 0 colliders, XPBD 20 substeps of 1 iterations\n",
+        ),
+        (
+            "replays/jelly.replay",
+            "soft bodies: 1 (6x6x6 lattice, spring-mass), 216 vertices, 1 colliders\n",
         ),
     ] {
         let run = fixstep(&["info", root.join(file).to_str().expect("UTF-8")]);

@@ -11,6 +11,7 @@ use crate::replay::format::FORMAT_VERSION;
 use crate::replay::{Replay, StateVersionCheck};
 use crate::rigid::JointsDesc;
 use crate::rigid::build::copies;
+use crate::soft::{SoftDesc, SoftModel, SoftShape};
 use crate::world::STATE_VERSION;
 use crate::world::checksum::hex;
 
@@ -54,6 +55,13 @@ pub fn info(path: &Path) -> Result<Status, String> {
                 .joints
                 .as_ref()
                 .map_or_else(|| "none".to_owned(), joints_summary)
+        ),
+        format!(
+            "soft bodies: {}",
+            scene
+                .soft
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), soft_summary)
         ),
         format!(
             "fluid: {}",
@@ -114,6 +122,57 @@ fn joints_summary(desc: &JointsDesc<Fx>) -> String {
         .map(|(kind, n)| format!("{n} {kind}"))
         .collect();
     format!("{total} ({})", kinds.join(", "))
+}
+
+/// Body count, each body's shape and model, vertex and collider counts, and the XPBD
+/// solver's substeps and iterations (when a body uses it) of the scene's soft bodies.
+fn soft_summary(desc: &SoftDesc<Fx>) -> String {
+    let mut vertices = 0u64;
+    let bodies: Vec<String> = desc
+        .bodies
+        .iter()
+        .map(|body| {
+            let (shape, count) = match &body.shape {
+                SoftShape::Cloth { columns, rows, .. } => (
+                    format!("{columns}x{rows} cloth"),
+                    u64::from(*columns) * u64::from(*rows),
+                ),
+                SoftShape::Rope { links, .. } => {
+                    (format!("{links}-link rope"), u64::from(*links) + 1)
+                }
+                SoftShape::Lattice {
+                    count: (x, y, z), ..
+                } => (
+                    format!("{x}x{y}x{z} lattice"),
+                    u64::from(*x) * u64::from(*y) * u64::from(*z),
+                ),
+            };
+            vertices = vertices.saturating_add(count);
+            let model = match body.model {
+                SoftModel::Xpbd { .. } => "XPBD",
+                SoftModel::SpringMass { .. } => "spring-mass",
+            };
+            format!("{shape}, {model}")
+        })
+        .collect();
+    let xpbd = desc
+        .bodies
+        .iter()
+        .any(|body| matches!(body.model, SoftModel::Xpbd { .. }));
+    let solver = if xpbd {
+        format!(
+            ", XPBD {} substeps of {} iterations",
+            desc.solver.substeps, desc.solver.iterations
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "{} ({}), {vertices} vertices, {} colliders{solver}",
+        desc.bodies.len(),
+        bodies.join("; "),
+        desc.colliders.len(),
+    )
 }
 
 /// Solver, spacing, blocks, emitters and substeps of the scene's fluid.
