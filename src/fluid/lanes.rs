@@ -1,6 +1,6 @@
-//! Eight I32F32 values side by side in an AVX-512 register: the exact products and the
-//! magnitudes the fluid's vector kernels ([`row_sums`](super::row_sums),
-//! [`neighbours`](super::neighbours)) are built from.
+//! Eight I32F32 values side by side in an AVX-512 register: the exact products, the
+//! magnitudes and the loads of neighbours' values by index that the fluid's vector kernels
+//! ([`row_sums`](super::row_sums), [`neighbours`](super::neighbours)) are built from.
 //!
 //! `_mm512_mul_epi32` multiplies the signed low 32 bits of two lanes into 64. With
 //! a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ and a_l ∈ [−2³¹, 2³¹) the signed low half of a
@@ -16,8 +16,9 @@
 //! bounds.
 
 use core::arch::x86_64::{
-    __m512i, _mm512_add_epi64, _mm512_mul_epi32, _mm512_set1_epi64, _mm512_slli_epi64,
-    _mm512_srai_epi64, _mm512_xor_si512,
+    __m512i, _mm512_add_epi64, _mm512_mask_loadu_epi64, _mm512_mul_epi32, _mm512_or_si512,
+    _mm512_permutex2var_epi64, _mm512_set1_epi64, _mm512_setr_epi64, _mm512_setzero_si512,
+    _mm512_slli_epi64, _mm512_srai_epi64, _mm512_xor_si512,
 };
 
 /// The bit length of `bits` as an unsigned number.
@@ -73,4 +74,135 @@ pub(super) fn mul(a: __m512i, b: __m512i) -> __m512i {
         _mm512_set1_epi64(1 << 31),
     ));
     _mm512_add_epi64(_mm512_add_epi64(hh, cross), low)
+}
+
+/// x, y and z of the vectors `points[indices[l]]` (I32F32 bits, three words each) in lane l
+/// for the `count` first lanes (zero in the others): one masked load of three words per
+/// lane, then a transpose, which costs less than three gathers.
+///
+/// # Safety
+/// The processor must have AVX-512F; `count` ≤ 8 and ≤ `indices.len()`; each of the first
+/// `count` indices must be below the number of points at `points`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(super) unsafe fn load_vectors(
+    points: *const i64,
+    indices: &[u32],
+    count: usize,
+) -> [__m512i; 3] {
+    // [x, y, z, 0] of lanes 2k and 2k + 1: lane 2k's three words into the low half, lane
+    // 2k + 1's into the high half (a load from four words before them, its first four
+    // masked off).
+    let pair = |l: usize| {
+        let mut p = _mm512_setzero_si512();
+        for (half, mask) in [(0, 0b0000_0111), (1, 0b0111_0000)] {
+            if l + half < count {
+                // SAFETY: the caller's conditions: the masked load reads three words, those
+                // of point `indices[l + half]`.
+                unsafe {
+                    let at = points.add(3 * *indices.get_unchecked(l + half) as usize);
+                    p = _mm512_mask_loadu_epi64(p, mask, at.wrapping_sub(4 * half));
+                }
+            }
+        }
+        p
+    };
+    let (p0, p1, p2, p3) = (pair(0), pair(2), pair(4), pair(6));
+    let xy = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13);
+    let zz = _mm512_setr_epi64(2, 6, 10, 14, 2, 6, 10, 14);
+    // x and y of lanes 0–3, then 4–7; z of lanes 0–3, then 4–7.
+    let (xy_low, xy_high) = (
+        _mm512_permutex2var_epi64(p0, xy, p1),
+        _mm512_permutex2var_epi64(p2, xy, p3),
+    );
+    let (z_low, z_high) = (
+        _mm512_permutex2var_epi64(p0, zz, p1),
+        _mm512_permutex2var_epi64(p2, zz, p3),
+    );
+    let low = _mm512_setr_epi64(0, 1, 2, 3, 8, 9, 10, 11);
+    let high = _mm512_setr_epi64(4, 5, 6, 7, 12, 13, 14, 15);
+    [
+        _mm512_permutex2var_epi64(xy_low, low, xy_high),
+        _mm512_permutex2var_epi64(xy_low, high, xy_high),
+        _mm512_permutex2var_epi64(z_low, low, z_high),
+    ]
+}
+
+/// `values[indices[l]]` (I32F32 bits) in lane l for the `count` first lanes (zero in the
+/// others): one masked load of a word per lane, in two chains of merges (even and odd
+/// lanes) joined at the end, which costs less than a gather.
+///
+/// # Safety
+/// The processor must have AVX-512F; `count` ≤ 8 and ≤ `indices.len()`; each of the first
+/// `count` indices must be below the number of values at `values`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+pub(super) unsafe fn load_values(values: *const i64, indices: &[u32], count: usize) -> __m512i {
+    let mut chains = [_mm512_setzero_si512(); 2];
+    for l in 0..count {
+        // SAFETY: the caller's conditions: the masked load reads one word, value
+        // `indices[l]`, into lane l (from l words before it, the others masked off).
+        unsafe {
+            let at = values.add(*indices.get_unchecked(l) as usize);
+            chains[l & 1] = _mm512_mask_loadu_epi64(chains[l & 1], 1 << l, at.wrapping_sub(l));
+        }
+    }
+    _mm512_or_si512(chains[0], chains[1])
+}
+
+#[cfg(test)]
+mod tests {
+    use core::arch::x86_64::{__m512i, _mm512_storeu_si512};
+
+    use super::{load_values, load_vectors};
+    use crate::math::Pcg32;
+
+    fn words(lanes: __m512i) -> [i64; 8] {
+        let mut out = [0i64; 8];
+        // SAFETY: eight words into eight.
+        unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), lanes) };
+        out
+    }
+
+    /// Every lane count from 0 to 8, indices anywhere in arrays of every length from 1 to 5
+    /// (the first and the last element among them): each lane in use holds its element,
+    /// the others zero.
+    #[test]
+    fn the_loads_match_indexing() {
+        if !std::arch::is_x86_feature_detected!("avx512f") {
+            return;
+        }
+        let mut rng = Pcg32::new(11, 7);
+        for len in 1..=5usize {
+            let values: Vec<i64> = (0..len)
+                .map(|_| i64::from(rng.next_u32()) - (1 << 31))
+                .collect();
+            let vectors: Vec<i64> = (0..3 * len)
+                .map(|_| i64::from(rng.next_u32()) << 20)
+                .collect();
+            for count in 0..=8 {
+                for _ in 0..50 {
+                    let indices: Vec<u32> =
+                        (0..count).map(|_| rng.next_u32() % len as u32).collect();
+                    // SAFETY: AVX-512F detected; every index below the arrays' lengths.
+                    let (scalars, [x, y, z]) = unsafe {
+                        (
+                            words(load_values(values.as_ptr(), &indices, count)),
+                            load_vectors(vectors.as_ptr(), &indices, count).map(words),
+                        )
+                    };
+                    for l in 0..8 {
+                        let at = indices.get(l).map(|&i| i as usize);
+                        let expect = |array: &[i64], stride: usize, c: usize| {
+                            at.map_or(0, |i| array[stride * i + c])
+                        };
+                        assert_eq!(scalars[l], expect(&values, 1, 0), "value lane {l}");
+                        assert_eq!(x[l], expect(&vectors, 3, 0), "x lane {l}");
+                        assert_eq!(y[l], expect(&vectors, 3, 1), "y lane {l}");
+                        assert_eq!(z[l], expect(&vectors, 3, 2), "z lane {l}");
+                    }
+                }
+            }
+        }
+    }
 }

@@ -42,10 +42,9 @@ use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cmpgt_epu64_mask,
     _mm512_cmple_epu64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_add_epi64,
     _mm512_mask_cmpgt_epi64_mask, _mm512_mask_cmplt_epi64_mask, _mm512_mask_cmplt_epu64_mask,
-    _mm512_mask_cmpneq_epi64_mask, _mm512_mask_i64gather_epi64, _mm512_mask_mov_epi64,
-    _mm512_maskz_compress_epi64, _mm512_maskz_loadu_epi32, _mm512_mul_epu32, _mm512_or_si512,
-    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_storeu_si512,
-    _mm512_sub_epi64,
+    _mm512_mask_cmpneq_epi64_mask, _mm512_mask_mov_epi64, _mm512_maskz_compress_epi64,
+    _mm512_maskz_loadu_epi32, _mm512_mul_epu32, _mm512_or_si512, _mm512_set1_epi64,
+    _mm512_setzero_si512, _mm512_slli_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
 };
 use core::mem::size_of;
 
@@ -53,10 +52,10 @@ use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
 use crate::fluid::grid::CellGrid;
 use crate::fluid::kernel::Kernel;
-use crate::fluid::lanes::{bit_length, magnitude_of, mul, product};
+use crate::fluid::lanes::{bit_length, load_vectors, magnitude_of, mul, product};
 use crate::math::{Fx, Real, Vec3};
 
-// The layout the gathers rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
+// The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
 const _: () = {
     assert!(size_of::<Fx>() == 8);
     assert!(size_of::<Vec3<Fx>>() == 24);
@@ -541,7 +540,6 @@ unsafe fn test_candidates(
     points: &[Vec3<Fx>],
     search: &Search,
 ) -> bool {
-    let zero = _mm512_setzero_si512();
     let base = points.as_ptr().cast::<i64>();
     let x = [xi.x, xi.y, xi.z].map(|c| _mm512_set1_epi64(c.to_bits()));
     let me = _mm512_set1_epi64(i as i64);
@@ -562,15 +560,9 @@ unsafe fn test_candidates(
         if search.skip_self {
             keep = _mm512_mask_cmpneq_epi64_mask(keep, j, me);
         }
-        let words = _mm512_add_epi64(_mm512_slli_epi64::<1>(j), j);
-        // The three gathers first, under the same mask, so that none waits for another's
-        // test.
-        let offset: [__m512i; 3] = core::array::from_fn(|c| {
-            let at = _mm512_add_epi64(words, _mm512_set1_epi64(c as i64));
-            // SAFETY: every index in use is below `points.len()` (checked above).
-            let xj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, keep, at, base) };
-            _mm512_sub_epi64(x[c], xj)
-        });
+        // SAFETY: every index in use is below `points.len()` (checked above).
+        let xj = unsafe { load_vectors(base, &candidates[first - count..], count) };
+        let offset: [__m512i; 3] = core::array::from_fn(|c| _mm512_sub_epi64(x[c], xj[c]));
         for o in offset {
             keep = _mm512_mask_cmplt_epi64_mask(keep, o, search.support);
             keep = _mm512_mask_cmpgt_epi64_mask(keep, o, search.neg_support);

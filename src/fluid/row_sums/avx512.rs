@@ -28,17 +28,19 @@
 use core::any::Any;
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cvtepu32_epi64,
-    _mm512_mask_cmplt_epu64_mask, _mm512_mask_i64gather_epi64, _mm512_maskz_loadu_epi32,
-    _mm512_maskz_loadu_epi64, _mm512_or_si512, _mm512_reduce_add_epi64, _mm512_reduce_or_epi64,
-    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_sub_epi64,
+    _mm512_mask_cmplt_epu64_mask, _mm512_maskz_loadu_epi32, _mm512_maskz_loadu_epi64,
+    _mm512_or_si512, _mm512_reduce_add_epi64, _mm512_reduce_or_epi64, _mm512_set1_epi64,
+    _mm512_setzero_si512, _mm512_sub_epi64,
 };
 use core::mem::size_of;
 
-use crate::fluid::lanes::{bit_length, magnitude, magnitude_of, mul, product};
+use crate::fluid::lanes::{
+    bit_length, load_values, load_vectors, magnitude, magnitude_of, mul, product,
+};
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::{Fx, Real, Vec3};
 
-// The layout the gathers rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
+// The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
 const _: () = {
     assert!(size_of::<Fx>() == 8);
     assert!(size_of::<Vec3<Fx>>() == 24);
@@ -289,22 +291,16 @@ unsafe fn density_rates_kernel<const NARROW: bool>(
         while first < range.end {
             let count = (range.end - first).min(8);
             // SAFETY: `first + count` is within the row, which ends within the entries.
-            let Some((mask, index, gradient)) =
-                (unsafe { load_entries(lists, first, count, points) })
+            let Some((_, _, gradient)) = (unsafe { load_entries(lists, first, count, points) })
             else {
                 return false;
             };
-            let words = _mm512_add_epi64(_mm512_slli_epi64::<1>(index), index);
+            // SAFETY: every index in use is below `velocities.len()` (`load_entries`).
+            let vj = unsafe { load_vectors(base, &lists.index[first..], count) };
             for c in 0..3 {
-                let at = _mm512_add_epi64(words, _mm512_set1_epi64(c));
-                // SAFETY: every index in use is below `velocities.len()` (`load_entries`).
-                let vj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, at, base) };
-                let g = gradient[c as usize];
+                let g = gradient[c];
                 gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
-                sum = _mm512_add_epi64(
-                    sum,
-                    product::<NARROW>(g, _mm512_sub_epi64(vi[c as usize], vj)),
-                );
+                sum = _mm512_add_epi64(sum, product::<NARROW>(g, _mm512_sub_epi64(vi[c], vj[c])));
             }
             first += count;
         }
@@ -348,13 +344,12 @@ unsafe fn pressure_pushes_kernel<const NARROW: bool>(
         while first < range.end {
             let count = (range.end - first).min(8);
             // SAFETY: `first + count` is within the row, which ends within the entries.
-            let Some((mask, index, gradient)) =
-                (unsafe { load_entries(lists, first, count, points) })
+            let Some((_, _, gradient)) = (unsafe { load_entries(lists, first, count, points) })
             else {
                 return false;
             };
             // SAFETY: every index in use is below `stiffness.len()` (`load_entries`).
-            let kj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, index, base) };
+            let kj = unsafe { load_values(base, &lists.index[first..], count) };
             let k = _mm512_add_epi64(ki, kj);
             for (p, g) in push.iter_mut().zip(gradient) {
                 gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
@@ -404,24 +399,22 @@ unsafe fn smoothing_sums_kernel<const NARROW: bool>(
         while first < range.end {
             let count = (range.end - first).min(8);
             // SAFETY: `first + count` is within the row, which ends within the entries.
-            let Some((mask, index)) = (unsafe { load_indices(lists, first, count, points) }) else {
+            let Some((mask, _)) = (unsafe { load_indices(lists, first, count, points) }) else {
                 return false;
             };
             // SAFETY: the masked load reads only the `count` entries from `first`, which
             // exist (the row ends within the entries).
             let value =
                 unsafe { _mm512_maskz_loadu_epi64(mask, lists.value.as_ptr().add(first).cast()) };
+            let indices = &lists.index[first..];
             // SAFETY: every index in use is below both slices' lengths (checked above).
-            let inverse =
-                unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, index, density_base) };
+            let inverse = unsafe { load_values(density_base, indices, count) };
             value_bits = _mm512_or_si512(value_bits, magnitude(value));
             let weight = mul(value, inverse);
             weight_bits = _mm512_or_si512(weight_bits, magnitude(weight));
-            let words = _mm512_add_epi64(_mm512_slli_epi64::<1>(index), index);
-            for (c, (s, vi)) in sum.iter_mut().zip(vi).enumerate() {
-                let at = _mm512_add_epi64(words, _mm512_set1_epi64(c as i64));
-                // SAFETY: every index in use is below `velocities.len()` (checked above).
-                let vj = unsafe { _mm512_mask_i64gather_epi64::<8>(zero, mask, at, velocity_base) };
+            // SAFETY: every index in use is below `velocities.len()` (checked above).
+            let vj = unsafe { load_vectors(velocity_base, indices, count) };
+            for ((s, vi), vj) in sum.iter_mut().zip(vi).zip(vj) {
                 *s = _mm512_add_epi64(*s, product::<NARROW>(weight, _mm512_sub_epi64(vj, vi)));
             }
             first += count;
