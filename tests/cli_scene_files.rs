@@ -194,6 +194,15 @@ fn rigid_body_errors_name_the_field() {
         b"(name: \"x\", rigid: (solver: (substeps: 0)))",
         &["rigid.solver.substeps", "must be 1 to 64"],
     );
+    // Lattices whose copies overflow 64 bits: refused, not a panic (found by fuzzing).
+    assert_scene_rejected(
+        b"(name: \"x\", rigid: (bodies: [(shape: Sphere(radius: 1.0), grid: (count: (4294967295, 4294967295, 4294967295), spacing: (x: 3.0, y: 3.0, z: 3.0)))]))",
+        &["rigid.bodies", "more than"],
+    );
+    assert_scene_rejected(
+        b"(name: \"x\", soft: (bodies: [(shape: Lattice(origin: (x: 0.0, y: 0.0, z: 0.0), spacing: 0.1, count: (4294967295, 4294967295, 4294967295)), model: SpringMass(stiffness: 10.0), mass: 1.0)]))",
+        &["soft.bodies[0]", "more than"],
+    );
 }
 
 #[test]

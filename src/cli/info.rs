@@ -112,9 +112,10 @@ fn joints_summary(desc: &JointsDesc<Fx>) -> String {
     ];
     let mut counts = [0u64; 8];
     for joint in &desc.list {
-        counts[usize::from(joint.kind.code())] += copies(joint.grid.map(|g| g.count));
+        let count = &mut counts[usize::from(joint.kind.code())];
+        *count = count.saturating_add(copies(joint.grid.map(|g| g.count)));
     }
-    let total: u64 = counts.iter().sum();
+    let total = counts.iter().fold(0u64, |sum, &n| sum.saturating_add(n));
     let kinds: Vec<String> = KINDS
         .iter()
         .zip(counts)
@@ -142,10 +143,7 @@ fn soft_summary(desc: &SoftDesc<Fx>) -> String {
                 }
                 SoftShape::Lattice {
                     count: (x, y, z), ..
-                } => (
-                    format!("{x}x{y}x{z} lattice"),
-                    u64::from(*x) * u64::from(*y) * u64::from(*z),
-                ),
+                } => (format!("{x}x{y}x{z} lattice"), copies(Some((*x, *y, *z)))),
             };
             vertices = vertices.saturating_add(count);
             let model = match body.model {

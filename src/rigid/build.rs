@@ -104,10 +104,13 @@ impl<R: Real> RigidSystem<R> {
     }
 }
 
-/// How many copies a lattice of `count` makes (1 without a lattice).
+/// How many copies a lattice of `count` makes (1 without a lattice), at most `u64::MAX`
+/// (three counts of 2³² − 1 would overflow).
 pub(crate) fn copies(count: Option<(u32, u32, u32)>) -> u64 {
     count.map_or(1, |(nx, ny, nz)| {
-        u64::from(nx) * u64::from(ny) * u64::from(nz)
+        u64::from(nx)
+            .saturating_mul(u64::from(ny))
+            .saturating_mul(u64::from(nz))
     })
 }
 
@@ -120,7 +123,7 @@ pub(crate) fn check_total(
     what: &str,
 ) -> Result<(), SceneError> {
     let total = counts.try_fold(0u64, |sum, count| {
-        let sum = sum + copies(count);
+        let sum = sum.saturating_add(copies(count));
         (sum <= u64::from(max)).then_some(sum)
     });
     match total {

@@ -676,7 +676,10 @@ fn check_shape<R: Real>(shape: &SoftShape<R>) -> Result<u64, SceneError> {
                     format!("must be above 0, the block within {MAX_MAGNITUDE} m"),
                 ));
             }
-            Ok(u64::from(nx) * u64::from(ny) * u64::from(nz))
+            // Saturating: three counts near 2³² would overflow u64.
+            Ok(u64::from(nx)
+                .saturating_mul(u64::from(ny))
+                .saturating_mul(u64::from(nz)))
         }
     }
     .and_then(|count| {
