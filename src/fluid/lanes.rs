@@ -1,6 +1,7 @@
 //! Eight I32F32 values side by side in an AVX-512 register: the exact products, the
-//! magnitudes and the loads of neighbours' values by index that the fluid's vector kernels
-//! ([`row_sums`](super::row_sums), [`neighbours`](super::neighbours)) are built from.
+//! magnitudes and the loads of neighbours' scalars by index that the fluid's vector
+//! kernels ([`row_sums`](super::row_sums), [`neighbours`](super::neighbours)) are built
+//! from (their vectors come from the soft kernels' [`gather3`](crate::soft::lanes::gather3)).
 //!
 //! `_mm512_mul_epi32` multiplies the signed low 32 bits of two lanes into 64. With
 //! a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ and a_l ∈ [−2³¹, 2³¹) the signed low half of a
@@ -17,8 +18,8 @@
 
 use core::arch::x86_64::{
     __m512i, _mm512_add_epi64, _mm512_mask_loadu_epi64, _mm512_mul_epi32, _mm512_or_si512,
-    _mm512_permutex2var_epi64, _mm512_set1_epi64, _mm512_setr_epi64, _mm512_setzero_si512,
-    _mm512_slli_epi64, _mm512_srai_epi64, _mm512_xor_si512,
+    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64, _mm512_srai_epi64,
+    _mm512_xor_si512,
 };
 
 /// The bit length of `bits` as an unsigned number.
@@ -76,58 +77,6 @@ pub(super) fn mul(a: __m512i, b: __m512i) -> __m512i {
     _mm512_add_epi64(_mm512_add_epi64(hh, cross), low)
 }
 
-/// x, y and z of the vectors `points[indices[l]]` (I32F32 bits, three words each) in lane l
-/// for the `count` first lanes (zero in the others): one masked load of three words per
-/// lane, then a transpose, which costs less than three gathers.
-///
-/// # Safety
-/// The processor must have AVX-512F; `count` ≤ 8 and ≤ `indices.len()`; each of the first
-/// `count` indices must be below the number of points at `points`.
-#[inline]
-#[target_feature(enable = "avx512f")]
-pub(super) unsafe fn load_vectors(
-    points: *const i64,
-    indices: &[u32],
-    count: usize,
-) -> [__m512i; 3] {
-    // [x, y, z, 0] of lanes 2k and 2k + 1: lane 2k's three words into the low half, lane
-    // 2k + 1's into the high half (a load from four words before them, its first four
-    // masked off).
-    let pair = |l: usize| {
-        let mut p = _mm512_setzero_si512();
-        for (half, mask) in [(0, 0b0000_0111), (1, 0b0111_0000)] {
-            if l + half < count {
-                // SAFETY: the caller's conditions: the masked load reads three words, those
-                // of point `indices[l + half]`.
-                unsafe {
-                    let at = points.add(3 * *indices.get_unchecked(l + half) as usize);
-                    p = _mm512_mask_loadu_epi64(p, mask, at.wrapping_sub(4 * half));
-                }
-            }
-        }
-        p
-    };
-    let (p0, p1, p2, p3) = (pair(0), pair(2), pair(4), pair(6));
-    let xy = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13);
-    let zz = _mm512_setr_epi64(2, 6, 10, 14, 2, 6, 10, 14);
-    // x and y of lanes 0–3, then 4–7; z of lanes 0–3, then 4–7.
-    let (xy_low, xy_high) = (
-        _mm512_permutex2var_epi64(p0, xy, p1),
-        _mm512_permutex2var_epi64(p2, xy, p3),
-    );
-    let (z_low, z_high) = (
-        _mm512_permutex2var_epi64(p0, zz, p1),
-        _mm512_permutex2var_epi64(p2, zz, p3),
-    );
-    let low = _mm512_setr_epi64(0, 1, 2, 3, 8, 9, 10, 11);
-    let high = _mm512_setr_epi64(4, 5, 6, 7, 12, 13, 14, 15);
-    [
-        _mm512_permutex2var_epi64(xy_low, low, xy_high),
-        _mm512_permutex2var_epi64(xy_low, high, xy_high),
-        _mm512_permutex2var_epi64(z_low, low, z_high),
-    ]
-}
-
 /// `values[indices[l]]` (I32F32 bits) in lane l for the `count` first lanes (zero in the
 /// others): one masked load of a word per lane, in two chains of merges (even and odd
 /// lanes) joined at the end, which costs less than a gather.
@@ -154,8 +103,9 @@ pub(super) unsafe fn load_values(values: *const i64, indices: &[u32], count: usi
 mod tests {
     use core::arch::x86_64::{__m512i, _mm512_storeu_si512};
 
-    use super::{load_values, load_vectors};
-    use crate::math::Pcg32;
+    use super::load_values;
+    use crate::math::{Fx, Pcg32, Vec3};
+    use crate::soft::lanes::gather3;
 
     fn words(lanes: __m512i) -> [i64; 8] {
         let mut out = [0i64; 8];
@@ -164,9 +114,10 @@ mod tests {
         out
     }
 
-    /// Every lane count from 0 to 8, indices anywhere in arrays of every length from 1 to 5
-    /// (the first and the last element among them): each lane in use holds its element,
-    /// the others zero.
+    /// `load_values` and the vector load the fluid shares with the soft kernels
+    /// ([`gather3`]), for every lane count from 0 to 8, indices anywhere in arrays of every
+    /// length from 1 to 5 (the first and the last element among them): each lane in use
+    /// holds its element, the others zero.
     #[test]
     fn the_loads_match_indexing() {
         if !std::arch::is_x86_feature_detected!("avx512f") {
@@ -180,6 +131,16 @@ mod tests {
             let vectors: Vec<i64> = (0..3 * len)
                 .map(|_| i64::from(rng.next_u32()) << 20)
                 .collect();
+            let points: Vec<Vec3<Fx>> = vectors
+                .chunks(3)
+                .map(|c| {
+                    Vec3::new(
+                        Fx::from_bits(c[0]),
+                        Fx::from_bits(c[1]),
+                        Fx::from_bits(c[2]),
+                    )
+                })
+                .collect();
             for count in 0..=8 {
                 for _ in 0..50 {
                     let indices: Vec<u32> =
@@ -188,7 +149,7 @@ mod tests {
                     let (scalars, [x, y, z]) = unsafe {
                         (
                             words(load_values(values.as_ptr(), &indices, count)),
-                            load_vectors(vectors.as_ptr(), &indices, count).map(words),
+                            gather3(&points, &indices).expect("in bounds").map(words),
                         )
                     };
                     for l in 0..8 {

@@ -76,13 +76,14 @@ pub(crate) fn load(values: &[Fx]) -> __m512i {
     unsafe { _mm512_loadu_si512(values.as_ptr().cast()) }
 }
 
-/// The positions of the eight vertices `indices` as x, y and z lanes, or `None` if an
-/// index is out of bounds: eight loads of three words and a transpose (the processor's
-/// gather instructions are slower on some cores).
+/// The positions of the vertices `indices` (at most eight: the lanes past them hold zero)
+/// as x, y and z lanes, or `None` if an index is out of bounds: a load of three words per
+/// vertex and a transpose (the processor's gather instructions are slower on some cores).
+/// The soft kernels and the fluid's neighbour sums share it.
 #[inline]
 #[target_feature(enable = "avx512f")]
 pub(crate) fn gather3(positions: &[Vec3<Fx>], indices: &[u32]) -> Option<[__m512i; 3]> {
-    let indices = &indices[..LANES];
+    let indices = &indices[..indices.len().min(LANES)];
     let mut vertices = [_mm512_setzero_si512(); LANES];
     for (vertex, &i) in vertices.iter_mut().zip(indices) {
         let position = positions.get(i as usize)?;

@@ -28,7 +28,7 @@ mod constraints;
 pub mod desc;
 pub mod hashing;
 #[cfg(target_arch = "x86_64")]
-mod lanes;
+pub(crate) mod lanes;
 mod metrics;
 pub mod presets;
 pub mod spring_mass;

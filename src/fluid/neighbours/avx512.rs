@@ -52,8 +52,9 @@ use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
 use crate::fluid::grid::CellGrid;
 use crate::fluid::kernel::Kernel;
-use crate::fluid::lanes::{bit_length, load_vectors, magnitude_of, mul, product};
+use crate::fluid::lanes::{bit_length, magnitude_of, mul, product};
 use crate::math::{Fx, Real, Vec3};
+use crate::soft::lanes::gather3;
 
 // The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
 const _: () = {
@@ -540,7 +541,6 @@ unsafe fn test_candidates(
     points: &[Vec3<Fx>],
     search: &Search,
 ) -> bool {
-    let base = points.as_ptr().cast::<i64>();
     let x = [xi.x, xi.y, xi.z].map(|c| _mm512_set1_epi64(c.to_bits()));
     let me = _mm512_set1_epi64(i as i64);
     let mut first = 0;
@@ -560,8 +560,10 @@ unsafe fn test_candidates(
         if search.skip_self {
             keep = _mm512_mask_cmpneq_epi64_mask(keep, j, me);
         }
-        // SAFETY: every index in use is below `points.len()` (checked above).
-        let xj = unsafe { load_vectors(base, &candidates[first - count..], count) };
+        // Every index in use is below `points.len()` (checked above).
+        let Some(xj) = gather3(points, &candidates[first - count..first]) else {
+            return false;
+        };
         let offset: [__m512i; 3] = core::array::from_fn(|c| _mm512_sub_epi64(x[c], xj[c]));
         for o in offset {
             keep = _mm512_mask_cmplt_epi64_mask(keep, o, search.support);

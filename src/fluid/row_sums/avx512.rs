@@ -34,11 +34,10 @@ use core::arch::x86_64::{
 };
 use core::mem::size_of;
 
-use crate::fluid::lanes::{
-    bit_length, load_values, load_vectors, magnitude, magnitude_of, mul, product,
-};
+use crate::fluid::lanes::{bit_length, load_values, magnitude, magnitude_of, mul, product};
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::{Fx, Real, Vec3};
+use crate::soft::lanes::gather3;
 
 // The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
 const _: () = {
@@ -271,7 +270,6 @@ unsafe fn density_rates_kernel<const NARROW: bool>(
 ) -> bool {
     out.clear();
     let zero = _mm512_setzero_si512();
-    let base = velocities.as_ptr().cast::<i64>();
     let points = _mm512_set1_epi64(velocities.len() as i64);
     let entries = lists
         .gradients
@@ -295,8 +293,10 @@ unsafe fn density_rates_kernel<const NARROW: bool>(
             else {
                 return false;
             };
-            // SAFETY: every index in use is below `velocities.len()` (`load_entries`).
-            let vj = unsafe { load_vectors(base, &lists.index[first..], count) };
+            // Every index in use is below `velocities.len()` (`load_entries`).
+            let Some(vj) = gather3(velocities, &lists.index[first..first + count]) else {
+                return false;
+            };
             for c in 0..3 {
                 let g = gradient[c];
                 gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
@@ -380,7 +380,6 @@ unsafe fn smoothing_sums_kernel<const NARROW: bool>(
 ) -> bool {
     out.clear();
     let zero = _mm512_setzero_si512();
-    let velocity_base = velocities.as_ptr().cast::<i64>();
     let density_base = inv_density.as_ptr().cast::<i64>();
     let points = _mm512_set1_epi64(velocities.len().min(inv_density.len()) as i64);
     let entries = lists.index.len().min(lists.value.len());
@@ -412,8 +411,10 @@ unsafe fn smoothing_sums_kernel<const NARROW: bool>(
             value_bits = _mm512_or_si512(value_bits, magnitude(value));
             let weight = mul(value, inverse);
             weight_bits = _mm512_or_si512(weight_bits, magnitude(weight));
-            // SAFETY: every index in use is below `velocities.len()` (checked above).
-            let vj = unsafe { load_vectors(velocity_base, indices, count) };
+            // Every index in use is below `velocities.len()` (checked above).
+            let Some(vj) = gather3(velocities, &indices[..count]) else {
+                return false;
+            };
             for ((s, vi), vj) in sum.iter_mut().zip(vi).zip(vj) {
                 *s = _mm512_add_epi64(*s, product::<NARROW>(weight, _mm512_sub_epi64(vj, vi)));
             }
