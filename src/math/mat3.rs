@@ -192,7 +192,8 @@ impl<R: Real> Mat3<R> {
     /// degenerate tensor it only guarantees a bounded result; diagonalise first. A negative
     /// or non-symmetric input gets the same safe treatment.
     ///
-    /// Entries of the result reach at most about 1/(τ·max|Mᵢⱼ|); only where that exceeds
+    /// Entries of the result reach at most about 1/(τ·max|Mᵢⱼ|), exceeded only by the
+    /// rounding of the scaled diagonal and of the reciprocal; only where that exceeds
     /// the format's range (max|Mᵢⱼ| below about 2⁻¹⁵ in I32F32) can they saturate, counted
     /// like any other overflow.
     pub fn safe_inverse_symmetric(self) -> Self {
