@@ -51,6 +51,20 @@ fn bad_fields_are_named() {
     fluid.tank.max = Vec3::splat(Fx::from_int(1000));
     assert_eq!(error_field(&scene), "fluid.tank.max.x");
 
+    // 300 spacings along each axis: far below the sites' limit, but 2.7·10⁷ grid cells of
+    // half a support (2 spacings), above the 2²⁴ a tank may span.
+    let mut scene = small_scene();
+    let fluid = scene.fluid.as_mut().unwrap();
+    fluid.tank.max = fluid.tank.min + Vec3::splat(fluid.spacing * Fx::from_int(300));
+    let error = scene.build().map(|_| ()).expect_err("the scene is refused");
+    assert_eq!(error.field, "fluid.tank");
+    assert!(
+        error
+            .to_string()
+            .contains("grid cells of half a kernel support; at most 16777216"),
+        "{error}"
+    );
+
     let mut scene = small_scene();
     scene.fluid.as_mut().unwrap().speed_of_sound = Fx::MAX;
     assert_eq!(error_field(&scene), "fluid.speed_of_sound");

@@ -175,7 +175,7 @@ impl<R: Real> FluidSettings<R> {
         if cells > MAX_CELLS {
             return Err(SceneError::new(
                 "tank",
-                format!("spans {cells} grid cells of one kernel support; at most {MAX_CELLS}"),
+                format!("spans {cells} grid cells of half a kernel support; at most {MAX_CELLS}"),
             ));
         }
         let boundary = boundary_count(self, MAX_SITES_PER_AXIS);

@@ -20,7 +20,7 @@ use crate::math::{Fx, Real, Vec3};
 pub const MAX_FLUID_PARTICLES: u32 = 1 << 20;
 /// The most boundary particles the tank's walls may need.
 pub const MAX_BOUNDARY_PARTICLES: u32 = 1 << 21;
-/// The most grid cells the tank may span (cells are one kernel support wide).
+/// The most grid cells the tank may span (cells are half a kernel support wide).
 pub const MAX_CELLS: u64 = 1 << 24;
 /// The most fluid substeps per world substep.
 pub const MAX_FLUID_SUBSTEPS: u32 = 1000;
