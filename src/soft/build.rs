@@ -10,6 +10,7 @@ use super::system::{Body, Model, Scratch, SoftSystem, Vertices};
 use super::topology::{self, Topology};
 use crate::math::{Real, Vec3};
 use crate::rigid::Shape;
+use crate::rigid::build::copies;
 use crate::scene::SceneError;
 
 /// The largest coordinate, size or speed a scene may use (m, m/s).
@@ -676,10 +677,7 @@ fn check_shape<R: Real>(shape: &SoftShape<R>) -> Result<u64, SceneError> {
                     format!("must be above 0, the block within {MAX_MAGNITUDE} m"),
                 ));
             }
-            // Saturating: three counts near 2³² would overflow u64.
-            Ok(u64::from(nx)
-                .saturating_mul(u64::from(ny))
-                .saturating_mul(u64::from(nz)))
+            Ok(copies(Some(count)))
         }
     }
     .and_then(|count| {

@@ -208,8 +208,8 @@ fn scalar_bits(values: &[Fx]) -> u32 {
     )
 }
 
-/// The neighbour indices of entries `first..first + count` (count 1 to 8) of a row: the
-/// lane mask and the indices as `i64`; or `None` when an index is not below `points`.
+/// The lane mask of entries `first..first + count` (count 1 to 8) of a row, or `None` when
+/// one of their neighbour indices is not below `points`.
 ///
 /// # Safety
 /// `first + count` must not exceed the number of entries of `lists.index`.
@@ -220,19 +220,19 @@ unsafe fn load_indices(
     first: usize,
     count: usize,
     points: __m512i,
-) -> Option<(__mmask8, __m512i)> {
+) -> Option<__mmask8> {
     let mask = ((1u16 << count) - 1) as __mmask8;
     // SAFETY: the masked load reads only the `count` entries from `first`, which exist.
     let index32 = unsafe {
         _mm512_maskz_loadu_epi32(u16::from(mask), lists.index.as_ptr().add(first).cast())
     };
     let index = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
-    (_mm512_mask_cmplt_epu64_mask(mask, index, points) == mask).then_some((mask, index))
+    (_mm512_mask_cmplt_epu64_mask(mask, index, points) == mask).then_some(mask)
 }
 
-/// The entries `first..first + count` (count 1 to 8) of a row: the lane mask, the
-/// neighbour indices as `i64`, and the three gradient components (zero past `count`); or
-/// `None` when an index is not below `points`.
+/// The three gradient components of entries `first..first + count` (count 1 to 8) of a row
+/// (zero past `count`), or `None` when one of their neighbour indices is not below
+/// `points`.
 ///
 /// # Safety
 /// `first + count` must not exceed the number of entries of `lists.index` and
@@ -244,15 +244,15 @@ unsafe fn load_entries(
     first: usize,
     count: usize,
     points: __m512i,
-) -> Option<(__mmask8, __m512i, [__m512i; 3])> {
+) -> Option<[__m512i; 3]> {
     // SAFETY: the caller's condition covers `lists.index`.
-    let (mask, index) = unsafe { load_indices(lists, first, count, points) }?;
+    let mask = unsafe { load_indices(lists, first, count, points) }?;
     // SAFETY: the masked loads read only the `count` entries from `first`, which exist.
     let gradient = lists
         .gradients
         .each_ref()
         .map(|g| unsafe { _mm512_maskz_loadu_epi64(mask, g.as_ptr().add(first).cast()) });
-    Some((mask, index, gradient))
+    Some(gradient)
 }
 
 /// The density rate kernel, for velocity differences below 2^`difference_bits` (32-bit
@@ -289,8 +289,7 @@ unsafe fn density_rates_kernel<const NARROW: bool>(
         while first < range.end {
             let count = (range.end - first).min(8);
             // SAFETY: `first + count` is within the row, which ends within the entries.
-            let Some((_, _, gradient)) = (unsafe { load_entries(lists, first, count, points) })
-            else {
+            let Some(gradient) = (unsafe { load_entries(lists, first, count, points) }) else {
                 return false;
             };
             // Every index in use is below `velocities.len()` (`load_entries`).
@@ -344,8 +343,7 @@ unsafe fn pressure_pushes_kernel<const NARROW: bool>(
         while first < range.end {
             let count = (range.end - first).min(8);
             // SAFETY: `first + count` is within the row, which ends within the entries.
-            let Some((_, _, gradient)) = (unsafe { load_entries(lists, first, count, points) })
-            else {
+            let Some(gradient) = (unsafe { load_entries(lists, first, count, points) }) else {
                 return false;
             };
             // SAFETY: every index in use is below `stiffness.len()` (`load_entries`).
@@ -398,7 +396,7 @@ unsafe fn smoothing_sums_kernel<const NARROW: bool>(
         while first < range.end {
             let count = (range.end - first).min(8);
             // SAFETY: `first + count` is within the row, which ends within the entries.
-            let Some((mask, _)) = (unsafe { load_indices(lists, first, count, points) }) else {
+            let Some(mask) = (unsafe { load_indices(lists, first, count, points) }) else {
                 return false;
             };
             // SAFETY: the masked load reads only the `count` entries from `first`, which
