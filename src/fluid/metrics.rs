@@ -70,8 +70,8 @@ impl<R: Real> FluidSystem<R> {
     }
 
     /// max(ρᵢ/ρ₀ − 1, 0) of each particle at the current positions.
-    pub fn density_errors(&self) -> Vec<f64> {
-        // ok-det: reporting
+    pub fn density_errors(&self) -> Vec<f64> // ok-det: reporting
+    {
         let mut copy = self.clone();
         copy.prepare();
         copy.search_neighbours();

@@ -75,8 +75,8 @@ mod tests {
 
     /// The count from the rule written out in `f64`: the fewest n with
     /// Δt (u + |g| Δt) ≤ n C H.
-    fn expected(speed: f64, cfl: f64, support: f64, cap: u32) -> u32 {
-        // ok-det: test reference
+    fn expected(speed: f64, cfl: f64, support: f64, cap: u32) -> u32 // ok-det: test reference
+    {
         let travel = (speed + 9.81 * 0.005) * 0.005;
         ((travel / (cfl * support)).ceil() as u32).clamp(1, cap)
     }

@@ -572,8 +572,8 @@ impl<Frac: FracBits> Serialize for Fixed<Frac> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         if serializer.is_human_readable() {
             let text = self.0.to_string();
-            match text.parse::<f64>() {
-                // ok-det: human-readable serde only
+            let shortest = text.parse::<f64>(); // ok-det: human-readable serde only
+            match shortest {
                 Ok(v) if fixed::traits::ToFixed::checked_to_fixed(v) == Some(self.0) => {
                     serializer.serialize_f64(v)
                 }
@@ -618,8 +618,8 @@ impl<Frac: FracBits> Visitor<'_> for HumanVisitor<Frac> {
         v.checked_to_fixed_or(self)
     }
 
-    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Self::Value, E> {
-        // ok-det: scene loading
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Self::Value, E> // ok-det: scene loading
+    {
         if !v.is_finite() {
             return Err(E::custom(format_args!("{v} is not a finite number")));
         }

@@ -44,8 +44,8 @@ impl Real for f64 {
     }
 
     fn parse_decimal(text: &str) -> Result<Self, ParseRealError> {
-        text.trim().parse::<f64>().map_err(|e| ParseRealError {
-            // ok-det: f64 reference format
+        let parsed = text.trim().parse::<f64>(); // ok-det: f64 reference format
+        parsed.map_err(|e| ParseRealError {
             text: text.to_owned(),
             reason: e.to_string(),
         })

@@ -120,13 +120,19 @@ struct Peer {
     lockstep_desync: Option<DesyncReport>,
 }
 
+/// Whether the wall clock has reached `deadline`: the session's timeouts, never simulated
+/// state.
+fn passed(deadline: Instant) -> bool {
+    Instant::now() >= deadline // ok-det: network session timeout, never simulated state
+}
+
 /// Runs a peer until every tick is confirmed, a desync is detected, a remote disconnects
 /// or the timeout expires (the last two are errors).
 pub fn run_peer(options: PeerOptions) -> Result<PeerOutcome, String> {
     let mut peer = Peer::start(options)?;
-    let deadline = Instant::now() + peer.options.timeout;
+    let deadline = Instant::now() + peer.options.timeout; // ok-det: network session timeout, never simulated state
     let desync = loop {
-        if Instant::now() >= deadline {
+        if passed(deadline) {
             return Err(peer.timeout_message());
         }
         if let Some(report) = peer.poll()? {
@@ -139,7 +145,7 @@ pub fn run_peer(options: PeerOptions) -> Result<PeerOutcome, String> {
             break None;
         }
     };
-    peer.linger(deadline.min(Instant::now() + LINGER));
+    peer.linger(deadline.min(Instant::now() + LINGER)); // ok-det: network session timeout, never simulated state
     Ok(match desync {
         Some(report) => PeerOutcome::Desync(report),
         None => PeerOutcome::Finished(Box::new(peer.confirmed.finish())),
@@ -347,7 +353,7 @@ impl Peer {
     /// Keeps the session going until `until`, ignoring its events, so that the other peers
     /// get this peer's last packets.
     fn linger(&mut self, until: Instant) {
-        while Instant::now() < until {
+        while !passed(until) {
             self.session.poll_remote_clients();
             self.session.events().for_each(drop);
             if !matches!(self.advance(), Ok(true)) {

@@ -48,15 +48,15 @@ impl<R: Real> SoftSystem<R> {
             }
             m.max_speed = m.max_speed.max(speed_squared.sqrt());
         }
-        let length = |a: u32, b: u32| -> f64 {
-            // ok-det: reporting
+        let length = |a: u32, b: u32| -> f64 // ok-det: reporting
+        {
             let d = (v.position[a as usize] - v.position[b as usize]).to_f64();
             (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
         };
         let mut stretch_sum = 0.0; // ok-det: reporting
         let mut edges = 0u64;
-        let mut stretch = |length: f64, rest: f64| -> f64 {
-            // ok-det: reporting
+        let mut stretch = |length: f64, rest: f64| -> f64 // ok-det: reporting
+        {
             let s = (length / rest - 1.0).max(0.0);
             m.max_stretch = m.max_stretch.max(s);
             stretch_sum += s;

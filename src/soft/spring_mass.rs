@@ -61,8 +61,8 @@ pub(crate) fn stability_measure<R: Real>(
     stiffness: R,
     damping: R,
     h: R,
-) -> f64 {
-    // ok-det: reporting (a build-time warning, never simulated)
+) -> f64 // ok-det: reporting (a build-time warning, never simulated)
+{
     let mut row = vec![0.0f64; inv_mass.len()]; // ok-det: reporting
     for (&i, &j) in a.iter().zip(b) {
         let (wi, wj) = (inv_mass[i as usize].to_f64(), inv_mass[j as usize].to_f64());
@@ -70,7 +70,7 @@ pub(crate) fn stability_measure<R: Real>(
         row[i as usize] += wi + cross;
         row[j as usize] += wj + cross;
     }
-    let lambda = row.into_iter().fold(0.0, f64::max);
+    let lambda = row.into_iter().fold(0.0, f64::max); // ok-det: reporting
     let h = h.to_f64();
     (h * h * stiffness.to_f64() + 2.0 * h * damping.to_f64()) * lambda
 }

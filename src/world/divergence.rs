@@ -100,8 +100,8 @@ fn points(metrics: &Metrics) -> u64 {
 }
 
 /// ε = (KE + |PE|) / n, J per point.
-fn energy_scale(metrics: &Metrics) -> f64 {
-    // ok-det: reporting
+fn energy_scale(metrics: &Metrics) -> f64 // ok-det: reporting
+{
     let points = points(metrics) as f64; // ok-det: reporting
     (metrics.kinetic_energy + metrics.potential_energy.abs()) / points
 }

@@ -86,8 +86,8 @@ impl Metrics {
     }
 
     /// Total mechanical energy, J.
-    pub fn total_energy(&self) -> f64 {
-        // ok-det: reporting
+    pub fn total_energy(&self) -> f64 // ok-det: reporting
+    {
         self.kinetic_energy + self.potential_energy
     }
 }

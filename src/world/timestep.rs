@@ -44,8 +44,8 @@ impl FixedTimestep {
 
     /// How far the current time is between the last tick and the next, in [0, 1).
     /// Render `previous.lerp(current, alpha)`.
-    pub fn alpha(&self) -> f64 {
-        // ok-det: render alpha, never simulated
+    pub fn alpha(&self) -> f64 // ok-det: render alpha, never simulated
+    {
         self.accumulated_nanos as f64 / self.tick_nanos as f64 // ok-det: render alpha
     }
 

@@ -110,16 +110,16 @@ mod tests {
     fn mixes_match_the_functions_with_their_saturations() {
         matches_the_functions::<Fx>(&pool());
         matches_the_functions::<FxI48F16>(&pool());
-        let mut floats = pool::<f64>();
+        let mut floats = pool::<f64>(); // ok-det: test of the f64 reference format
         floats.push(Material {
             friction: -0.0,
             restitution: -0.0,
         });
         floats.push(Material {
-            friction: f64::NAN,
+            friction: f64::NAN, // ok-det: test of the f64 reference format
             restitution: 0.5,
         });
-        matches_the_functions::<f64>(&floats);
+        matches_the_functions::<f64>(&floats); // ok-det: test of the f64 reference format
     }
 
     /// Saturating mixes are not remembered: each one counts its own saturation.

@@ -8,12 +8,14 @@ use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Real, Vec3};
 
 /// A value in [−scale, scale).
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
 }
 
 /// A vector up to `scale`, one component in twenty at an end of the format.
-fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
+fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> // ok-det: test input
+{
     let mut component = || match rng.below(20) {
         0 => [Fx::MAX, Fx::MIN][rng.below(2) as usize],
         _ => value(rng, scale),
@@ -22,7 +24,8 @@ fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
 }
 
 /// `count` vertices up to `scale`, every sixth one pinned.
-fn arrays(rng: &mut Pcg32, count: usize, scale: f64) -> [Vec<Vec3<Fx>>; 3] {
+fn arrays(rng: &mut Pcg32, count: usize, scale: f64) -> [Vec<Vec3<Fx>>; 3] // ok-det: test input
+{
     let mut vectors = || (0..count).map(|_| vector(rng, scale)).collect();
     [vectors(), vectors(), vectors()]
 }

@@ -10,19 +10,22 @@ use crate::rigid::solver::kernels_present;
 use crate::rigid::transform::Transform;
 
 /// A value in [−scale, scale).
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
 }
 
 /// Half extents between 0.05 and `scale` m.
-fn half_extents(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
+fn half_extents(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> // ok-det: test input
+{
     let lo = Fx::from_f64(0.05);
     let hi = Fx::from_f64(scale.max(0.06));
     Vec3::new(rng.range(lo, hi), rng.range(lo, hi), rng.range(lo, hi))
 }
 
 /// A rotation by up to `angle` rad about a random axis.
-fn rotation(rng: &mut Pcg32, angle: f64) -> Quat<Fx> {
+fn rotation(rng: &mut Pcg32, angle: f64) -> Quat<Fx> // ok-det: test input
+{
     if angle == 0.0 {
         return Quat::IDENTITY;
     }

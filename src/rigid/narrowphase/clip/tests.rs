@@ -91,7 +91,8 @@ fn contents(p: &Polygon<Fx>) -> Vec<([i64; 3], u32, u32)> {
 }
 
 /// A value in [−scale, scale).
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
 }
 

@@ -14,11 +14,13 @@ use crate::rigid::solver::lanes::LANES;
 use crate::rigid::solver::softness::Softness;
 
 /// A value in [−scale, scale).
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
 }
 
-fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
+fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> // ok-det: test input
+{
     Vec3::new(value(rng, scale), value(rng, scale), value(rng, scale))
 }
 
@@ -37,7 +39,8 @@ enum Masses {
 /// `count` moving bodies after the static body, with velocities and motions up to
 /// `scale`, masses as given and inertias to match; every fifth one kinematic (zero inverse
 /// mass and inertia).
-fn bodies(rng: &mut Pcg32, count: usize, scale: f64, masses: Masses) -> Vec<SolverBody<Fx>> {
+fn bodies(rng: &mut Pcg32, count: usize, scale: f64, masses: Masses) -> Vec<SolverBody<Fx>> // ok-det: test input
+{
     let mut bodies = vec![SolverBody::default()];
     let common = rng.range(Fx::from_f64(0.01), Fx::from_int(100));
     for i in 0..count {
@@ -78,7 +81,7 @@ fn block(
     bodies: &[SolverBody<Fx>],
     lanes: usize,
     independent: bool,
-    (impulse, separation): (f64, f64),
+    (impulse, separation): (f64, f64), // ok-det: test input
 ) -> ContactBlock<Fx> {
     let (mut block, arms) = lanes_of(rng, bodies, lanes, independent, (impulse, separation), 1.0);
     block.prepare_products(&arms, bodies);
@@ -93,8 +96,8 @@ fn lanes_of(
     bodies: &[SolverBody<Fx>],
     lanes: usize,
     independent: bool,
-    (impulse, separation): (f64, f64),
-    reach: f64,
+    (impulse, separation): (f64, f64), // ok-det: test input
+    reach: f64,                        // ok-det: test input
 ) -> (ContactBlock<Fx>, ContactArms<Fx>) {
     let mut arms = ContactArms::ZERO;
     let moving = bodies.len() as u32 - 1;
@@ -235,9 +238,9 @@ struct Runs {
 /// The magnitudes of a comparison: the largest velocity (m/s, and a hundredth of it for
 /// the motions), impulse (N·s) and separation (m), and the masses.
 struct Scales {
-    velocity: f64,
-    impulse: f64,
-    separation: f64,
+    velocity: f64,   // ok-det: test input
+    impulse: f64,    // ok-det: test input
+    separation: f64, // ok-det: test input
     masses: Masses,
 }
 
@@ -446,7 +449,8 @@ fn blocks_that_saturate_match_the_lanes() {
 
 /// Runs `trials` random blocks, velocities up to `scale` and anchors within `reach`, through
 /// both forms of the preparation products and returns how many blocks the kernel took.
-fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usize {
+fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usize // ok-det: test input
+{
     let mut rng = Pcg32::new(seed, 11);
     let mut kernel_runs = 0;
     for trial in 0..trials {
@@ -531,7 +535,8 @@ fn preparation_that_saturates_matches_the_lanes() {
 /// `lengths` (one per lane) through both forms of the tangents, and returns how many blocks
 /// the kernel took and how many saturations the lanes counted. The bits and saturation
 /// counts must match whichever path runs.
-fn compare_tangents(seed: u64, trials: usize, lengths: &[f64]) -> (usize, u64) {
+fn compare_tangents(seed: u64, trials: usize, lengths: &[f64]) -> (usize, u64) // ok-det: test input
+{
     let mut rng = Pcg32::new(seed, 13);
     let (mut kernel_runs, mut saturations) = (0, 0);
     for trial in 0..trials {

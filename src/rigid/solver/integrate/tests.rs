@@ -8,13 +8,15 @@ use crate::rigid::solver::kernels_present;
 use crate::rigid::solver::lanes::LANES;
 
 /// A value in [−scale, scale).
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
 }
 
 /// A rotation, its components moved by up to `drift` each (so that some are not quite
 /// unit length).
-fn orientation(rng: &mut Pcg32, drift: f64) -> Quat<Fx> {
+fn orientation(rng: &mut Pcg32, drift: f64) -> Quat<Fx> // ok-det: test input
+{
     let angle = value(rng, 3.0);
     let q = Quat::from_axis_angle(rng.unit_vector(), angle);
     Quat::new(
@@ -30,7 +32,8 @@ fn orientation(rng: &mut Pcg32, drift: f64) -> Quat<Fx> {
 /// through the kernel, the lanes it leaves through [`Quat::integrate`], and all of them
 /// through [`Quat::integrate`]; asserts the same bits and no saturation difference, and
 /// returns how many lanes the kernel integrated.
-fn compare(seed: u64, trials: usize, spin: f64, drift: f64) -> usize {
+fn compare(seed: u64, trials: usize, spin: f64, drift: f64) -> usize // ok-det: test input
+{
     let mut rng = Pcg32::new(seed, 13);
     let h = Fx::from_ratio(1, 300);
     let mut taken = 0;

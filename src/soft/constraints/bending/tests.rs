@@ -8,20 +8,23 @@ use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Real, Vec3};
 
 /// A value in [−scale, scale), one in forty at an end of the format.
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     match rng.below(40) {
         0 => [Fx::MAX, Fx::MIN][rng.below(2) as usize],
         _ => rng.range(Fx::from_f64(-scale), Fx::from_f64(scale)),
     }
 }
 
-fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
+fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> // ok-det: test input
+{
     Vec3::new(value(rng, scale), value(rng, scale), value(rng, scale))
 }
 
 /// `count` hinges over `vertices` vertices: runs that share no vertex (a shuffled vertex
 /// list cut into fours), a corner drawn at random every so often.
-fn hinges(rng: &mut Pcg32, vertices: u32, count: usize, scale: f64) -> Hinges<Fx> {
+fn hinges(rng: &mut Pcg32, vertices: u32, count: usize, scale: f64) -> Hinges<Fx> // ok-det: test input
+{
     let mut h = Hinges::default();
     let mut order: Vec<u32> = (0..vertices).collect();
     let mut next = order.len();

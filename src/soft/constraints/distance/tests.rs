@@ -8,11 +8,13 @@ use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Real, Vec3};
 
 /// A value in [−scale, scale) m.
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
 }
 
-fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
+fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> // ok-det: test input
+{
     Vec3::new(value(rng, scale), value(rng, scale), value(rng, scale))
 }
 

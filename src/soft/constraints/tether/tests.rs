@@ -8,12 +8,14 @@ use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Real, Vec3};
 
 /// A value in [−scale, scale) m.
-fn value(rng: &mut Pcg32, scale: f64) -> Fx {
+fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
+{
     rng.range(Fx::from_f64(-scale), Fx::from_f64(scale))
 }
 
 /// A position up to `scale`, one component in thirty at an end of the format.
-fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> {
+fn vector(rng: &mut Pcg32, scale: f64) -> Vec3<Fx> // ok-det: test input
+{
     let mut component = || match rng.below(30) {
         0 => [Fx::MAX, Fx::MIN][rng.below(2) as usize],
         _ => value(rng, scale),

@@ -175,7 +175,8 @@ fn coarse(v: Vec3<Fx>, shift: u32) -> Vec3<FxI48F16> {
 }
 
 /// `v` in f64.
-fn float(v: Vec3<FxI48F16>) -> Vec3<f64> {
+fn float(v: Vec3<FxI48F16>) -> Vec3<f64> // ok-det: test input
+{
     let [x, y, z] = v.to_f64();
     Vec3::new(x, y, z)
 }
