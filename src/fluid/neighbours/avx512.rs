@@ -1,4 +1,5 @@
-//! The neighbour search in AVX-512F for I32F32: eight candidates side by side through
+//! The neighbour search in AVX-512F (with AVX-512CD's leading-zero count for the square
+//! root) for I32F32: eight candidates side by side through
 //! the support test, the survivors packed in order, then eight survivors side by side
 //! through the kernel's value and gradient.
 //!
@@ -39,14 +40,15 @@
 
 use core::any::Any;
 use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cmpgt_epu64_mask,
-    _mm512_cmple_epu64_mask, _mm512_cvtepu32_epi64, _mm512_loadu_si512, _mm512_mask_add_epi64,
-    _mm512_mask_cmpgt_epi64_mask, _mm512_mask_cmplt_epi64_mask, _mm512_mask_cmplt_epu64_mask,
-    _mm512_mask_cmpneq_epi64_mask, _mm512_mask_mov_epi64, _mm512_maskz_compress_epi64,
-    _mm512_maskz_loadu_epi32, _mm512_mul_epu32, _mm512_or_si512, _mm512_set1_epi64,
-    _mm512_setzero_si512, _mm512_slli_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
+    __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cvtepu32_epi64,
+    _mm512_loadu_si512, _mm512_mask_cmpgt_epi64_mask, _mm512_mask_cmplt_epi64_mask,
+    _mm512_mask_cmplt_epu64_mask, _mm512_mask_cmpneq_epi64_mask, _mm512_maskz_compress_epi64,
+    _mm512_maskz_loadu_epi32, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
+    _mm512_storeu_si512, _mm512_sub_epi64,
 };
 use core::mem::size_of;
+
+use self::sqrt::sqrt;
 
 use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
@@ -56,6 +58,8 @@ use crate::fluid::lanes::{bit_length, magnitude_of, mul, product};
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::gather3;
 
+mod sqrt;
+
 // The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
 const _: () = {
     assert!(size_of::<Fx>() == 8);
@@ -63,7 +67,7 @@ const _: () = {
 };
 
 /// [`NeighbourLists::build`] with the kernel when `R` is I32F32, the processor has
-/// AVX-512F and the inputs are within the bounds (see the module documentation); returns
+/// AVX-512F and CD and the inputs are within the bounds (see the module documentation); returns
 /// whether it did (if not, the lists hold nothing of use).
 pub(super) fn build<R: Real>(
     lists: &mut NeighbourLists<R>,
@@ -85,7 +89,7 @@ pub(super) fn build<R: Real>(
     let search = &admitted.search;
     let within = Within::new(grid, search.inv_radius, grid.span(search.radius));
     let (queries, points) = (admitted.queries, admitted.points);
-    // SAFETY: `admit` detected AVX-512F and checked the bounds.
+    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds.
     unsafe { build_kernel(lists, queries, points, within, search) }
 }
 
@@ -122,7 +126,7 @@ pub(super) fn build_both<R: Real>(
         (among_fluid.points, &among_fluid.search),
         (among_walls.points, &among_walls.search),
     ];
-    // SAFETY: `admit` detected AVX-512F and checked the bounds of both searches.
+    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds of both searches.
     unsafe {
         build_both_kernel(
             [fluid, walls],
@@ -152,7 +156,7 @@ pub(super) fn evaluate<R: Real>(
         return false;
     };
     let (queries, points) = (admitted.queries, admitted.points);
-    // SAFETY: `admit` detected AVX-512F and checked the bounds.
+    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds.
     unsafe { build_kernel(lists, queries, points, candidates, &admitted.search) }
 }
 
@@ -179,13 +183,13 @@ pub(super) fn select<R: Real>(
     };
     let within = Within::new(grid, admitted.search.inv_radius, reach.span);
     let (queries, points) = (admitted.queries, admitted.points);
-    // SAFETY: `admit` detected AVX-512F and checked the bounds.
+    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds.
     unsafe { select_kernel(rows, queries, points, within, &admitted.search) }
 }
 
 /// The inputs in I32F32 and the constants of a search within a radius (`radius`: the
 /// radius and its inverse) with the kernel scales `scales` (c_w, c_g), when `R` is I32F32,
-/// the processor has AVX-512F and the inputs are within the bounds of the module
+/// the processor has AVX-512F and CD and the inputs are within the bounds of the module
 /// documentation.
 fn admit<'a, R: Real>(
     queries: &'a [Vec3<R>],
@@ -194,7 +198,9 @@ fn admit<'a, R: Real>(
     scales: [R; 2],
     skip_self: bool,
 ) -> Option<Admitted<'a>> {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !std::arch::is_x86_feature_detected!("avx512f")
+        || !std::arch::is_x86_feature_detected!("avx512cd")
+    {
         return None;
     }
     let fx = |value: &R| (value as &dyn Any).downcast_ref::<Fx>().copied();
@@ -223,7 +229,7 @@ fn admit<'a, R: Real>(
     {
         return None;
     }
-    // SAFETY: AVX-512F was detected above.
+    // SAFETY: AVX-512F and CD was detected above.
     let lanes = |bits: i64| unsafe { _mm512_set1_epi64(bits) };
     let search = Search {
         radius,
@@ -304,7 +310,7 @@ impl<'a> Within<'a> {
 impl Within<'_> {
     /// The candidates of a query at `xi`.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512cd")]
     fn collect(&mut self, xi: Vec3<Fx>) -> &[u32] {
         self.found.clear();
         let found = &mut self.found;
@@ -318,7 +324,7 @@ impl Candidates for Within<'_> {
     #[inline(always)]
     fn of(&mut self, _: usize, xi: Vec3<Fx>) -> &[u32] {
         // SAFETY: a `Within` is made only for a search that `admit` let through, which
-        // detected AVX-512F.
+        // detected AVX-512F and CD.
         unsafe { self.collect(xi) }
     }
 }
@@ -327,7 +333,7 @@ impl Candidates for Within<'_> {
 /// spare capacity. A grid row holds a few points (one per cell at rest), which a call to
 /// `memcpy` per row (`extend_from_slice`) copied at several times the cost.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512cd")]
 fn append(found: &mut Vec<u32>, row: &[u32]) {
     let len = found.len();
     found.reserve(row.len() + 16);
@@ -370,7 +376,7 @@ impl Survivors {
 
     /// Appends the lanes of `keep` of `values` (index, d_x, d_y, d_z, q²), in lane order.
     #[inline]
-    #[target_feature(enable = "avx512f")]
+    #[target_feature(enable = "avx512f,avx512cd")]
     fn append(&mut self, keep: __mmask8, values: [__m512i; 5]) {
         let at = self.len;
         for (list, lanes) in self.lanes.iter_mut().zip(values) {
@@ -400,8 +406,8 @@ impl Survivors {
 /// false when a candidate is not a point's index (the lists then hold nothing of use).
 ///
 /// # Safety
-/// The processor must have AVX-512F; the bounds of [`build`] must hold.
-#[target_feature(enable = "avx512f")]
+/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
+#[target_feature(enable = "avx512f,avx512cd")]
 unsafe fn build_kernel(
     lists: &mut NeighbourLists<Fx>,
     queries: &[Vec3<Fx>],
@@ -426,8 +432,8 @@ unsafe fn build_kernel(
 /// the boundary), in one walk of the cells: each list gets the rows its own search would.
 ///
 /// # Safety
-/// The processor must have AVX-512F; the bounds of [`build`] must hold for both searches.
-#[target_feature(enable = "avx512f")]
+/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold for both searches.
+#[target_feature(enable = "avx512f,avx512cd")]
 unsafe fn build_both_kernel(
     lists: [&mut NeighbourLists<Fx>; 2],
     queries: &[Vec3<Fx>],
@@ -468,9 +474,9 @@ unsafe fn build_both_kernel(
 /// survivors once there are enough. False when a candidate is not a point's index.
 ///
 /// # Safety
-/// The processor must have AVX-512F; the bounds of [`build`] must hold.
+/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512cd")]
 unsafe fn add_row(
     lists: &mut NeighbourLists<Fx>,
     survivors: &mut Survivors,
@@ -502,8 +508,8 @@ const PENDING: usize = 256;
 /// when a candidate is not a point's index (the rows then hold nothing of use).
 ///
 /// # Safety
-/// The processor must have AVX-512F; the bounds of [`build`] must hold.
-#[target_feature(enable = "avx512f")]
+/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
+#[target_feature(enable = "avx512f,avx512cd")]
 unsafe fn select_kernel(
     rows: &mut CandidateRows,
     queries: &[Vec3<Fx>],
@@ -530,9 +536,9 @@ unsafe fn select_kernel(
 /// with d and q²; false when a candidate is not a point's index.
 ///
 /// # Safety
-/// The processor must have AVX-512F; the bounds of [`build`] must hold.
+/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512cd")]
 unsafe fn test_candidates(
     survivors: &mut Survivors,
     candidates: &[u32],
@@ -586,7 +592,7 @@ unsafe fn test_candidates(
 /// Appends the survivors to the lists' entries with V₀W and V₀∇ᵢW (the caller closes the
 /// rows), eight at a time, up to four blocks of eight side by side (so that their square
 /// roots, each a chain of dependent steps, overlap).
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512cd")]
 fn evaluate_survivors(lists: &mut NeighbourLists<Fx>, survivors: &Survivors, search: &Search) {
     let mut first = 0;
     while first < survivors.len {
@@ -602,7 +608,7 @@ fn evaluate_survivors(lists: &mut NeighbourLists<Fx>, survivors: &Survivors, sea
 /// Evaluates and appends `BLOCKS` blocks of eight survivors from `first` (the last may be
 /// partial); returns the next survivor.
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512cd")]
 fn evaluate_blocks<const BLOCKS: usize>(
     lists: &mut NeighbourLists<Fx>,
     survivors: &Survivors,
@@ -650,7 +656,7 @@ fn evaluate_blocks<const BLOCKS: usize>(
 /// V₀W and V₀∇ᵢW of eight survivors from q = √q² and d, as [`Kernel::evaluate_within`]
 /// computes them (see the module documentation).
 #[inline]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,avx512cd")]
 fn kernel_values(q: __m512i, d: [__m512i; 3], search: &Search) -> (__m512i, [__m512i; 3]) {
     let t = _mm512_sub_epi64(search.one, q);
     let t3 = mul(mul(t, t), t);
@@ -658,31 +664,4 @@ fn kernel_values(q: __m512i, d: [__m512i; 3], search: &Search) -> (__m512i, [__m
     let value = mul(search.density_scale, mul(mul(t3, t), grow));
     let slope = _mm512_sub_epi64(_mm512_setzero_si512(), mul(search.gradient_scale, t3));
     (value, d.map(|c| mul(c, slope)))
-}
-
-/// √x per lane for 0 ≤ x < 1 as I32F32 bits (0 ≤ x < 2³²), in `BLOCKS` registers side by
-/// side: round(√(x·2³²)), correctly rounded to nearest like [`Real::sqrt`] of I32F32.
-/// With n = x·2³² < 2⁶⁴, the floor r = ⌊√n⌋ < 2³² is found bit by bit from the top (a bit
-/// stays when the square, exact in 64 bits, does not pass n), then r + 1 is taken when
-/// n > r² + r, i.e. when √n lies at or past r + ½ (n is a whole number, and
-/// (r + ½)² = r² + r + ¼).
-#[inline]
-#[target_feature(enable = "avx512f")]
-pub(super) fn sqrt<const BLOCKS: usize>(x: [__m512i; BLOCKS]) -> [__m512i; BLOCKS] {
-    let n = x.map(|x| _mm512_slli_epi64::<32>(x));
-    let mut root = [_mm512_setzero_si512(); BLOCKS];
-    for bit in (0..32).rev() {
-        let step = _mm512_set1_epi64(1 << bit);
-        for (r, &n) in root.iter_mut().zip(&n) {
-            let candidate = _mm512_or_si512(*r, step);
-            let fits = _mm512_cmple_epu64_mask(_mm512_mul_epu32(candidate, candidate), n);
-            *r = _mm512_mask_mov_epi64(*r, fits, candidate);
-        }
-    }
-    core::array::from_fn(|b| {
-        let r = root[b];
-        let square_and_root = _mm512_add_epi64(_mm512_mul_epu32(r, r), r);
-        let up = _mm512_cmpgt_epu64_mask(n[b], square_and_root);
-        _mm512_mask_add_epi64(r, up, r, _mm512_set1_epi64(1))
-    })
 }
