@@ -110,12 +110,13 @@ impl<R: Real> FluidSystem<R> {
 
     /// αᵢ = (1/Δt) / (Δt max(Dᵢ, D₀/16)) into `factor`, and
     /// Σ_b V₀∇W_ib into `wall_gradient`. The fluid's gradient sums pass through `delta`
-    /// and `rate`, which the solves overwrite.
+    /// and `rate`, which the solves overwrite; their bit length, into `gradient_bits`,
+    /// serves the iterations that follow on the same lists.
     fn compute_factors(&mut self, dt: R) {
         let inv_dt = dt.recip();
         let floor = self.settings.kernel.lattice_gradient_norm * R::from_ratio(1, 16);
         let s = &mut self.scratch;
-        row_sums::gradient_sums(&s.fluid, &mut s.delta, &mut s.rate);
+        s.gradient_bits = row_sums::gradient_sums(&s.fluid, &mut s.delta, &mut s.rate);
         s.factor.clear();
         s.wall_gradient.clear();
         for i in 0..self.positions.len() {
@@ -134,7 +135,7 @@ impl<R: Real> FluidSystem<R> {
     /// says; returns Σ max(ρ̃*ᵢ − 1, 0) and the largest max(ρ̃*ᵢ − 1, 0).
     fn predict_stiffness(&mut self, dt: R, solve: Solve) -> (R, R) {
         let s = &mut self.scratch;
-        row_sums::density_rates(&s.fluid, &self.velocities, &mut s.rate);
+        row_sums::density_rates(&s.fluid, s.gradient_bits, &self.velocities, &mut s.rate);
         s.scalar.clear();
         let mut total = R::ZERO;
         let mut largest = R::ZERO;
@@ -155,7 +156,7 @@ impl<R: Real> FluidSystem<R> {
     /// vᵢ ← vᵢ − Δt (Σⱼ (kᵢ + kⱼ) V₀∇Wᵢⱼ + Σ_b kᵢ V₀∇W_ib), Jacobi.
     fn correct_velocities(&mut self, dt: R) {
         let s = &mut self.scratch;
-        row_sums::pressure_pushes(&s.fluid, &s.scalar, &mut s.delta);
+        row_sums::pressure_pushes(&s.fluid, s.gradient_bits, &s.scalar, &mut s.delta);
         for (i, v) in self.velocities.iter_mut().enumerate() {
             *v -= (s.delta[i] + s.wall_gradient[i] * s.scalar[i]) * dt;
         }

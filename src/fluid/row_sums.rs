@@ -20,12 +20,17 @@
 //! partial sum leaves the range. The AVX-512 kernel ([`avx512`], I32F32 on x86-64 when the
 //! processor has AVX-512F) computes every product rounded exactly as the checked `*`, and
 //! sums eight entries side by side, then the lanes. It measures the bit lengths of what it
-//! read (gradients, velocities or stiffnesses) and the longest row, and its result stands
+//! reads (gradients, velocities or stiffnesses) and the longest row, and its result stands
 //! only when those bounds prove that no product and no partial sum, in any order, can leave
 //! the range: then the checked operators of the scalar form saturate nowhere and both give
 //! the exact sums (the smoothing sum's weights, themselves products, are checked the same
 //! way). Otherwise the scalar form runs, saturating and counting as it always
 //! does. Other formats and targets run the scalar form only.
+//!
+//! The gradients stay the same through a substep while the DFSPH iterations read them again
+//! and again, so their bit length is measured once, by [`gradient_sums`] at the start of
+//! the substep ([`GradientBits`]), and [`density_rates`] and [`pressure_pushes`] take it
+//! from there.
 
 #[cfg(target_arch = "x86_64")]
 mod avx512;
@@ -35,15 +40,27 @@ mod tests;
 use super::neighbours::NeighbourLists;
 use crate::math::{Real, Vec3};
 
+/// The bit length A of the largest gradient component of a set of lists (|V₀∇W| ≤ 2ᴬ as
+/// raw bits), as [`gradient_sums`] measured it, on which the vector kernels of
+/// [`density_rates`] and [`pressure_pushes`] rest; `None` where it was not measured (other
+/// formats and targets, or rows running past the entries), and those sums then take the
+/// scalar form.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct GradientBits(Option<u32>);
+
 /// Σⱼ (vᵢ − vⱼ)·V₀∇ᵢWᵢⱼ over the fluid neighbours of each particle of `lists` (1/s), into
-/// `out`, one per particle.
+/// `out`, one per particle. `gradients` must be what [`gradient_sums`] returned for these
+/// lists, unchanged since.
 pub(crate) fn density_rates<R: Real>(
     lists: &NeighbourLists<R>,
+    gradients: GradientBits,
     velocities: &[Vec3<R>],
     out: &mut Vec<R>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if avx512::density_rates(lists, velocities, out) {
+    if let GradientBits(Some(bits)) = gradients
+        && avx512::density_rates(lists, bits, velocities, out)
+    {
         return;
     }
     density_rates_scalar(lists, velocities, out);
@@ -67,14 +84,18 @@ pub(crate) fn density_rates_scalar<R: Real>(
 }
 
 /// Σⱼ (kᵢ + kⱼ) V₀∇ᵢWᵢⱼ over the fluid neighbours of each particle of `lists` (m/s²), for
-/// the stiffnesses `stiffness` (m²/s²), into `out`, one per particle.
+/// the stiffnesses `stiffness` (m²/s²), into `out`, one per particle. `gradients` as for
+/// [`density_rates`].
 pub(crate) fn pressure_pushes<R: Real>(
     lists: &NeighbourLists<R>,
+    gradients: GradientBits,
     stiffness: &[R],
     out: &mut Vec<Vec3<R>>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if avx512::pressure_pushes(lists, stiffness, out) {
+    if let GradientBits(Some(bits)) = gradients
+        && avx512::pressure_pushes(lists, bits, stiffness, out)
+    {
         return;
     }
     pressure_pushes_scalar(lists, stiffness, out);
@@ -133,17 +154,26 @@ pub(crate) fn smoothing_sums_scalar<R: Real>(
 
 /// Σⱼ V₀∇ᵢWᵢⱼ (1/m) into `sums` and Σⱼ |V₀∇ᵢWᵢⱼ|² (1/m²) into `squares` over the fluid
 /// neighbours of each particle of `lists`, one each per particle: DFSPH's factor
-/// ([`dfsph`](super::dfsph)).
+/// ([`dfsph`](super::dfsph)). Returns the gradients' bit length where the vector kernel
+/// measured it, for the other sums over the same lists.
 pub(crate) fn gradient_sums<R: Real>(
     lists: &NeighbourLists<R>,
     sums: &mut Vec<Vec3<R>>,
     squares: &mut Vec<R>,
-) {
+) -> GradientBits {
     #[cfg(target_arch = "x86_64")]
-    if avx512::gradient_sums(lists, sums, squares) {
-        return;
+    {
+        let (stands, bits) = avx512::gradient_sums(lists, sums, squares);
+        if !stands {
+            gradient_sums_scalar(lists, sums, squares);
+        }
+        GradientBits(bits)
     }
-    gradient_sums_scalar(lists, sums, squares);
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        gradient_sums_scalar(lists, sums, squares);
+        GradientBits(None)
+    }
 }
 
 /// [`gradient_sums`] with the checked operators, entry after entry.

@@ -9,6 +9,7 @@ use super::grid::CellGrid;
 use super::kernel::{Kernel, lattice_reach};
 use super::neighbours::NeighbourLists;
 use super::neighbours::skin::{Reach, SkinLists};
+use super::row_sums::GradientBits;
 use crate::math::{Fx, Real, Vec3};
 
 /// The compiled settings of a fluid: the description's values and the constants derived
@@ -112,6 +113,9 @@ pub(crate) struct Scratch<R: Real> {
     pub delta: Vec<Vec3<R>>,
     /// Σⱼ (vᵢ − vⱼ)·V₀∇Wᵢⱼ of each fluid particle, 1/s (DFSPH).
     pub rate: Vec<R>,
+    /// The bit length of the fluid lists' gradients, measured with DFSPH's factors for the
+    /// iterations of the same substep.
+    pub gradient_bits: GradientBits,
     /// Solver iterations of the last step, summed over its substeps (DFSPH), for reports.
     pub last_iterations: u32,
     /// Substeps of the last step, for reports.

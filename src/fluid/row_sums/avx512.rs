@@ -53,6 +53,7 @@ const MAX_OPERAND_BITS: u32 = 61;
 #[allow(clippy::ptr_arg)] // `out` is downcast to the `Vec` it grows
 pub(super) fn density_rates<R: Real>(
     lists: &NeighbourLists<R>,
+    gradient_bits: u32,
     velocities: &[Vec3<R>],
     out: &mut Vec<R>,
 ) -> bool {
@@ -73,9 +74,9 @@ pub(super) fn density_rates<R: Real>(
     // SAFETY: AVX-512F was detected just above.
     unsafe {
         if difference_bits <= 31 {
-            density_rates_kernel::<true>(lists, velocities, difference_bits, out)
+            density_rates_kernel::<true>(lists, velocities, [gradient_bits, difference_bits], out)
         } else {
-            density_rates_kernel::<false>(lists, velocities, difference_bits, out)
+            density_rates_kernel::<false>(lists, velocities, [gradient_bits, difference_bits], out)
         }
     }
 }
@@ -85,6 +86,7 @@ pub(super) fn density_rates<R: Real>(
 #[allow(clippy::ptr_arg)] // `out` is downcast to the `Vec` it grows
 pub(super) fn pressure_pushes<R: Real>(
     lists: &NeighbourLists<R>,
+    gradient_bits: u32,
     stiffness: &[R],
     out: &mut Vec<Vec3<R>>,
 ) -> bool {
@@ -105,9 +107,9 @@ pub(super) fn pressure_pushes<R: Real>(
     // SAFETY: AVX-512F was detected just above.
     unsafe {
         if sum_bits <= 31 {
-            pressure_pushes_kernel::<true>(lists, stiffness, sum_bits, out)
+            pressure_pushes_kernel::<true>(lists, stiffness, [gradient_bits, sum_bits], out)
         } else {
-            pressure_pushes_kernel::<false>(lists, stiffness, sum_bits, out)
+            pressure_pushes_kernel::<false>(lists, stiffness, [gradient_bits, sum_bits], out)
         }
     }
 }
@@ -154,22 +156,24 @@ pub(super) fn smoothing_sums<R: Real>(
 }
 
 /// [`gradient_sums`](super::gradient_sums) with the kernel, under the same conditions as
-/// [`density_rates`].
+/// [`density_rates`]: whether it did (if not, `sums` and `squares` hold nothing of use),
+/// and the bit length A of the largest gradient component when it read every row (the
+/// bound of [`density_rates`] and [`pressure_pushes`] over the same lists).
 #[allow(clippy::ptr_arg)] // `sums` and `squares` are downcast to the `Vec`s they grow
 pub(super) fn gradient_sums<R: Real>(
     lists: &NeighbourLists<R>,
     sums: &mut Vec<Vec3<R>>,
     squares: &mut Vec<R>,
-) -> bool {
+) -> (bool, Option<u32>) {
     if !std::arch::is_x86_feature_detected!("avx512f") {
-        return false;
+        return (false, None);
     }
     let (Some(lists), Some(sums), Some(squares)) = (
         (lists as &dyn Any).downcast_ref::<NeighbourLists<Fx>>(),
         (sums as &mut dyn Any).downcast_mut::<Vec<Vec3<Fx>>>(),
         (squares as &mut dyn Any).downcast_mut::<Vec<Fx>>(),
     ) else {
-        return false;
+        return (false, None);
     };
     // SAFETY: AVX-512F was detected just above.
     unsafe { gradient_sums_kernel(lists, sums, squares) }
@@ -255,9 +259,9 @@ unsafe fn load_entries(
     Some(gradient)
 }
 
-/// The density rate kernel, for velocity differences below 2^`difference_bits` (32-bit
-/// signed numbers when `NARROW`): returns false when the bound fails (`out` then holds
-/// nothing of use).
+/// The density rate kernel, for gradients below 2^`gradient_bits` and velocity
+/// differences below 2^`difference_bits` (32-bit signed numbers when `NARROW`): returns
+/// false when the bound fails (`out` then holds nothing of use).
 ///
 /// # Safety
 /// The processor must have AVX-512F; with `NARROW`, `difference_bits` must be at most 31.
@@ -265,7 +269,7 @@ unsafe fn load_entries(
 unsafe fn density_rates_kernel<const NARROW: bool>(
     lists: &NeighbourLists<Fx>,
     velocities: &[Vec3<Fx>],
-    difference_bits: u32,
+    [gradient_bits, difference_bits]: [u32; 2],
     out: &mut Vec<Fx>,
 ) -> bool {
     out.clear();
@@ -275,7 +279,6 @@ unsafe fn density_rates_kernel<const NARROW: bool>(
         .gradients
         .iter()
         .fold(lists.index.len(), |n, g| n.min(g.len()));
-    let mut gradient_bits = zero;
     let mut longest = 0;
     for (i, vi) in velocities.iter().enumerate().take(lists.len()) {
         let range = lists.range(i);
@@ -297,20 +300,19 @@ unsafe fn density_rates_kernel<const NARROW: bool>(
                 return false;
             };
             for c in 0..3 {
-                let g = gradient[c];
-                gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
-                sum = _mm512_add_epi64(sum, product::<NARROW>(g, _mm512_sub_epi64(vi[c], vj[c])));
+                let difference = _mm512_sub_epi64(vi[c], vj[c]);
+                sum = _mm512_add_epi64(sum, product::<NARROW>(gradient[c], difference));
             }
             first += count;
         }
         out.push(Fx::from_bits(_mm512_reduce_add_epi64(sum)));
     }
-    let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
-    within_bound(a, difference_bits, 3 * longest)
+    within_bound(gradient_bits, difference_bits, 3 * longest)
 }
 
-/// The pressure push kernel, for stiffness sums below 2^`sum_bits` (32-bit signed numbers
-/// when `NARROW`): returns false when the bound fails (`out` then holds nothing of use).
+/// The pressure push kernel, for gradients below 2^`gradient_bits` and stiffness sums
+/// below 2^`sum_bits` (32-bit signed numbers when `NARROW`): returns false when the bound
+/// fails (`out` then holds nothing of use).
 ///
 /// # Safety
 /// The processor must have AVX-512F; with `NARROW`, `sum_bits` must be at most 31.
@@ -318,7 +320,7 @@ unsafe fn density_rates_kernel<const NARROW: bool>(
 unsafe fn pressure_pushes_kernel<const NARROW: bool>(
     lists: &NeighbourLists<Fx>,
     stiffness: &[Fx],
-    sum_bits: u32,
+    [gradient_bits, sum_bits]: [u32; 2],
     out: &mut Vec<Vec3<Fx>>,
 ) -> bool {
     out.clear();
@@ -329,7 +331,6 @@ unsafe fn pressure_pushes_kernel<const NARROW: bool>(
         .gradients
         .iter()
         .fold(lists.index.len(), |n, g| n.min(g.len()));
-    let mut gradient_bits = zero;
     let mut longest = 0;
     for (i, ki) in stiffness.iter().enumerate().take(lists.len()) {
         let range = lists.range(i);
@@ -350,7 +351,6 @@ unsafe fn pressure_pushes_kernel<const NARROW: bool>(
             let kj = unsafe { load_values(base, &lists.index[first..], count) };
             let k = _mm512_add_epi64(ki, kj);
             for (p, g) in push.iter_mut().zip(gradient) {
-                gradient_bits = _mm512_or_si512(gradient_bits, magnitude(g));
                 *p = _mm512_add_epi64(*p, product::<NARROW>(g, k));
             }
             first += count;
@@ -358,8 +358,7 @@ unsafe fn pressure_pushes_kernel<const NARROW: bool>(
         let [x, y, z] = push.map(|p| Fx::from_bits(_mm512_reduce_add_epi64(p)));
         out.push(Vec3::new(x, y, z));
     }
-    let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
-    within_bound(a, sum_bits, longest)
+    within_bound(gradient_bits, sum_bits, longest)
 }
 
 /// The smoothing sum kernel, for velocity differences below 2^`bits.difference` (32-bit
@@ -426,8 +425,9 @@ unsafe fn smoothing_sums_kernel<const NARROW: bool>(
     within_bound(c, bits.density, 1) && within_bound(a, bits.difference, longest)
 }
 
-/// The gradient sums kernel: returns false when the bound fails (`sums` and `squares` then
-/// hold nothing of use). With gradients of at most 2ᴬ in rows of at most L entries, the
+/// The gradient sums kernel: whether its sums stand (if not, `sums` and `squares` hold
+/// nothing of use), and the gradients' bit length A when every row lies within the
+/// entries. With gradients of at most 2ᴬ in rows of at most L entries, the
 /// squares' sum is bounded as a row sum of 3L products of A-bit operands, and the
 /// gradients' sum needs A + ⌈log₂ L⌉ ≤ 61.
 ///
@@ -438,7 +438,7 @@ unsafe fn gradient_sums_kernel(
     lists: &NeighbourLists<Fx>,
     sums: &mut Vec<Vec3<Fx>>,
     squares: &mut Vec<Fx>,
-) -> bool {
+) -> (bool, Option<u32>) {
     sums.clear();
     squares.clear();
     let zero = _mm512_setzero_si512();
@@ -448,7 +448,7 @@ unsafe fn gradient_sums_kernel(
     for i in 0..lists.len() {
         let range = lists.range(i);
         if range.end > entries {
-            return false;
+            return (false, None);
         }
         longest = longest.max(range.len());
         let mut sum = [zero; 3];
@@ -473,5 +473,6 @@ unsafe fn gradient_sums_kernel(
     }
     let a = bit_length(_mm512_reduce_or_epi64(gradient_bits) as u64);
     let sum_bits = usize::BITS - longest.max(1).saturating_sub(1).leading_zeros();
-    within_bound(a, a, 3 * longest) && a + sum_bits <= MAX_OPERAND_BITS
+    let stands = within_bound(a, a, 3 * longest) && a + sum_bits <= MAX_OPERAND_BITS;
+    (stands, Some(a))
 }

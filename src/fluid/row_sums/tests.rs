@@ -3,12 +3,12 @@
 //! kernel's bound and at the ends of the range.
 
 use super::{
-    density_rates, density_rates_scalar, gradient_sums, gradient_sums_scalar, pressure_pushes,
-    pressure_pushes_scalar, smoothing_sums, smoothing_sums_scalar,
+    GradientBits, density_rates, density_rates_scalar, gradient_sums, gradient_sums_scalar,
+    pressure_pushes, pressure_pushes_scalar, smoothing_sums, smoothing_sums_scalar,
 };
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::saturation::count_saturations;
-use crate::math::{Fx, Pcg32, Vec3};
+use crate::math::{Fx, Pcg32, Real, Vec3};
 
 /// A random value of at most `bits` bits of magnitude (as raw I32F32 bits), either sign;
 /// one in eight is ±2^bits exactly, and with `extremes` one in sixteen is `i64::MIN` or
@@ -78,8 +78,22 @@ fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) ->
         .collect();
     let stiffness: Vec<_> = (0..n).map(|_| value(&mut rng, bits[1], extremes)).collect();
 
+    // The gradient sums first: they measure the gradients for the two sums after them.
+    let (mut fast, mut slow) = ((Vec::new(), Vec::new()), (Vec::new(), Vec::new()));
+    let (gradients, fast_count) =
+        count_saturations(|| gradient_sums(&lists, &mut fast.0, &mut fast.1));
+    let ((), slow_count) =
+        count_saturations(|| gradient_sums_scalar(&lists, &mut slow.0, &mut slow.1));
+    assert_eq!(fast, slow, "gradient sums, seed {seed}");
+    assert_eq!(
+        fast_count, slow_count,
+        "gradient sum saturations, seed {seed}"
+    );
+    assert_eq!(gradients == GradientBits(None), !kernels_present());
+
     let (mut fast, mut slow) = (Vec::new(), Vec::new());
-    let ((), fast_count) = count_saturations(|| density_rates(&lists, &velocities, &mut fast));
+    let ((), fast_count) =
+        count_saturations(|| density_rates(&lists, gradients, &velocities, &mut fast));
     let ((), slow_count) =
         count_saturations(|| density_rates_scalar(&lists, &velocities, &mut slow));
     assert_eq!(fast, slow, "density rates, seed {seed}");
@@ -89,7 +103,8 @@ fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) ->
     );
 
     let (mut fast, mut slow) = (Vec::new(), Vec::new());
-    let ((), fast_count) = count_saturations(|| pressure_pushes(&lists, &stiffness, &mut fast));
+    let ((), fast_count) =
+        count_saturations(|| pressure_pushes(&lists, gradients, &stiffness, &mut fast));
     let ((), slow_count) =
         count_saturations(|| pressure_pushes_scalar(&lists, &stiffness, &mut slow));
     assert_eq!(fast, slow, "pressure pushes, seed {seed}");
@@ -110,27 +125,22 @@ fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) ->
         fast_count, slow_count,
         "smoothing sum saturations, seed {seed}"
     );
-
-    let (mut fast, mut slow) = ((Vec::new(), Vec::new()), (Vec::new(), Vec::new()));
-    let ((), fast_count) = count_saturations(|| gradient_sums(&lists, &mut fast.0, &mut fast.1));
-    let ((), slow_count) =
-        count_saturations(|| gradient_sums_scalar(&lists, &mut slow.0, &mut slow.1));
-    assert_eq!(fast, slow, "gradient sums, seed {seed}");
-    assert_eq!(
-        fast_count, slow_count,
-        "gradient sum saturations, seed {seed}"
-    );
     kernel_takes(&lists, &velocities, &stiffness)
 }
 
 /// Whether the four kernels take the case (not falling back to the scalar form).
 #[cfg(target_arch = "x86_64")]
 fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: &[Fx]) -> bool {
+    let (gradients_stand, Some(bits)) =
+        super::avx512::gradient_sums(lists, &mut Vec::new(), &mut Vec::new())
+    else {
+        return false;
+    };
     let takes = [
-        super::avx512::density_rates(lists, velocities, &mut Vec::new()),
-        super::avx512::pressure_pushes(lists, stiffness, &mut Vec::new()),
+        super::avx512::density_rates(lists, bits, velocities, &mut Vec::new()),
+        super::avx512::pressure_pushes(lists, bits, stiffness, &mut Vec::new()),
         super::avx512::smoothing_sums(lists, velocities, stiffness, &mut Vec::new()),
-        super::avx512::gradient_sums(lists, &mut Vec::new(), &mut Vec::new()),
+        gradients_stand,
     ];
     takes.iter().all(|&t| t)
 }
@@ -195,5 +205,58 @@ fn small_velocities_and_stiffnesses_take_the_narrow_products_and_match() {
         let bits = 29 + (seed % 2) as u32;
         let taken = compare(seed, 300, 40, [41, bits], false);
         assert_eq!(taken, kernels_present(), "seed {seed}");
+    }
+}
+
+/// One row of eight entries whose density rate and pressure push leave the range: each
+/// gradient component 2⁵⁰ (raw bits), each velocity difference 2⁴¹ and stiffness sum 2⁴²,
+/// so that the 24 terms of the rate (2⁵⁹ each) and the 8 of each push component (2⁶⁰),
+/// all of one sign, pass 2⁶³. The scalar form
+/// saturates; the kernels, told the gradients' true bit length, must fall back to it, and
+/// with a bound measured on other lists (gradients of one bit) they would wrap instead.
+#[test]
+fn sums_beyond_the_range_fall_back_on_the_measured_gradients() {
+    let big = Fx::from_bits(1 << 50);
+    let mut lists = NeighbourLists::default();
+    lists.start.extend([0, 8]);
+    for j in 1..=8 {
+        lists.index.push(j);
+        lists.value.push(big);
+        for g in &mut lists.gradients {
+            g.push(big);
+        }
+    }
+    lists.start.extend(std::iter::repeat_n(8, 8));
+    let fast = Fx::from_bits(1 << 41);
+    let mut velocities = vec![Vec3::ZERO; 9];
+    velocities[0] = Vec3::new(fast, fast, fast);
+    let mut stiffness = vec![Fx::ZERO; 9];
+    stiffness[0] = Fx::from_bits(1 << 42);
+
+    let gradients = gradient_sums(&lists, &mut Vec::new(), &mut Vec::new());
+    let mut rates = [Vec::new(), Vec::new()];
+    let (_, saturations) =
+        count_saturations(|| density_rates(&lists, gradients, &velocities, &mut rates[0]));
+    density_rates_scalar(&lists, &velocities, &mut rates[1]);
+    assert_eq!(rates[0], rates[1]);
+    assert_eq!(rates[0][0], Fx::MAX);
+    assert!(saturations > 0);
+    let mut pushes = [Vec::new(), Vec::new()];
+    pressure_pushes(&lists, gradients, &stiffness, &mut pushes[0]);
+    pressure_pushes_scalar(&lists, &stiffness, &mut pushes[1]);
+    assert_eq!(pushes[0], pushes[1]);
+    assert_eq!(pushes[0][0], Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX));
+
+    // The test can fail: with a stale bound the kernels take the row and wrap.
+    #[cfg(target_arch = "x86_64")]
+    if kernels_present() {
+        let mut wrapped = Vec::new();
+        assert!(super::avx512::density_rates(
+            &lists,
+            1,
+            &velocities,
+            &mut wrapped
+        ));
+        assert_ne!(wrapped[0], Fx::MAX);
     }
 }
