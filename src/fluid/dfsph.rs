@@ -140,7 +140,14 @@ impl<R: Real> FluidSystem<R> {
         let mut total = R::ZERO;
         let mut largest = R::ZERO;
         for (i, &vi) in self.velocities.iter().enumerate() {
-            let change = (s.rate[i] + vi.dot(s.wall_gradient[i])) * dt;
+            // Away from the walls (most of the fluid) the wall term is zero.
+            let wall = s.wall_gradient[i];
+            let walls = if wall == Vec3::ZERO {
+                R::ZERO
+            } else {
+                vi.dot(wall)
+            };
+            let change = (s.rate[i] + walls) * dt;
             let error = match solve {
                 Solve::DivergenceFree => change,
                 Solve::ConstantDensity => s.density[i] + change - R::ONE,
@@ -158,7 +165,13 @@ impl<R: Real> FluidSystem<R> {
         let s = &mut self.scratch;
         row_sums::pressure_pushes(&s.fluid, s.gradient_bits, &s.scalar, &mut s.delta);
         for (i, v) in self.velocities.iter_mut().enumerate() {
-            *v -= (s.delta[i] + s.wall_gradient[i] * s.scalar[i]) * dt;
+            let wall = s.wall_gradient[i];
+            let push = if wall == Vec3::ZERO {
+                s.delta[i]
+            } else {
+                s.delta[i] + wall * s.scalar[i]
+            };
+            *v -= push * dt;
         }
     }
 }
