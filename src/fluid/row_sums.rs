@@ -63,6 +63,8 @@ pub(crate) fn density_rates<R: Real>(
     {
         return;
     }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = gradients; // only the vector kernels read it
     density_rates_scalar(lists, velocities, out);
 }
 
@@ -98,6 +100,8 @@ pub(crate) fn pressure_pushes<R: Real>(
     {
         return;
     }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = gradients; // only the vector kernels read it
     pressure_pushes_scalar(lists, stiffness, out);
 }
 
