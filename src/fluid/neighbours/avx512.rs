@@ -1,7 +1,7 @@
 //! The neighbour search in AVX-512F (with AVX-512CD's leading-zero count for the square
-//! root) for I32F32: eight candidates side by side through
-//! the support test, the survivors packed in order, then eight survivors side by side
-//! through the kernel's value and gradient.
+//! root) for I32F32: eight candidates side by side through the support test, the
+//! survivors packed in order, then eight survivors side by side through the kernel's value
+//! and gradient.
 //!
 //! Three searches share it: a fresh search of the grid ([`build`]; [`build_both`] runs
 //! the fluid's and the boundary's in one walk of the cells), the evaluation of
@@ -67,8 +67,8 @@ const _: () = {
 };
 
 /// [`NeighbourLists::build`] with the kernel when `R` is I32F32, the processor has
-/// AVX-512F and CD and the inputs are within the bounds (see the module documentation); returns
-/// whether it did (if not, the lists hold nothing of use).
+/// AVX-512F and CD and the inputs are within the bounds (see the module documentation);
+/// returns whether it did (if not, the lists hold nothing of use).
 pub(super) fn build<R: Real>(
     lists: &mut NeighbourLists<R>,
     queries: &[Vec3<R>],
@@ -229,7 +229,7 @@ fn admit<'a, R: Real>(
     {
         return None;
     }
-    // SAFETY: AVX-512F and CD was detected above.
+    // SAFETY: AVX-512F and CD were detected above.
     let lanes = |bits: i64| unsafe { _mm512_set1_epi64(bits) };
     let search = Search {
         radius,
@@ -432,7 +432,8 @@ unsafe fn build_kernel(
 /// the boundary), in one walk of the cells: each list gets the rows its own search would.
 ///
 /// # Safety
-/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold for both searches.
+/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold for both
+/// searches.
 #[target_feature(enable = "avx512f,avx512cd")]
 unsafe fn build_both_kernel(
     lists: [&mut NeighbourLists<Fx>; 2],
