@@ -29,10 +29,11 @@
 //! With n = x·2³² exact and r < 2³² (so r² is exact in 64 bits): r ← r − 1 if r² > n;
 //! then r ← r + 1 if n − r² > 2r (that is, (r + 1)² ≤ n); then, with r = ⌊√n⌋, the
 //! rounding r ← r + 1 if n − r² > r (n > (r + ½)² − ¼, and n is whole, so no tie occurs).
-//! The result is round(√n) whenever the estimate is within one of ⌊√n⌋. A check of every x
-//! in [0, 2³²) (`cargo test --release -- --ignored square_root`) found the estimate equal
-//! to ⌊√n⌋ for each, so the correction never moves it; it is there so that the result
-//! rests on that weaker bound, which the analysis above gives with room to spare.
+//! The result is round(√n) whenever the estimate is within one of ⌊√n⌋. The committed
+//! code matches `Fx::sqrt` for every x in [0, 2³²) (`cargo test --release -- --ignored
+//! square_root`); a trial without the two corrections (the rounding step alone) matched
+//! for every x too. They stay so that the result rests on the weaker bound, which the
+//! analysis above gives with room to spare, and not on that exhaustive coincidence.
 //!
 //! x = 0 gives 0 (m = 0, so Y, S₀ and r are 0). Lanes with x ≥ 2³² (the search's lanes
 //! that failed the support test) hold meaningless values: the shifts by the wrapped k
