@@ -19,6 +19,9 @@
 
 use crate::math::saturation::record_saturation;
 
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod lanes_below_one;
+
 /// Seeds for `1/√a`, `a ∈ [1, 4)`, in Q16 (value · 2^16).
 ///
 /// Entry `p·128 + j` covers `a ∈ [(1 + p)(1 + j/128), (1 + p)(1 + (j + 1)/128))`, where

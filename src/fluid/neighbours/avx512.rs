@@ -48,7 +48,7 @@ use core::arch::x86_64::{
 };
 use core::mem::size_of;
 
-use self::sqrt::sqrt;
+use crate::math::sqrt::lanes_below_one::sqrt;
 
 use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
@@ -57,8 +57,6 @@ use crate::fluid::kernel::Kernel;
 use crate::fluid::lanes::{bit_length, magnitude_of, mul, product};
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::gather3;
-
-mod sqrt;
 
 // The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
 const _: () = {

@@ -1,6 +1,9 @@
-//! √x per lane for 0 ≤ x < 1 as I32F32 bits (0 ≤ x < 2³²): round(√n) with n = x·2³²,
-//! correctly rounded to nearest like [`Real::sqrt`](crate::math::Real::sqrt) of I32F32,
-//! from an estimate by Newton's method on integers that two exact steps then correct.
+//! √x per lane for 0 ≤ x < 1 as I32F32 bits (0 ≤ x < 2³²), in AVX-512F and CD:
+//! round(√n) with n = x·2³², correctly rounded to nearest like
+//! [`Real::sqrt`](crate::math::Real::sqrt) of I32F32, from an estimate by Newton's method
+//! on integers that two exact steps then correct. The fluid's neighbour search takes the
+//! roots of q² = |xᵢ − xⱼ|²/H² with it, and the rigid solver's square roots
+//! (`rigid::solver::avx512::sqrt`) take it when every value lies in its domain.
 //!
 //! # The estimate
 //!
@@ -35,9 +38,9 @@
 //! for every x too. They stay so that the result rests on the weaker bound, which the
 //! analysis above gives with room to spare, and not on that exhaustive coincidence.
 //!
-//! x = 0 gives 0 (m = 0, so Y, S₀ and r are 0). Lanes with x ≥ 2³² (the search's lanes
-//! that failed the support test) hold meaningless values: the shifts by the wrapped k
-//! clear them.
+//! x = 0 gives 0 (m = 0, so Y, S₀ and r are 0). Lanes with x ≥ 2³² or x < 0 (the
+//! search's lanes that failed the support test) hold meaningless values: the callers
+//! drop or replace them.
 
 use core::arch::x86_64::{
     __m512i, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpgt_epu64_mask, _mm512_loadu_si512,
@@ -73,9 +76,7 @@ const RECIPROCAL_ROOTS: [i64; 16] = {
 /// documentation).
 #[inline]
 #[target_feature(enable = "avx512f,avx512cd")]
-pub(in crate::fluid::neighbours) fn sqrt<const BLOCKS: usize>(
-    x: [__m512i; BLOCKS],
-) -> [__m512i; BLOCKS] {
+pub(crate) fn sqrt<const BLOCKS: usize>(x: [__m512i; BLOCKS]) -> [__m512i; BLOCKS] {
     let one = _mm512_set1_epi64(1);
     let below_2_32 = _mm512_set1_epi64(u32::MAX.into());
     // SAFETY: 16 readable i64 at the table's start, eight from each pointer.
