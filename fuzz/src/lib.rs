@@ -16,6 +16,25 @@ use fixstep::world::{TickInput, World, decode_snapshot, encode_snapshot};
 /// The most ticks any target simulates.
 pub const MAX_TICKS: u64 = 64;
 
+/// The most work a target's run may do, as the sum over its ticks of [`load`]: a scene
+/// past it runs fewer ticks (at least one; `world_step` at least two), so that a huge one
+/// (4096 spheres grown until each overlaps some eighty others: 0.4 s a tick in release,
+/// several seconds in a fuzz build) takes seconds, not the fuzzer's time-out. A hang
+/// within a tick still times out.
+pub const MAX_WORK: usize = 100_000;
+
+/// The work of one tick of `world`, counted in elements the step visits: rigid bodies
+/// and their contacts (as the last step left them), fluid particles (times 32, about
+/// their neighbours) and particle slots.
+fn load(world: &World<Fx>) -> usize {
+    let rigid = world
+        .rigid()
+        .map_or(0, |r| r.body_count().saturating_add(r.contact_count()));
+    let fluid = world.fluid().map_or(0, |f| f.len().saturating_mul(32));
+    let particles = world.particles().map_or(0, |p| p.slot_count());
+    rigid.saturating_add(fluid).saturating_add(particles).max(1)
+}
+
 /// A replay file's bytes: decoding never panics; an accepted replay encodes back to the
 /// same bytes (one encoding per replay), and a short one verifies without a panic.
 pub fn replay_decode(data: &[u8]) -> bool {
@@ -84,20 +103,24 @@ pub fn world_step(data: &[u8]) -> bool {
     let Ok(mut world) = scene.build() else {
         return false;
     };
-    let half = MAX_TICKS / 2;
     let mut feed = InputFeed::new(&inputs);
-    for tick in 0..half {
+    world.step(feed.at(0));
+    // The first tick's load sets the run's length: the second half runs twice.
+    let budget = (MAX_WORK / load(&world)) as u64 * 2 / 3;
+    let ticks = budget.clamp(2, MAX_TICKS);
+    let half = ticks / 2;
+    for tick in 1..half {
         world.step(feed.at(tick));
     }
     let bytes = encode_snapshot(&world.snapshot()).expect("a running world encodes");
     let snapshot = decode_snapshot::<Fx>(&bytes).expect("a running world's snapshot is valid");
-    for tick in half..MAX_TICKS {
+    for tick in half..ticks {
         world.step(feed.at(tick));
     }
     let end = world.checksum();
     world.restore(&snapshot);
     let mut feed = InputFeed::new(&inputs);
-    for tick in half..MAX_TICKS {
+    for tick in half..ticks {
         world.step(feed.at(tick));
     }
     assert_eq!(
@@ -108,11 +131,16 @@ pub fn world_step(data: &[u8]) -> bool {
     true
 }
 
-/// Runs `ticks` ticks of `inputs`.
+/// Runs `ticks` ticks of `inputs`, or fewer once their [`load`] passes [`MAX_WORK`].
 fn run(mut world: World<Fx>, inputs: &[TickInput<Fx>], ticks: u64) {
     let mut feed = InputFeed::new(inputs);
+    let mut work = 0usize;
     for _ in 0..ticks {
         let tick = world.tick();
         world.step(feed.at(tick));
+        work = work.saturating_add(load(&world));
+        if work > MAX_WORK {
+            break;
+        }
     }
 }
