@@ -205,6 +205,67 @@ fn rigid_body_errors_name_the_field() {
     );
 }
 
+/// Orientations whose normalised form would not be a rotation in I32F32: |q|² past the
+/// range (a component of 50,000) or lost in its precision (a length of 2·10⁻⁵), and zero.
+/// Found by fuzzing: a body oriented by (0.99, 0, −2³¹, −0.15) was built with a
+/// "normalised" orientation of length about 46,000, and the frames of the joints on it
+/// failed the snapshot decoder's checks.
+#[test]
+fn orientations_that_cannot_be_normalised_are_refused() {
+    let body = |orientation: &str| {
+        format!(
+            "(name: \"x\", rigid: (bodies: [(shape: Sphere(radius: 1.0), orientation: {orientation})]))"
+        )
+    };
+    assert_scene_rejected(
+        body("(w: 1.0, x: 0.0, y: 50000.0, z: 0.0)").as_bytes(),
+        &[
+            "rigid.bodies[0].orientation",
+            "(1, 0, 50000, 0) cannot be normalised in I32F32",
+        ],
+    );
+    assert_scene_rejected(
+        body("(w: 0.00002, x: 0.0, y: 0.0, z: 0.0)").as_bytes(),
+        &[
+            "rigid.bodies[0].orientation",
+            "cannot be normalised in I32F32",
+        ],
+    );
+    assert_scene_rejected(
+        body("(w: 0.0, x: 0.0, y: 0.0, z: 0.0)").as_bytes(),
+        &["rigid.bodies[0].orientation", "must not be zero"],
+    );
+    assert_scene_rejected(
+        b"(name: \"x\", rigid: (bodies: [(shape: Compound(parts: [(rotation: (w: 0.0, x: 60000.0, y: 0.0, z: 0.0), translation: (x: 0.0, y: 0.0, z: 0.0), shape: Sphere(radius: 1.0))]))]))",
+        &[
+            "rigid.bodies[0].shape.Compound.parts[0].rotation",
+            "cannot be normalised",
+        ],
+    );
+    assert_scene_rejected(
+        b"(name: \"x\", soft: (bodies: [], colliders: [(shape: Plane(normal: (x: 0.0, y: 1.0, z: 0.0), offset: 0.0), orientation: (w: 0.00002, x: 0.0, y: 0.0, z: 0.0))]))",
+        &["soft.colliders[0].orientation", "cannot be normalised"],
+    );
+}
+
+/// A compound part's rotation is normalised like a body's orientation: parts turned by
+/// (2, 0, 2, 0) and by (½, 0, ½, 0), a quarter turn about y either way, run alike
+/// (unnormalised, the rotation scaled the part's inertia and collision shape, and the
+/// two ran apart).
+#[test]
+fn a_compound_parts_rotation_is_normalised() {
+    let run = |s: &str| {
+        let text = format!(
+            "(name: \"x\", rigid: (bodies: [(kind: Static, shape: Box(half_extents: (x: 5.0, y: 0.5, z: 5.0))), (shape: Compound(parts: [(rotation: (w: {s}, x: 0.0, y: {s}, z: 0.0), translation: (x: 0.3, y: 0.0, z: 0.0), shape: Box(half_extents: (x: 0.5, y: 0.1, z: 0.2))), (rotation: (w: 1.0, x: 0.0, y: 0.0, z: 0.0), translation: (x: -0.3, y: 0.0, z: 0.0), shape: Sphere(radius: 0.2))]), position: (x: 0.0, y: 1.0, z: 0.0), angular_velocity: (x: 1.0, y: 2.0, z: 0.5))]))"
+        );
+        let file = TempPath::with_bytes("scene.ron", text.as_bytes());
+        let run = fixstep(&["run", file.str(), "--ticks", "60"]);
+        assert_eq!(run.code, 0, "{run:?}");
+        run.stdout.lines().last().map(str::to_owned)
+    };
+    assert_eq!(run("2.0"), run("0.5"));
+}
+
 #[test]
 fn zero_tick_rate_names_the_field() {
     assert_scene_rejected(b"(name: \"x\", tick_rate: 0)", &["tick_rate"]);

@@ -225,10 +225,7 @@ fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, SceneError> {
     if let Some(grid) = body.grid {
         check_lattice(grid.count, grid.spacing, MAX_BODIES)?;
     }
-    let orientation = body
-        .orientation
-        .try_normalize()
-        .ok_or_else(|| SceneError::new("orientation", "must not be zero"))?;
+    let orientation = SceneError::unit_quaternion("orientation", body.orientation)?;
     for (name, value) in [
         ("density", body.density),
         ("material.friction", body.material.friction),
@@ -244,6 +241,12 @@ fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, SceneError> {
         ));
     }
     let mut shape = body.shape.clone();
+    if let Shape::Compound { parts } = &mut shape {
+        // `check_shape` found every rotation normalisable.
+        for part in parts.iter_mut() {
+            part.rotation = part.rotation.normalize();
+        }
+    }
     let mut position = body.position;
     let mut mass = MassProperties::ZERO;
     if body.kind == BodyKind::Dynamic {
@@ -365,12 +368,7 @@ fn check_shape<R: Real>(shape: &Shape<R>, kind: BodyKind) -> Result<(), SceneErr
                         format!("components must be within ±{MAX_MAGNITUDE}"),
                     ));
                 }
-                if part.rotation.try_normalize().is_none() {
-                    return Err(SceneError::new(
-                        format!("{field}.rotation"),
-                        "must not be zero",
-                    ));
-                }
+                SceneError::unit_quaternion(format!("{field}.rotation"), part.rotation)?;
             }
             Ok(())
         }

@@ -12,7 +12,7 @@ use crate::math::{Fx, Quat, Real, Vec3};
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub struct Part<R: Real = Fx> {
-    /// Rotation of the part relative to the body.
+    /// Rotation of the part relative to the body (normalised when the body is built).
     pub rotation: Quat<R>,
     /// Position of the part's origin in the body frame, m.
     pub translation: Vec3<R>,

@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use crate::math::Real;
+use crate::math::{Quat, Real};
 
 /// A scene that cannot be built. `field` is a path such as `particles.emitters[2].rate`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -43,6 +43,32 @@ impl SceneError {
             field,
             format!("must be {lo} to {hi}{unit} (got {value})"),
         ))
+    }
+
+    /// `q` normalised, or an error about `field` when it cannot be: zero, or so large or
+    /// so small that |q|² leaves the format's range or its precision, so that q/|q| would
+    /// not be a unit quaternion (to within 2⁻¹⁶, what rotations need). Orientations from
+    /// a scene are normalised here, so that every orientation and every joint frame built
+    /// from one is a rotation (a snapshot of the world then passes its decoder's checks).
+    pub fn unit_quaternion<R: Real>(field: impl Into<String>, q: Quat<R>) -> Result<Quat<R>, Self> {
+        let Some(unit) = q.try_normalize() else {
+            return Err(Self::new(field, "must not be zero"));
+        };
+        if (unit.length_squared() - R::ONE).abs() > R::from_ratio(1, 1 << 16) {
+            return Err(Self::new(
+                field,
+                format!(
+                    "({}, {}, {}, {}) cannot be normalised in {}: its components are too \
+                     large or too close to zero",
+                    q.w,
+                    q.x,
+                    q.y,
+                    q.z,
+                    R::NAME
+                ),
+            ));
+        }
+        Ok(unit)
     }
 
     /// The same error seen from one level up: `prefix.field`.

@@ -707,10 +707,7 @@ fn compile_collider<R: Real>(c: &ColliderDesc<R>) -> Result<Collider<R>, SceneEr
             format!("must be 0 to {MAX_MAGNITUDE}"),
         ));
     }
-    let orientation = c
-        .orientation
-        .try_normalize()
-        .ok_or_else(|| SceneError::new("orientation", "must not be zero"))?;
+    let orientation = SceneError::unit_quaternion("orientation", c.orientation)?;
     let size = |name: &str, v: R| {
         if v <= R::ZERO || v > limit {
             Err(SceneError::new(
