@@ -17,10 +17,11 @@ use fixstep::world::{TickInput, World, decode_snapshot, encode_snapshot};
 pub const MAX_TICKS: u64 = 64;
 
 /// The most work a target's run may do, as the sum over its ticks of [`load`]: a scene
-/// past it runs fewer ticks (at least one; `world_step` at least two), so that a huge one
-/// (4096 spheres grown until each overlaps some eighty others: 0.4 s a tick in release,
-/// several seconds in a fuzz build) takes seconds, not the fuzzer's time-out. A hang
-/// within a tick still times out.
+/// past it runs fewer ticks (at least one; `world_step` at least one before its snapshot
+/// and one after), so that a huge one (4096 spheres grown until each overlaps some eighty
+/// others: 0.4 s a tick in release, several seconds in a fuzz build) or one that grows (an
+/// emitter filling a fluid) takes seconds, not the fuzzer's time-out. A hang within a
+/// tick still times out.
 pub const MAX_WORK: usize = 100_000;
 
 /// The work of one tick of `world`, counted in elements the step visits: rigid bodies
@@ -104,23 +105,26 @@ pub fn world_step(data: &[u8]) -> bool {
         return false;
     };
     let mut feed = InputFeed::new(&inputs);
-    world.step(feed.at(0));
-    // The first tick's load sets the run's length: the second half runs twice.
-    let budget = (MAX_WORK / load(&world)) as u64 * 2 / 3;
-    let ticks = budget.clamp(2, MAX_TICKS);
-    let half = ticks / 2;
-    for tick in 1..half {
-        world.step(feed.at(tick));
-    }
+    // Each half runs until half the ticks or a third of the work (the second half runs
+    // twice), at least one tick: the load may grow as the run goes (an emitter).
+    let mut run_part = |world: &mut World<Fx>, first: u64, last: u64| {
+        let mut work = 0usize;
+        let mut tick = first;
+        while tick < last && (tick == first || work <= MAX_WORK / 3) {
+            world.step(feed.at(tick));
+            work = work.saturating_add(load(world));
+            tick += 1;
+        }
+        tick
+    };
+    let half = run_part(&mut world, 0, MAX_TICKS / 2);
     let bytes = encode_snapshot(&world.snapshot()).expect("a running world encodes");
     let snapshot = decode_snapshot::<Fx>(&bytes).expect("a running world's snapshot is valid");
-    for tick in half..ticks {
-        world.step(feed.at(tick));
-    }
+    let end_tick = run_part(&mut world, half, MAX_TICKS);
     let end = world.checksum();
     world.restore(&snapshot);
     let mut feed = InputFeed::new(&inputs);
-    for tick in half..ticks {
+    for tick in half..end_tick {
         world.step(feed.at(tick));
     }
     assert_eq!(
