@@ -33,7 +33,7 @@ fn load(world: &World<Fx>) -> usize {
         .map_or(0, |r| r.body_count().saturating_add(r.contact_count()));
     let fluid = world.fluid().map_or(0, |f| f.len().saturating_mul(32));
     let particles = world.particles().map_or(0, |p| p.slot_count());
-    rigid.saturating_add(fluid).saturating_add(particles).max(1)
+    rigid.saturating_add(fluid).saturating_add(particles)
 }
 
 /// A replay file's bytes: decoding never panics; an accepted replay encodes back to the
