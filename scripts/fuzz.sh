@@ -10,7 +10,7 @@
 # Targets: replay_decode, scene_ron, snapshot_decode, world_step (see fuzz/src/lib.rs).
 # The working corpus is fuzz/corpus/TARGET (not committed), started from fuzz/seeds/TARGET.
 # A crash lands in fuzz/artifacts/TARGET/; once fixed, copy it to fuzz/regressions/TARGET/,
-# where `cargo test --test fuzz_regressions` runs it for ever after.
+# where `cargo test --test suite fuzz_regressions::` runs it for ever after.
 #
 # Installs cargo-fuzz (crates.io) when missing. `-s none`: no sanitizer, so stable works;
 # with nightly, `cargo +nightly fuzz run -s address TARGET` adds AddressSanitizer.

@@ -11,8 +11,8 @@ cd "$(dirname "$0")/.."
 cargo build --release --locked
 fixstep=${CARGO_TARGET_DIR:-target}/release/fixstep
 
-FIXSTEP_BLESS=1 cargo test --release --locked --test cli_scene_files -- \
-  --exact builtin_scene_files_match_the_builtins
+FIXSTEP_BLESS=1 cargo test --release --locked --test suite -- \
+  --exact cli_scene_files::builtin_scene_files_match_the_builtins
 
 mkdir -p replays
 builtins=()

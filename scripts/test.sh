@@ -16,7 +16,7 @@ cargo test --locked 2>&1 | tee "$log"
 cargo test --locked --release 2>&1 | tee -a "$log"
 
 # The matrix's host rows would verify the committed replays a third and fourth time: both test
-# runs above already re-simulate every one of them (tests/replay_committed.rs) with exactly
+# runs above already re-simulate every one of them (tests/suite/replay_committed.rs) with exactly
 # the host-debug and host-release settings (the test profile is the debug profile). So CI
 # runs the one row that adds a target.
 ./scripts/determinism-matrix.sh --targets i686 --strict

@@ -1,5 +1,5 @@
 //! What each fuzz target does with its bytes. The targets in `fuzz_targets/` call these, and
-//! `tests/fuzz_regressions.rs` in the fixstep package runs every kept input through them, so
+//! `tests/suite/fuzz_regressions.rs` in the fixstep package runs every kept input through them, so
 //! a crash found once stays fixed.
 //!
 //! Each function must return normally for any input: an error is a fine answer, a panic,

@@ -22,7 +22,7 @@
 //! bits the truncations of the Q62 arithmetic itself show: up to 1.8 ulp at 60 bits.
 //!
 //! The figures quoted for I48F16, I40F24 and I32F32 come from
-//! `cargo test --release --test math_trig -- --ignored --nocapture` (`measure_max_errors`,
+//! `cargo test --release --test suite math_trig:: -- --ignored --nocapture` (`measure_max_errors`,
 //! against `f64` references accurate to about 2⁻⁵²). Those for 48 and 60 fractional bits,
 //! finer than an `f64` reference can resolve, were measured against mpmath at 90 digits
 //! over 2.2·10⁵ samples per function and format.

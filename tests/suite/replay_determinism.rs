@@ -1,14 +1,14 @@
 //! Recording is deterministic and re-recording an up-to-date replay changes nothing.
 
-mod replay_support;
-
+use crate::replay_support::{
+    Layout, TempPath, fixstep, rewrite_header, sample_bytes, sample_replay,
+};
 use fixstep::math::Fx;
 use fixstep::replay::{
     DEFAULT_CHECKSUM_EVERY, Replay, StateVersionCheck, VerifyOutcome, record, rerecord, verify,
 };
 use fixstep::scene::{BUILTIN_SCENES, builtin_scene};
 use fixstep::world::STATE_VERSION;
-use replay_support::{Layout, TempPath, fixstep, rewrite_header, sample_bytes, sample_replay};
 
 #[test]
 fn recording_twice_gives_identical_bytes() {

@@ -1,8 +1,6 @@
 //! `fixstep render`: outputs and errors.
 
-mod replay_support;
-
-use replay_support::{TempPath, fixstep};
+use crate::replay_support::{TempPath, fixstep};
 
 /// Asserts exit code 2 and an error naming every one of `parts`, without a panic.
 fn assert_refused(args: &[&str], parts: &[&str]) {

@@ -7,12 +7,10 @@
 //! `sympEuler_analytic` 1.80997512422418, `fwdEuler_analytic` 0.2), both computed with
 //! mpmath in the project's reference folder.
 
-mod replay_support;
-
+use crate::replay_support::{TempPath, fixstep};
 use fixstep::bench::stability::is_stable_in;
 use fixstep::bench::{Measured, NumberFormat, StabilityConfig, StabilityRow, run_stability};
 use fixstep::particles::Integrator;
-use replay_support::{TempPath, fixstep};
 
 /// The measured limit of the only row of `rows` for `integrator` in `format`.
 fn limit(rows: &[StabilityRow], integrator: Integrator, format: NumberFormat) -> Measured {

@@ -1,8 +1,6 @@
 //! Shared helpers for the replay and CLI tests: running the binary, temporary paths, a
 //! sample replay with inputs, and the byte layout of a replay file.
 
-#![allow(dead_code)] // each test file uses a different subset
-
 use std::path::{Path, PathBuf};
 use std::process::Command as Process;
 use std::sync::atomic::{AtomicUsize, Ordering};

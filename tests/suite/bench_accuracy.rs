@@ -6,8 +6,7 @@
 //! column named at each constant. The expected orders come from the schemes' theory, not from
 //! this benchmark's output.
 
-mod replay_support;
-
+use crate::replay_support::{TempPath, fixstep};
 use fixstep::bench::elliptic::pendulum_period;
 use fixstep::bench::exact::{damped_displacement, harmonic_displacement, projectile_position};
 use fixstep::bench::kepler_equation::kepler_position;
@@ -15,7 +14,6 @@ use fixstep::bench::{
     AccuracyConfig, AccuracyRow, NumberFormat, OrderRow, Problem, measured_orders, run_accuracy,
 };
 use fixstep::particles::Integrator;
-use replay_support::{TempPath, fixstep};
 
 /// `damped_oscillator_reference.csv`, columns `t` and `zeta=0.1` (ω₀ = 1, x(0) = 1, v(0) = 0).
 const DAMPED_ZETA_0_1: [(f64, f64); 6] = [

@@ -5,13 +5,11 @@
 //! Expected behaviour comes from stability theory: semi-implicit Euler on a spring is stable
 //! only for ωh < 2 (ω = √(k/m)); explicit Euler multiplies the energy by 1 + (ωh)² per step.
 
-mod replay_support;
-
+use crate::replay_support::{TempPath, fixstep};
 use fixstep::math::Fx;
 use fixstep::replay::InputFeed;
 use fixstep::scene::{Scene, builtin_scene, parse_scene};
 use fixstep::world::{Metrics, World};
-use replay_support::{TempPath, fixstep};
 
 /// A one-particle scene: a 1 kg bob on an anchored spring of stiffness `k` (N/m) and rest
 /// length 0 (so F = −k x exactly, a linear oscillator), stepped at `tick_rate` Hz with

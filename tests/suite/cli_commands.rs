@@ -1,10 +1,8 @@
 //! The `fixstep` command line: its contract of commands, outputs and exit codes.
 
-mod replay_support;
-
+use crate::replay_support::{TempPath, fixstep, sample_bytes};
 use fixstep::scene::BUILTIN_SCENES;
 use fixstep::world::{Metrics, Stage};
-use replay_support::{TempPath, fixstep, sample_bytes};
 
 /// True for `checksum: ` followed by 16 lowercase hex digits.
 fn is_checksum_line(line: &str) -> bool {

@@ -1,12 +1,10 @@
 //! Damaged and foreign replay files: `fixstep verify` exits 2 with one line naming the file
 //! and the problem, never panics; a changed checksum is a desync (exit 1).
 
-mod replay_support;
-
+use crate::replay_support::{Layout, Run, TempPath, fixstep, rewrite_header, sample_bytes};
 use fixstep::replay::format::PREAMBLE_LEN;
 use fixstep::replay::{Replay, ReplayErrorKind, Section, VerifyOutcome, content_hash, verify};
 use fixstep::world::STATE_VERSION;
-use replay_support::{Layout, Run, TempPath, fixstep, rewrite_header, sample_bytes};
 
 const TWO_POW_60: u64 = 1 << 60;
 

@@ -1,10 +1,9 @@
 //! The viewer: every built-in scene draws something, simple scenes show every body, and
 //! the same replay gives the same bytes twice.
 
-mod replay_support;
-
 use std::collections::BTreeSet;
 
+use crate::replay_support::TempPath;
 use fixstep::math::Fx;
 use fixstep::replay::Replay;
 use fixstep::scene::{BUILTIN_SCENES, Scene, builtin_scene};
@@ -12,7 +11,6 @@ use fixstep::viewer::colour::BACKGROUND;
 use fixstep::viewer::{
     BodyColours, Film, Look, PageSettings, Projection, View, encode_png, rasterise, write_outputs,
 };
-use replay_support::TempPath;
 use tiny_skia::Pixmap;
 
 fn scene(name: &str) -> Scene<Fx> {

@@ -2,8 +2,6 @@
 //! exactly like an uninterrupted run, equal seeds and inputs give equal checksums, and a
 //! replay survives encode → decode → encode byte for byte.
 
-mod replay_support;
-
 use fixstep::codec;
 use fixstep::math::{Fx, Real, Vec3};
 use fixstep::replay::{InputFeed, Replay, VerifyOutcome, record, verify};

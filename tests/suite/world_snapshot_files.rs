@@ -2,14 +2,12 @@
 //! and bytes that are not a valid snapshot of this build are refused with the byte offset,
 //! never a panic.
 
-mod replay_support;
-
+use crate::replay_support::{TempPath, fixstep};
 use fixstep::math::{Fx, FxI48F16};
 use fixstep::replay::InputFeed;
 use fixstep::scene::builtin_scene;
 use fixstep::world::snapshot::{SNAPSHOT_FORMAT_VERSION, SNAPSHOT_MAGIC};
 use fixstep::world::{STATE_VERSION, World, WorldState, decode_snapshot, encode_snapshot};
-use replay_support::{TempPath, fixstep};
 
 /// The `fountain` world after `ticks` ticks of its script.
 fn fountain_after(ticks: u64) -> World<Fx> {

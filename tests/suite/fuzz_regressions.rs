@@ -2,7 +2,7 @@
 //! the fuzz targets (`fuzz/src/lib.rs`), in the ordinary test suite. A file under
 //! `fuzz/regressions/TARGET/` is a crash that was fixed; this test keeps it fixed.
 
-#[path = "../fuzz/src/lib.rs"]
+#[path = "../../fuzz/src/lib.rs"]
 mod targets;
 
 use std::path::PathBuf;

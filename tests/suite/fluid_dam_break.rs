@@ -1,6 +1,6 @@
 //! The dam break against Martin & Moyce (1952): the surge front Z = x/a against
 //! T = t √(2g/a), as is and with the customary +0.175 shift in T for the gate's opening.
-//! The measured table is `tests/data/martin_moyce_1952_n2_a2.25in_surge_front.csv`.
+//! The measured table is `tests/suite/data/martin_moyce_1952_n2_a2.25in_surge_front.csv`.
 //!
 //! Each run also checks, at every step, that the particle count is conserved, that no
 //! particle has passed the floor or a wall, that nothing saturated, and that the mean

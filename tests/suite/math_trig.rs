@@ -5,7 +5,7 @@
 //! The bounds are "half an ulp of the format (the final rounding) plus the kernel's
 //! internal error", the internal error being the measured maximum rounded up. The ignored
 //! test `measure_max_errors` prints the figures quoted in `src/math/trig.rs`:
-//! `cargo test --release --test math_trig -- --ignored --nocapture`.
+//! `cargo test --release --test suite math_trig:: -- --ignored --nocapture`.
 
 use fixed::types::extra::{U16, U24, U32, U48, U60};
 use fixstep::math::{Fixed, FracBits, Fx, FxI40F24, FxI48F16, Real};

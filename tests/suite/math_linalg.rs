@@ -7,7 +7,7 @@
 //! point (absolute, 2⁻³² for I32F32, 2⁻¹⁶ for I48F16) and `f64::EPSILON` times the
 //! magnitude involved for `f64`. Each bound is the analysed rounding error rounded up, and
 //! the ignored test `measure_max_errors` prints the measured worst cases quoted in the
-//! comments: `cargo test --release --test math_linalg -- --ignored --nocapture`.
+//! comments: `cargo test --release --test suite math_linalg:: -- --ignored --nocapture`.
 
 use fixed::types::extra::{U16, U32};
 use fixstep::math::saturation::count_saturations;

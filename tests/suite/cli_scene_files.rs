@@ -1,17 +1,15 @@
 //! Scene files: every file in `scenes/` loads and builds, the built-in ones match the
 //! built-in scenes, and malformed files are refused with one line naming the file.
 //!
-//! `FIXSTEP_BLESS=1 cargo test --test cli_scene_files` rewrites `scenes/<builtin>.ron` from
-//! the built-in scenes (scripts/rerecord.sh does this).
-
-mod replay_support;
+//! `FIXSTEP_BLESS=1 cargo test --test suite cli_scene_files::` rewrites
+//! `scenes/<builtin>.ron` from the built-in scenes (scripts/rerecord.sh does this).
 
 use std::path::{Path, PathBuf};
 
+use crate::replay_support::{TempPath, fixstep};
 use fixstep::math::Fx;
 use fixstep::replay::write_atomic;
 use fixstep::scene::{BUILTIN_SCENES, Scene, builtin_scene, load_scene_file};
-use replay_support::{TempPath, fixstep};
 use ron::extensions::Extensions;
 use ron::ser::PrettyConfig;
 
@@ -27,7 +25,7 @@ fn builtin_file_text(name: &str, scene: &Scene<Fx>) -> String {
         .expect("scenes serialise");
     format!(
         "// The built-in scene `{name}`, written by `FIXSTEP_BLESS=1 cargo test --test \
-         cli_scene_files`.\n// Run it with `fixstep run scenes/{name}.ron`.\n{}\n",
+         suite cli_scene_files::`.\n// Run it with `fixstep run scenes/{name}.ron`.\n{}\n",
         compact_vectors(&body)
     )
 }
@@ -76,7 +74,7 @@ fn builtin_scene_files_match_the_builtins() {
         assert_eq!(
             loaded, scene,
             "{name}.ron differs from the built-in scene; regenerate it with \
-             FIXSTEP_BLESS=1 cargo test --test cli_scene_files"
+             FIXSTEP_BLESS=1 cargo test --test suite cli_scene_files::"
         );
     }
 }
