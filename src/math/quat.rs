@@ -174,20 +174,18 @@ impl<R: Real> Quat<R> {
     ///    q₂ = q₁ (1 − ½(1 − 1/|q₁|²)) = q₁/|q₁| + O(δ²), which leaves each component
     ///    within about an ulp of q/|q| and |q₂|² within a few ulp of 1.
     ///
-    /// Valid while |q|² does not saturate (|q| < 2¹⁵ in I32F32). Below |q| ≈ 2⁻⁸ (I32F32)
-    /// the rounding of |q|² is too coarse for one Newton step to reach full precision.
+    /// Any nonzero q works: q/|q| does not depend on q's scale, so a q whose largest
+    /// component lies outside [½, 2¹⁴) is first scaled by powers of two into that range
+    /// (see `scaled_for_length`), where |q|² neither saturates (at 2³¹ in I32F32) nor is
+    /// rounded too coarsely for the Newton step.
     pub fn try_normalize(self) -> Option<Self> {
-        let norm_squared = self.length_squared();
+        let q = self.scaled_for_length()?;
+        let norm_squared = q.length_squared();
         if norm_squared <= R::ZERO {
             return None;
         }
         let length = norm_squared.sqrt();
-        let estimate = Self::new(
-            self.w / length,
-            self.x / length,
-            self.y / length,
-            self.z / length,
-        );
+        let estimate = Self::new(q.w / length, q.x / length, q.y / length, q.z / length);
         let defect = estimate.norm_defect();
         let step = |c: R| c - (c * defect).mul_pow2_recip(HALF_UNSCALE_SHIFT);
         Some(Self::new(
@@ -196,6 +194,39 @@ impl<R: Real> Quat<R> {
             step(estimate.y),
             step(estimate.z),
         ))
+    }
+
+    /// 2ᵏ·q, with the integer k chosen so that the largest |component| lies in [½, 2¹⁴);
+    /// `None` for the zero quaternion. Quaternions already in that range (every rotation,
+    /// and every q that integration or a scene gives a world that has not diverged) are
+    /// returned unchanged.
+    ///
+    /// Scaling up (by doubling) is exact. Scaling down (by 2⁻⁸ at a time) rounds each
+    /// component to the nearest multiple of 2⁸ ulp, which turns the direction of a q with
+    /// a component of at least 2¹⁴ by less than 2⁻⁶ ulp: far below what the normalisation
+    /// itself rounds. This keeps a world whose angular velocities have saturated
+    /// (components of q + ½ω dt ⊗ q near 10⁷, whose |q|² saturates) on unit orientations.
+    fn scaled_for_length(self) -> Option<Self> {
+        let large = R::from_int(1 << 14);
+        let largest = |q: Self| q.w.abs().max(q.x.abs()).max(q.y.abs()).max(q.z.abs());
+        let mut q = self;
+        if largest(q) == R::ZERO {
+            return None;
+        }
+        // 64 steps span any 64-bit fixed-point format; floats, which neither saturate nor
+        // round absolutely, may stop short.
+        for _ in 0..64 {
+            let m = largest(q);
+            if m >= large {
+                let down = |c: R| c.mul_pow2_recip(8);
+                q = Self::new(down(q.w), down(q.x), down(q.y), down(q.z));
+            } else if m < R::HALF {
+                q = q * R::TWO;
+            } else {
+                break;
+            }
+        }
+        Some(q)
     }
 
     /// q / |q| (see [`Quat::try_normalize`]); the zero quaternion gives [`Quat::IDENTITY`].

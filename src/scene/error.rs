@@ -45,30 +45,13 @@ impl SceneError {
         ))
     }
 
-    /// `q` normalised, or an error about `field` when it cannot be: zero, or so large or
-    /// so small that |q|² leaves the format's range or its precision, so that q/|q| would
-    /// not be a unit quaternion (to within 2⁻¹⁶, what rotations need). Orientations from
-    /// a scene are normalised here, so that every orientation and every joint frame built
-    /// from one is a rotation (a snapshot of the world then passes its decoder's checks).
+    /// `q` normalised, or an error about `field` when it is zero. Orientations from a scene
+    /// are normalised here, so that every orientation and every joint frame built from one
+    /// is a rotation (a snapshot of the world then passes its decoder's checks); any
+    /// nonzero q normalises, however long or short ([`Quat::try_normalize`]).
     pub fn unit_quaternion<R: Real>(field: impl Into<String>, q: Quat<R>) -> Result<Quat<R>, Self> {
-        let Some(unit) = q.try_normalize() else {
-            return Err(Self::new(field, "must not be zero"));
-        };
-        if (unit.length_squared() - R::ONE).abs() > R::from_ratio(1, 1 << 16) {
-            return Err(Self::new(
-                field,
-                format!(
-                    "({}, {}, {}, {}) cannot be normalised in {}: its components are too \
-                     large or too close to zero",
-                    q.w,
-                    q.x,
-                    q.y,
-                    q.z,
-                    R::NAME
-                ),
-            ));
-        }
-        Ok(unit)
+        q.try_normalize()
+            .ok_or_else(|| Self::new(field, "must not be zero"))
     }
 
     /// The same error seen from one level up: `prefix.field`.

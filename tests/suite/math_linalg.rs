@@ -467,6 +467,65 @@ proptest! {
     }
 }
 
+/// Raw fixed-point components of every magnitude, from one ulp to the format's limits,
+/// not all zero.
+fn raw_components() -> impl Strategy<Value = [i64; 4]> {
+    prop::array::uniform4((any::<i64>(), 0u32..64).prop_map(|(bits, shift)| bits >> shift))
+        .prop_filter("nonzero", |c| c.iter().any(|&v| v != 0))
+}
+
+/// normalize at any length, from components of one ulp to components that saturate |q|²:
+/// each component within 2 ulp of q/|q| and |q|² within 4 ulp of 1, as for the integer
+/// components above (the powers of two that bring q to [½, 2¹⁴) first move its direction
+/// by less than 2⁻⁶ ulp).
+fn check_normalize_raw<F: FracBits>(c: [i64; 4]) {
+    let q = Quat::new(
+        Fixed::<F>::from_bits(c[0]),
+        Fixed::<F>::from_bits(c[1]),
+        Fixed::<F>::from_bits(c[2]),
+        Fixed::<F>::from_bits(c[3]),
+    );
+    let unit = q.normalize();
+    assert_quat_near(unit, ref_normalize(q.to_f64()), 2.0, "normalize");
+    let excess = norm_excess_ulp(unit);
+    assert!(excess.abs() <= 4.0, "|q|² − 1 = {excess} ulp for {c:?}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(4096))]
+
+    #[test]
+    fn normalize_takes_any_length(c in raw_components()) {
+        check_normalize_raw::<U32>(c);
+        check_normalize_raw::<U16>(c);
+    }
+}
+
+/// A body spun at 10⁹ rad/s (as a world that diverged and saturated spins): one step moves
+/// q by components near 2·10⁶, whose |q|² saturates I32F32, and the step still ends on a
+/// unit quaternion along the exact direction.
+#[test]
+fn integrate_at_a_saturating_spin_stays_unit() {
+    let dt = Fx::from_ratio(1, 240);
+    for omega in [
+        Vec3::new(Fx::from_int(1_000_000_000), Fx::ZERO, Fx::ZERO),
+        Vec3::new(Fx::MAX, Fx::MIN, Fx::from_int(3)),
+    ] {
+        let q = unit_quat::<Fx>([3, -1, 2, 5]);
+        let a = omega * (dt * Fx::HALF);
+        let u = q.vector();
+        let du = a * q.w + a.cross(u);
+        let raw = Quat::new(q.w - a.dot(u), u.x + du.x, u.y + du.y, u.z + du.z);
+        let stepped = q.integrate(omega, dt);
+        assert_quat_near(stepped, ref_normalize(raw.to_f64()), 2.0, "integrate");
+        let excess = norm_excess_ulp(stepped);
+        assert!(
+            excess.abs() <= 4.0,
+            "|q|² − 1 = {excess} ulp after integrate"
+        );
+    }
+}
+
 /// One step of integrate renormalises as well as normalize does: each component within
 /// 2 ulp of q'/|q'| for the quaternion q' = q + ½ dt (0, ω) ⊗ q before renormalisation
 /// (computed here with the same rounded operations), and |q|² within 4 ulp of 1 — on both
