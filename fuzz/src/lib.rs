@@ -8,7 +8,7 @@
 //! true (the seeds must all be accepted, or they would seed nothing).
 
 use fixstep::codec;
-use fixstep::math::Fx;
+use fixstep::math::{Fx, Real};
 use fixstep::replay::{InputFeed, Replay, scene_section, verify};
 use fixstep::scene::parse_scene;
 use fixstep::world::{TickInput, World, decode_snapshot, encode_snapshot};
@@ -85,6 +85,7 @@ pub fn snapshot_decode(data: &[u8]) -> bool {
 /// whatever the values (huge forces, zero or negative masses, degenerate springs,
 /// coincident particles). Halfway, the state goes through a snapshot file and back, which
 /// must be accepted, and restoring it must replay the second half to the same checksum.
+/// After each half every rigid body's orientation must be unit.
 pub fn world_step(data: &[u8]) -> bool {
     let Some((len, rest)) = data.split_first_chunk::<8>() else {
         return false;
@@ -118,9 +119,11 @@ pub fn world_step(data: &[u8]) -> bool {
         tick
     };
     let half = run_part(&mut world, 0, MAX_TICKS / 2);
+    assert_unit_orientations(&world);
     let bytes = encode_snapshot(&world.snapshot()).expect("a running world encodes");
     let snapshot = decode_snapshot::<Fx>(&bytes).expect("a running world's snapshot is valid");
     let end_tick = run_part(&mut world, half, MAX_TICKS);
+    assert_unit_orientations(&world);
     let end = world.checksum();
     world.restore(&snapshot);
     let mut feed = InputFeed::new(&inputs);
@@ -133,6 +136,23 @@ pub fn world_step(data: &[u8]) -> bool {
         "restoring a snapshot changed the run"
     );
     true
+}
+
+/// Every rigid body's orientation is a unit quaternion to within 2⁻¹⁶, however the world
+/// ran: scenes normalise orientations, integration renormalises them at any spin
+/// (`Quat::try_normalize` takes any nonzero length), and nothing else writes them.
+fn assert_unit_orientations(world: &World<Fx>) {
+    let Some(rigid) = world.rigid() else {
+        return;
+    };
+    for handle in rigid.handles() {
+        let q = rigid.orientation(handle).expect("a listed handle is live");
+        let excess = (q.length_squared() - Fx::ONE).abs();
+        assert!(
+            excess <= Fx::from_ratio(1, 1 << 16),
+            "body {handle:?}: orientation {q:?} is not unit (||q|² − 1| = {excess})"
+        );
+    }
 }
 
 /// Runs `ticks` ticks of `inputs`, or fewer once their [`load`] passes [`MAX_WORK`].
