@@ -201,10 +201,10 @@ impl<R: Real> Quat<R> {
     /// and every q that integration or a scene gives a world that has not diverged) are
     /// returned unchanged.
     ///
-    /// Scaling up (by doubling) is exact. Scaling down (by 2⁻⁸ at a time) rounds each
-    /// component to the nearest multiple of 2⁸ ulp, which turns the direction of a q with
-    /// a component of at least 2¹⁴ by less than 2⁻⁶ ulp: far below what the normalisation
-    /// itself rounds. This keeps a world whose angular velocities have saturated
+    /// Scaling up (by doubling) is exact. Each scaling down by 2⁻⁸ moves every component by
+    /// at most half an ulp and leaves the largest at least 2⁶, so it turns q by at most
+    /// 2⁻⁶ ulp (one ulp over a length of 2⁶); I32F32 needs at most three of them: far below
+    /// what the normalisation itself rounds. This keeps a world whose angular velocities have saturated
     /// (components of q + ½ω dt ⊗ q near 10⁷, whose |q|² saturates) on unit orientations.
     fn scaled_for_length(self) -> Option<Self> {
         let large = R::from_int(1 << 14);

@@ -476,8 +476,8 @@ fn raw_components() -> impl Strategy<Value = [i64; 4]> {
 
 /// normalize at any length, from components of one ulp to components that saturate |q|²:
 /// each component within 2 ulp of q/|q| and |q|² within 4 ulp of 1, as for the integer
-/// components above (the powers of two that bring q to [½, 2¹⁴) first move its direction
-/// by less than 2⁻⁶ ulp).
+/// components above (the powers of two that bring q to [½, 2¹⁴) first turn it by at most
+/// 2⁻⁶ ulp each, three at most in I32F32).
 fn check_normalize_raw<F: FracBits>(c: [i64; 4]) {
     let q = Quat::new(
         Fixed::<F>::from_bits(c[0]),
