@@ -24,16 +24,24 @@ pub const MAX_TICKS: u64 = 64;
 /// tick still times out.
 pub const MAX_WORK: usize = 100_000;
 
-/// The work of one tick of `world`, counted in elements the step visits: rigid bodies
-/// and their contacts (as the last step left them), fluid particles (times 32, about
-/// their neighbours) and particle slots.
+/// The work of one tick of `world`, counted in elements the step visits, once per
+/// substep: rigid bodies and their contacts (as the last step left them), fluid particles
+/// (times 32, about their neighbours, and times the fluid's own substeps, at most) and
+/// particle slots.
 fn load(world: &World<Fx>) -> usize {
     let rigid = world
         .rigid()
         .map_or(0, |r| r.body_count().saturating_add(r.contact_count()));
-    let fluid = world.fluid().map_or(0, |f| f.len().saturating_mul(32));
+    let fluid = world.fluid().map_or(0, |f| {
+        let substeps = f.settings().substeps.max(1) as usize;
+        f.len().saturating_mul(32).saturating_mul(substeps)
+    });
     let particles = world.particles().map_or(0, |p| p.slot_count());
-    rigid.saturating_add(fluid).saturating_add(particles)
+    let substeps = world.settings().substeps.max(1) as usize;
+    rigid
+        .saturating_add(fluid)
+        .saturating_add(particles)
+        .saturating_mul(substeps)
 }
 
 /// A replay file's bytes: decoding never panics; an accepted replay encodes back to the
