@@ -1,6 +1,6 @@
 //! What each fuzz target does with its bytes. The targets in `fuzz_targets/` call these, and
-//! `tests/suite/fuzz_regressions.rs` in the fixstep package runs every kept input through them, so
-//! a crash found once stays fixed.
+//! `tests/suite/fuzz_regressions.rs` in the fixstep package runs every kept input through
+//! them, so a crash found once stays fixed.
 //!
 //! Each function must return normally for any input: an error is a fine answer, a panic,
 //! an abort, a hang or an unbounded allocation is a bug. Where the input is accepted, the
@@ -33,8 +33,8 @@ fn load(world: &World<Fx>) -> usize {
         .rigid()
         .map_or(0, |r| r.body_count().saturating_add(r.contact_count()));
     let fluid = world.fluid().map_or(0, |f| {
-        let substeps = f.settings().substeps.max(1) as usize;
-        f.len().saturating_mul(32).saturating_mul(substeps)
+        let fluid_substeps = f.settings().substeps.max(1) as usize;
+        f.len().saturating_mul(32).saturating_mul(fluid_substeps)
     });
     let particles = world.particles().map_or(0, |p| p.slot_count());
     let substeps = world.settings().substeps.max(1) as usize;

@@ -204,8 +204,9 @@ impl<R: Real> Quat<R> {
     /// Scaling up (by doubling) is exact. Each scaling down by 2⁻⁸ moves every component by
     /// at most half an ulp and leaves the largest at least 2⁶, so it turns q by at most
     /// 2⁻⁶ ulp (one ulp over a length of 2⁶); I32F32 needs at most three of them: far below
-    /// what the normalisation itself rounds. This keeps a world whose angular velocities have saturated
-    /// (components of q + ½ω dt ⊗ q near 10⁷, whose |q|² saturates) on unit orientations.
+    /// what the normalisation itself rounds. This keeps a world whose angular velocities
+    /// have saturated (components of q + ½ω dt ⊗ q near 10⁷, whose |q|² saturates) on unit
+    /// orientations.
     fn scaled_for_length(self) -> Option<Self> {
         let large = R::from_int(1 << 14);
         let largest = |q: Self| q.w.abs().max(q.x.abs()).max(q.y.abs()).max(q.z.abs());
