@@ -1,6 +1,8 @@
 //! Exact I32F32 arithmetic on eight `i64` lanes in AVX-512 (F and DQ), shared by the
-//! solver's kernels and the narrowphase's box–box kernel: loads and stores of lane arrays, sums, the checked `*` and the fused
-//! dot product of values within the bound [−2⁴⁶, 2⁴⁶), and the bound check itself.
+//! solver's preparation kernels and the narrowphase's box–box kernel: loads and stores of
+//! lane arrays, sums, the checked `*` of values within the bound [−2⁴⁶, 2⁴⁶), and the
+//! bound check itself. (The solve and warm-start kernels use the same arithmetic through
+//! [`Wide`](super::wide::Wide), whose documentation derives the products.)
 //!
 //! Values within the bound have products below 2⁶⁰ after rounding and sums of a few of
 //! them stay below 2⁶³, so these wrapping operations give exactly what the checked scalar
@@ -18,20 +20,14 @@
 //! ```
 //!
 //! since a·b = a·b_h·2³² + a_h·b_l·2³² + a_l·b_l; this is the checked `*` (to nearest, ties
-//! toward +∞). The term a·b_h is below 2⁶⁰, so its low 64 bits are all of it. For the
-//! fused dot product Σ aᵢbᵢ rounded once, each a_l·b_l is split into q·2³² + r with
-//! 0 ≤ r < 2³², so that
-//! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
-//! Σ r + 2³¹ < 2³⁴ cannot overflow.
-//!
+//! toward +∞). The term a·b_h is below 2⁶⁰, so its low 64 bits are all of it.
 
 pub(crate) mod sqrt;
 
 use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpge_epu64_mask,
-    _mm512_loadu_si512, _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_mul_epi32,
-    _mm512_mullo_epi64, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_srai_epi64,
-    _mm512_storeu_si512, _mm512_sub_epi64,
+    __m512i, __mmask8, _mm512_add_epi64, _mm512_cmpge_epu64_mask, _mm512_loadu_si512,
+    _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_mul_epi32, _mm512_mullo_epi64,
+    _mm512_set1_epi64, _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
 };
 
 use super::lanes::{Lanes, Lanes3};
@@ -88,12 +84,6 @@ pub(crate) fn sub(a: __m512i, b: __m512i) -> __m512i {
 
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
-pub(crate) fn add3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
-    [add(a[0], b[0]), add(a[1], b[1]), add(a[2], b[2])]
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
 pub(crate) fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
 }
@@ -121,23 +111,6 @@ pub(crate) fn mul(a: __m512i, b: __m512i) -> __m512i {
 #[target_feature(enable = "avx512f,avx512dq")]
 pub(crate) fn mul3(a: [__m512i; 3], b: __m512i) -> [__m512i; 3] {
     [mul(a[0], b), mul(a[1], b), mul(a[2], b)]
-}
-
-/// The fused dot product of checked values: the exact Σ aᵢbᵢ rounded once.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-pub(crate) fn dot3(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
-    let mask = _mm512_set1_epi64(0xffff_ffff);
-    let mut whole = _mm512_setzero_si512();
-    let mut remainders = _mm512_setzero_si512();
-    for i in 0..3 {
-        let (ah, bh) = (high(a[i]), high(b[i]));
-        let upper = add(_mm512_mullo_epi64(a[i], bh), _mm512_mul_epi32(ah, b[i]));
-        let ll = _mm512_mul_epi32(a[i], b[i]);
-        whole = add(whole, add(upper, _mm512_srai_epi64::<32>(ll)));
-        remainders = add(remainders, _mm512_and_si512(ll, mask));
-    }
-    add(whole, high(remainders))
 }
 
 /// The lanes where x lies outside [−2⁴⁶, 2⁴⁶).

@@ -133,6 +133,8 @@ impl<R: Real> FrictionLanes<R> {
 
 #[cfg(target_arch = "x86_64")]
 mod avx512;
+#[cfg(target_arch = "x86_64")]
+mod kernel;
 mod prepare;
 #[cfg(test)]
 mod tests;
@@ -147,10 +149,10 @@ pub(crate) struct ContactBlock<R: Real> {
     len: usize,
     /// Whether the lanes share no moving body, so that they may be solved side by side.
     independent: bool,
-    /// What the AVX-512 kernels need to know of the block's coefficients, found once per
-    /// step by [`soften`](Self::soften).
+    /// What the solve and warm-start kernels need to know of the block's coefficients,
+    /// found once per step by [`soften`](Self::soften).
     #[cfg(target_arch = "x86_64")]
-    kernel: avx512::KernelFacts,
+    kernel: kernel::KernelFacts,
     /// Solver indices of the two bodies.
     a: [u32; LANES],
     b: [u32; LANES],
@@ -193,7 +195,7 @@ impl<R: Real> ContactBlock<R> {
             len: 0,
             independent: false,
             #[cfg(target_arch = "x86_64")]
-            kernel: avx512::KernelFacts::NONE,
+            kernel: kernel::KernelFacts::NONE,
             a: [0; LANES],
             b: [0; LANES],
             contact: [0; LANES],
@@ -219,7 +221,7 @@ impl<R: Real> ContactBlock<R> {
         self.independent = independent;
         #[cfg(target_arch = "x86_64")]
         {
-            self.kernel = avx512::KernelFacts::NONE;
+            self.kernel = kernel::KernelFacts::NONE;
         }
     }
 
@@ -228,11 +230,11 @@ impl<R: Real> ContactBlock<R> {
     /// v_a −= λ₁ t₁/m_a + λ₂ t₂/m_a, ω_a −= λ₁ I_a⁻¹(r_a × t₁) + λ₂ I_a⁻¹(r_a × t₂) +
     /// λ_twist I_a⁻¹n, and the opposite on B.
     ///
-    /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
-    /// processor has it ([`avx512`]), which gives the same bits.
+    /// An independent block of I32F32 constraints goes to a kernel ([`kernel`]) when the
+    /// processor has AVX-512 or AVX2, which gives the same bits.
     pub fn warm_start(&mut self, bodies: &mut [SolverBody<R>]) {
         #[cfg(target_arch = "x86_64")]
-        if self.independent && avx512::warm_start(self, bodies).is_some() {
+        if self.independent && kernel::warm_start(self, bodies).is_some() {
             return;
         }
         self.warm_start_lanes(bodies);
@@ -288,11 +290,11 @@ impl<R: Real> ContactBlock<R> {
     /// lane with no normal and no friction impulse is skipped: both limits are 0, so
     /// nothing would change.
     ///
-    /// An independent block of I32F32 constraints goes to the AVX-512 kernel when the
-    /// processor has it ([`avx512`]), which gives the same bits.
+    /// An independent block of I32F32 constraints goes to a kernel ([`kernel`]) when the
+    /// processor has AVX-512 or AVX2, which gives the same bits.
     pub fn solve(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
         #[cfg(target_arch = "x86_64")]
-        if self.independent && avx512::solve(self, bodies, pass).is_some() {
+        if self.independent && kernel::solve(self, bodies, pass).is_some() {
             return;
         }
         self.solve_lanes(bodies, pass);

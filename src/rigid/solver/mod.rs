@@ -34,6 +34,8 @@ mod lanes;
 mod mixed_materials;
 mod prepare;
 mod softness;
+#[cfg(target_arch = "x86_64")]
+mod wide;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};
 pub(crate) use contact_constraint::{ContactBlock, SolvePass};

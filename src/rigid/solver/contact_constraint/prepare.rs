@@ -276,7 +276,7 @@ impl<R: Real> ContactBlock<R> {
         }
         #[cfg(target_arch = "x86_64")]
         {
-            self.kernel = super::avx512::KernelFacts::of(self);
+            self.kernel = super::kernel::KernelFacts::of(self);
         }
     }
 

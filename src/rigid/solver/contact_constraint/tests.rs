@@ -1,8 +1,10 @@
 //! The block passes against their lane-by-lane forms: whichever path a block takes (the
-//! AVX-512 kernels where the processor has them, or the fallback when a value leaves the
-//! kernels' bound), the bits and the saturation count are those of the lanes solved one
-//! after another.
+//! solve and warm-start kernels with each backend the processor has, AVX-512 and AVX2, or
+//! the fallback when a value leaves the kernels' bound), the bits and the saturation count
+//! are those of the lanes solved one after another.
 
+#[cfg(target_arch = "x86_64")]
+use super::kernel::{Kernel, KernelFacts, Kernels, solve_on, warm_start_on};
 use super::{ContactArms, ContactBlock, SolvePass};
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Mat3, Pcg32, Real, Vec3};
@@ -12,6 +14,8 @@ use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::kernels_present;
 use crate::rigid::solver::lanes::LANES;
 use crate::rigid::solver::softness::Softness;
+#[cfg(target_arch = "x86_64")]
+use crate::rigid::solver::wide::{avx2::Avx2, avx512::Avx512};
 
 /// A value in [−scale, scale).
 fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
@@ -204,23 +208,111 @@ fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
     bits
 }
 
+/// The kernel that took a block (no kernel exists off x86_64).
+#[cfg(not(target_arch = "x86_64"))]
+enum Kernel {
+    Narrow,
+    Wide,
+}
+
+/// A backend of the solve and warm-start kernels.
+#[derive(Clone, Copy, Debug)]
+enum Backend {
+    #[cfg(target_arch = "x86_64")]
+    Avx512(Avx512),
+    #[cfg(target_arch = "x86_64")]
+    Avx2(Avx2),
+}
+
+/// The backends this processor runs.
+fn backends() -> Vec<Backend> {
+    #[cfg(target_arch = "x86_64")]
+    return [
+        Avx512::detect().map(Backend::Avx512),
+        Avx2::detect().map(Backend::Avx2),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    #[cfg(not(target_arch = "x86_64"))]
+    Vec::new()
+}
+
+impl Backend {
+    /// The facts of `block` as this backend finds them.
+    #[cfg(target_arch = "x86_64")]
+    fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts {
+        match self {
+            Self::Avx512(wide) => wide.facts(block),
+            Self::Avx2(wide) => wide.facts(block),
+        }
+    }
+
+    /// The solve pass of `block` with this backend's kernels, as [`ContactBlock::solve`]
+    /// takes it: a kernel for an independent block within the bound, else the lanes.
+    fn solve(
+        self,
+        block: &mut ContactBlock<Fx>,
+        bodies: &mut [SolverBody<Fx>],
+        pass: &SolvePass<Fx>,
+    ) -> Option<Kernel> {
+        #[cfg(target_arch = "x86_64")]
+        let taken = if block.independent {
+            match self {
+                Self::Avx512(wide) => solve_on(wide, block, bodies, pass),
+                Self::Avx2(wide) => solve_on(wide, block, bodies, pass),
+            }
+        } else {
+            None
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let taken = match self {};
+        if taken.is_none() {
+            block.solve_lanes(bodies, pass);
+        }
+        taken
+    }
+
+    /// The warm start of `block` with this backend's kernels, likewise.
+    fn warm_start(self, block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) {
+        #[cfg(target_arch = "x86_64")]
+        let taken = block.independent
+            && match self {
+                Self::Avx512(wide) => warm_start_on(wide, block, bodies),
+                Self::Avx2(wide) => warm_start_on(wide, block, bodies),
+            }
+            .is_some();
+        #[cfg(not(target_arch = "x86_64"))]
+        let taken = match self {};
+        if !taken {
+            block.warm_start_lanes(bodies);
+        }
+    }
+}
+
 /// A substep and a half, as the solver runs them: warm start, the biased pass, the relax
 /// pass (which keeps the separations), warm start and the biased pass again (which reads
-/// them); with the blocks' kernels (`fast`) or lane by lane. The bodies' motions stay as
+/// them); with the kernels of `backend`, or lane by lane. The bodies' motions stay as
 /// drawn, as if the positions had moved before the relax pass.
-fn run_passes(block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>], fast: bool) {
+fn run_passes(
+    block: &mut ContactBlock<Fx>,
+    bodies: &mut [SolverBody<Fx>],
+    backend: Option<Backend>,
+) {
     for use_bias in [true, false, true] {
-        if use_bias {
-            if fast {
-                block.warm_start(bodies);
-            } else {
-                block.warm_start_lanes(bodies);
+        match backend {
+            Some(backend) => {
+                if use_bias {
+                    backend.warm_start(block, bodies);
+                }
+                backend.solve(block, bodies, &pass(use_bias));
             }
-        }
-        if fast {
-            block.solve(bodies, &pass(use_bias));
-        } else {
-            block.solve_lanes(bodies, &pass(use_bias));
+            None => {
+                if use_bias {
+                    block.warm_start_lanes(bodies);
+                }
+                block.solve_lanes(bodies, &pass(use_bias));
+            }
         }
     }
 }
@@ -228,7 +320,7 @@ fn run_passes(block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>], fast:
 /// What the kernels did in a comparison: the passes each solve kernel took (the first
 /// pass of each independent block, with and without bias), and the blocks that shared the
 /// products λ n/m and λ t/m between their two sides.
-#[derive(Debug, Default)]
+#[derive(Debug, Default, PartialEq)]
 struct Runs {
     narrow: usize,
     wide: usize,
@@ -254,43 +346,59 @@ const fn everyday(masses: Masses) -> Scales {
     }
 }
 
-/// Runs `trials` random blocks at the given magnitudes through both forms of the passes,
-/// asserting the same bits and saturation counts, and returns what the kernels did.
+/// Runs `trials` random blocks at the given magnitudes through the passes lane by lane and
+/// with each backend's kernels, asserting the same bits and saturation counts, and returns
+/// what the kernels did: the same with every backend (asserted), none without one.
 fn compare(seed: u64, trials: usize, scales: &Scales) -> Runs {
+    let backends = backends();
     let mut rng = Pcg32::new(seed, 7);
-    let mut runs = Runs::default();
+    let mut runs: Vec<Runs> = backends.iter().map(|_| Runs::default()).collect();
     for trial in 0..trials {
         let lanes = 1 + trial % LANES;
         let independent = trial % 7 != 6;
         let bodies = bodies(&mut rng, 2 * LANES + 2, scales.velocity, scales.masses);
         let magnitudes = (scales.impulse, scales.separation);
         let block = block(&mut rng, &bodies, lanes, independent, magnitudes);
-        let (mut fast_bodies, mut fast_block) = (bodies.clone(), block.clone());
         let (mut slow_bodies, mut slow_block) = (bodies.clone(), block.clone());
-        let ((), fast_saturations) =
-            count_saturations(|| run_passes(&mut fast_block, &mut fast_bodies, true));
         let ((), slow_saturations) =
-            count_saturations(|| run_passes(&mut slow_block, &mut slow_bodies, false));
-        assert_eq!(
-            state(&fast_bodies, &fast_block),
-            state(&slow_bodies, &slow_block),
-            "trial {trial}"
-        );
-        assert_eq!(fast_saturations, slow_saturations, "trial {trial}");
-        if independent {
-            for use_bias in [true, false] {
-                match kernel_taking(&block, &bodies, &pass(use_bias)) {
-                    #[cfg(target_arch = "x86_64")]
-                    Taken::Narrow => runs.narrow += 1,
-                    #[cfg(target_arch = "x86_64")]
-                    Taken::Wide => runs.wide += 1,
-                    Taken::None => {}
+            count_saturations(|| run_passes(&mut slow_block, &mut slow_bodies, None));
+        for (&backend, runs) in backends.iter().zip(&mut runs) {
+            #[cfg(target_arch = "x86_64")]
+            assert_eq!(
+                backend.facts(&block),
+                block.kernel,
+                "trial {trial}, {backend:?}"
+            );
+            let (mut fast_bodies, mut fast_block) = (bodies.clone(), block.clone());
+            let ((), fast_saturations) = count_saturations(|| {
+                run_passes(&mut fast_block, &mut fast_bodies, Some(backend));
+            });
+            assert_eq!(
+                state(&fast_bodies, &fast_block),
+                state(&slow_bodies, &slow_block),
+                "trial {trial}, {backend:?}"
+            );
+            assert_eq!(
+                fast_saturations, slow_saturations,
+                "trial {trial}, {backend:?}"
+            );
+            if independent {
+                for use_bias in [true, false] {
+                    let (mut bodies, mut block) = (bodies.clone(), block.clone());
+                    match backend.solve(&mut block, &mut bodies, &pass(use_bias)) {
+                        Some(Kernel::Narrow) => runs.narrow += 1,
+                        Some(Kernel::Wide) => runs.wide += 1,
+                        None => {}
+                    }
                 }
             }
+            runs.shared += usize::from(shares_linear_products(&block));
         }
-        runs.shared += usize::from(shares_linear_products(&block));
     }
-    runs
+    for other in runs.iter().skip(1) {
+        assert_eq!(other, &runs[0], "the backends took different kernels");
+    }
+    runs.into_iter().next().unwrap_or_default()
 }
 
 /// Whether the kernels share the products λ n/m and λ t/m between the sides of `block`.
@@ -304,36 +412,6 @@ fn shares_linear_products(_: &ContactBlock<Fx>) -> bool {
     false
 }
 
-/// Which solve kernel took a block, if any.
-enum Taken {
-    #[cfg(target_arch = "x86_64")]
-    Narrow,
-    #[cfg(target_arch = "x86_64")]
-    Wide,
-    None,
-}
-
-/// Which solve kernel takes `block` (a copy of it: nothing is kept).
-#[cfg(target_arch = "x86_64")]
-fn kernel_taking(
-    block: &ContactBlock<Fx>,
-    bodies: &[SolverBody<Fx>],
-    pass: &SolvePass<Fx>,
-) -> Taken {
-    use super::avx512::Kernel;
-    let (mut bodies, mut block) = (bodies.to_vec(), block.clone());
-    match super::avx512::solve(&mut block, &mut bodies, pass) {
-        Some(Kernel::Narrow) => Taken::Narrow,
-        Some(Kernel::Wide) => Taken::Wide,
-        None => Taken::None,
-    }
-}
-
-#[cfg(not(target_arch = "x86_64"))]
-fn kernel_taking(_: &ContactBlock<Fx>, _: &[SolverBody<Fx>], _: &SolvePass<Fx>) -> Taken {
-    Taken::None
-}
-
 /// Independent blocks among `trials`, each compared with and without bias.
 const fn independent_passes(trials: usize) -> usize {
     2 * (trials - trials / 7)
@@ -342,7 +420,7 @@ const fn independent_passes(trials: usize) -> usize {
 #[test]
 fn blocks_at_everyday_magnitudes_match_the_lanes() {
     let runs = compare(1, 400, &everyday(Masses::Spread));
-    if kernels_present() {
+    if !backends().is_empty() {
         // Everyday values stay inside the wide bound: a kernel takes every independent
         // block.
         assert_eq!(runs.narrow + runs.wide, independent_passes(400));
@@ -352,7 +430,7 @@ fn blocks_at_everyday_magnitudes_match_the_lanes() {
 #[test]
 fn blocks_of_equal_masses_match_the_lanes() {
     let runs = compare(7, 400, &everyday(Masses::Equal));
-    if kernels_present() {
+    if !backends().is_empty() {
         assert_eq!(runs.narrow + runs.wide, independent_passes(400));
         // Lanes of two moving bodies, with the static body or with a kinematic one: every
         // block can share.
@@ -371,7 +449,7 @@ fn blocks_of_heavy_slow_bodies_take_the_narrow_kernel() {
         masses: Masses::Heavy,
     };
     let runs = compare(8, 400, &scales);
-    if kernels_present() {
+    if !backends().is_empty() {
         // All but the few blocks whose pass pushes a velocity past 0.5 m/s.
         assert_eq!(runs.narrow + runs.wide, independent_passes(400));
         assert!(runs.narrow > 9 * independent_passes(400) / 10, "{runs:?}");
@@ -390,7 +468,7 @@ fn blocks_near_the_narrow_bound_match_the_lanes() {
         masses: Masses::Heavy,
     };
     let runs = compare(9, 400, &scales);
-    if kernels_present() {
+    if !backends().is_empty() {
         assert!(runs.narrow > 0 && runs.wide > 0, "{runs:?}");
         assert_eq!(runs.narrow + runs.wide, independent_passes(400));
     }
@@ -405,7 +483,7 @@ fn blocks_near_the_kernel_bound_match_the_lanes() {
         ..everyday(Masses::Spread)
     };
     let runs = compare(2, 400, &scales);
-    if kernels_present() {
+    if !backends().is_empty() {
         let taken = runs.narrow + runs.wide;
         assert!(
             taken > 0 && taken < independent_passes(400),
@@ -426,7 +504,7 @@ fn blocks_pushed_past_the_kernel_bound_match_the_lanes() {
         ..everyday(Masses::Spread)
     };
     let runs = compare(4, 400, &scales);
-    if kernels_present() {
+    if !backends().is_empty() {
         let taken = runs.narrow + runs.wide;
         assert!(
             taken > 0 && taken < independent_passes(400),

@@ -1,0 +1,252 @@
+//! Exact I32F32 arithmetic on eight `i64` lanes, behind one interface with two backends
+//! for x86_64: AVX-512 ([`avx512::Avx512`], AVX-512F and DQ) and AVX2 ([`avx2::Avx2`]).
+//! The contact solver's solve and warm-start kernels are written once against [`Wide`]
+//! and give the same bits with either backend, and the same bits as the checked scalar
+//! operators wherever their operands stay within the bounds each kernel checks.
+//!
+//! A lane mask is a `u8`, bit l for lane l, in both backends.
+//!
+//! # Products
+//!
+//! With a = a_h·2³² + a_l, a_h = ⌊(a + 2³¹)/2³²⌋ and a_l ∈ [−2³¹, 2³¹) the signed low half
+//! of a, and b likewise,
+//!
+//! ```text
+//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l + ⌊(a_l·b_l + 2³¹)/2³²⌋
+//! ```
+//!
+//! since a·b = a·b_h·2³² + a_h·b_l·2³² + a_l·b_l; this is the checked `*` (to nearest, ties
+//! toward +∞). For a value within [−2⁴⁶, 2⁴⁶) (|a_h| ≤ 2¹⁴) the term a·b_h is below 2⁶⁰,
+//! so its low 64 bits are all of it. For the fused dot product Σ aᵢbᵢ rounded once, each
+//! a_l·b_l is split into q·2³² + r with 0 ≤ r < 2³², so that
+//! ⌊(Σ aᵢbᵢ + 2³¹)/2³²⌋ = Σ (aᵢ·b_h,ᵢ + a_h,ᵢ·b_l,ᵢ + qᵢ) + ⌊(Σ r + 2³¹)/2³²⌋, and
+//! Σ r + 2³¹ < 2³⁴ cannot overflow.
+//!
+//! # Narrow products
+//!
+//! When one factor a lies in [−2³¹, 2³¹) (|a| < ½), it is its own low half (a_h = 0) and
+//! the product needs two multiplies of 32-bit halves, both exact in 64 bits:
+//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋ ([`Wide::times`]).
+
+pub(crate) mod avx2;
+pub(crate) mod avx512;
+
+use super::body::SolverBody;
+use super::lanes::{LANES, Lanes};
+use crate::math::Fx;
+
+/// Eight `i64` lanes and the operations the kernels need, each modulo 2⁶⁴ lane by lane.
+/// A value of an implementing type proves that the processor runs its instructions.
+///
+/// Every method is `#[inline(always)]` and carries no `#[target_feature]`: a kernel runs
+/// them inside an entry point that enables the backend's instructions, where the
+/// intrinsics inline into single instructions. For that, nothing between the entry point
+/// and an intrinsic may be a call the compiler declines to inline: the kernels and the
+/// backends use no closures or iterator adapters on vectors, only loops and macros.
+pub(crate) trait Wide: Copy {
+    /// Eight lanes.
+    type V: Copy;
+
+    fn zero(self) -> Self::V;
+    fn splat(self, x: i64) -> Self::V;
+    fn load_words(self, x: [i64; LANES]) -> Self::V;
+    fn store_words(self, x: Self::V) -> [i64; LANES];
+    fn add(self, a: Self::V, b: Self::V) -> Self::V;
+    fn sub(self, a: Self::V, b: Self::V) -> Self::V;
+    fn and(self, a: Self::V, b: Self::V) -> Self::V;
+    fn max(self, a: Self::V, b: Self::V) -> Self::V;
+    fn min(self, a: Self::V, b: Self::V) -> Self::V;
+    /// The signed low 32 bits of a times those of b, in 64 bits.
+    fn mul_low_halves(self, a: Self::V, b: Self::V) -> Self::V;
+    /// The low 64 bits of a·b.
+    fn mul_low(self, a: Self::V, b: Self::V) -> Self::V;
+    /// ⌊a/2³²⌋.
+    fn shift_down_32(self, a: Self::V) -> Self::V;
+    /// The lanes where a > b, signed.
+    fn greater(self, a: Self::V, b: Self::V) -> u8;
+    /// The lanes where a ≥ b, unsigned.
+    fn at_least_unsigned(self, a: Self::V, b: Self::V) -> u8;
+    fn equal(self, a: Self::V, b: Self::V) -> u8;
+    /// `on` in the lanes of `mask`, `off` elsewhere.
+    fn select(self, mask: u8, on: Self::V, off: Self::V) -> Self::V;
+
+    /// The velocities v, ω and, when `with_motion`, the motions Δp, Δθ (zero otherwise)
+    /// of the bodies `indices` in the lanes of `active` (zero elsewhere), one vector per
+    /// component.
+    ///
+    /// # Safety
+    /// The index of every lane of `active` must be that of a body of `bodies`.
+    unsafe fn load_bodies(
+        self,
+        bodies: &[SolverBody<Fx>],
+        indices: &[u32; LANES],
+        active: u8,
+        with_motion: bool,
+    ) -> [[Self::V; 3]; 4];
+
+    /// Writes v and ω of the bodies `indices` in the lanes of `active`.
+    ///
+    /// # Safety
+    /// As for [`load_bodies`](Self::load_bodies).
+    unsafe fn store_velocities(
+        self,
+        bodies: &mut [SolverBody<Fx>],
+        indices: &[u32; LANES],
+        active: u8,
+        velocities: [[Self::V; 3]; 2],
+    );
+
+    /// The raw bits of a lane array.
+    #[inline(always)]
+    fn load(self, lanes: &Lanes<Fx>) -> Self::V {
+        let mut bits = [0; LANES];
+        for (bits, x) in bits.iter_mut().zip(lanes) {
+            *bits = x.to_bits();
+        }
+        self.load_words(bits)
+    }
+
+    /// Writes raw bits to a lane array.
+    #[inline(always)]
+    fn store(self, lanes: &mut Lanes<Fx>, value: Self::V) {
+        for (x, bits) in lanes.iter_mut().zip(self.store_words(value)) {
+            *x = Fx::from_bits(bits);
+        }
+    }
+
+    /// Writes the lanes of `mask` to a lane array; the others keep their values.
+    #[inline(always)]
+    fn store_lanes(self, lanes: &mut Lanes<Fx>, mask: u8, value: Self::V) {
+        let kept = self.load(lanes);
+        self.store(lanes, self.select(mask, value, kept));
+    }
+
+    #[inline(always)]
+    fn load3(self, lanes: &super::lanes::Lanes3<Fx>) -> [Self::V; 3] {
+        [
+            self.load(&lanes.x),
+            self.load(&lanes.y),
+            self.load(&lanes.z),
+        ]
+    }
+
+    #[inline(always)]
+    fn add3(self, a: [Self::V; 3], b: [Self::V; 3]) -> [Self::V; 3] {
+        [
+            self.add(a[0], b[0]),
+            self.add(a[1], b[1]),
+            self.add(a[2], b[2]),
+        ]
+    }
+
+    #[inline(always)]
+    fn sub3(self, a: [Self::V; 3], b: [Self::V; 3]) -> [Self::V; 3] {
+        [
+            self.sub(a[0], b[0]),
+            self.sub(a[1], b[1]),
+            self.sub(a[2], b[2]),
+        ]
+    }
+
+    /// `value` in the lanes of `mask`, zero elsewhere.
+    #[inline(always)]
+    fn keep3(self, mask: u8, value: [Self::V; 3]) -> [Self::V; 3] {
+        let zero = self.zero();
+        [
+            self.select(mask, value[0], zero),
+            self.select(mask, value[1], zero),
+            self.select(mask, value[2], zero),
+        ]
+    }
+
+    /// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.
+    #[inline(always)]
+    fn high(self, a: Self::V) -> Self::V {
+        self.shift_down_32(self.add(a, self.splat(1 << 31)))
+    }
+
+    /// The checked `*` of values within [−2⁴⁶, 2⁴⁶): ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l +
+    /// ⌊(a_l·b_l + 2³¹)/2³²⌋ ([module](self) documentation).
+    #[inline(always)]
+    fn mul(self, a: Self::V, b: Self::V) -> Self::V {
+        let (ah, bh) = (self.high(a), self.high(b));
+        let upper = self.add(self.mul_low(a, bh), self.mul_low_halves(ah, b));
+        let low = self.high(self.mul_low_halves(a, b));
+        self.add(upper, low)
+    }
+
+    /// The checked `*` of `small`, within [−2³¹, 2³¹) when `NARROW` (and within
+    /// [−2⁴⁶, 2⁴⁶) otherwise), and `other`, within [−2⁴⁶, 2⁴⁶): when narrow,
+    /// ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋, two products of 32-bit halves
+    /// (a·b_h below 2⁴⁵, a·b_l below 2⁶²) where [`mul`](Self::mul) needs three.
+    #[inline(always)]
+    fn times<const NARROW: bool>(self, small: Self::V, other: Self::V) -> Self::V {
+        if NARROW {
+            let upper = self.mul_low_halves(small, self.high(other));
+            self.add(upper, self.high(self.mul_low_halves(small, other)))
+        } else {
+            self.mul(small, other)
+        }
+    }
+
+    /// Each of `coefficients` times the same factor ([`times`](Self::times)).
+    #[inline(always)]
+    fn times3<const NARROW: bool>(self, coefficients: [Self::V; 3], x: Self::V) -> [Self::V; 3] {
+        [
+            self.times::<NARROW>(coefficients[0], x),
+            self.times::<NARROW>(coefficients[1], x),
+            self.times::<NARROW>(coefficients[2], x),
+        ]
+    }
+
+    /// The fused dot product of `values`, within [−2³¹, 2³¹) when `NARROW`, and
+    /// `coefficients`, within [−2⁴⁶, 2⁴⁶): the exact Σ aᵢbᵢ rounded once ([module](self)
+    /// documentation; when narrow, a_h = 0).
+    #[inline(always)]
+    fn dot<const NARROW: bool>(self, values: [Self::V; 3], coefficients: [Self::V; 3]) -> Self::V {
+        let mask = self.splat(0xffff_ffff);
+        let mut whole = self.zero();
+        let mut remainders = self.zero();
+        for i in 0..3 {
+            let (a, b) = (values[i], coefficients[i]);
+            let ll = self.mul_low_halves(a, b);
+            let upper = if NARROW {
+                self.mul_low_halves(a, self.high(b))
+            } else {
+                let (ah, bh) = (self.high(a), self.high(b));
+                self.add(self.mul_low(a, bh), self.mul_low_halves(ah, b))
+            };
+            whole = self.add(whole, self.add(upper, self.shift_down_32(ll)));
+            remainders = self.add(remainders, self.and(ll, mask));
+        }
+        self.add(whole, self.high(remainders))
+    }
+
+    /// The lanes where x lies outside [−2⁴⁶, 2⁴⁶).
+    #[inline(always)]
+    fn out_of_bound(self, x: Self::V) -> u8 {
+        self.at_least_unsigned(self.add(x, self.splat(1 << 46)), self.splat(1 << 47))
+    }
+
+    #[inline(always)]
+    fn out_of_bound3(self, x: [Self::V; 3]) -> u8 {
+        self.out_of_bound(x[0]) | self.out_of_bound(x[1]) | self.out_of_bound(x[2])
+    }
+
+    /// The lanes where x, a value that changes during the step, lies outside the bound
+    /// its products need: [−2³¹, 2³¹) for narrow products, [−2⁴⁶, 2⁴⁶) for wide ones
+    /// ([`times`](Self::times)).
+    #[inline(always)]
+    fn beyond<const NARROW: bool>(self, x: Self::V) -> u8 {
+        if NARROW {
+            self.at_least_unsigned(self.add(x, self.splat(1 << 31)), self.splat(1 << 32))
+        } else {
+            self.out_of_bound(x)
+        }
+    }
+
+    #[inline(always)]
+    fn beyond3<const NARROW: bool>(self, x: [Self::V; 3]) -> u8 {
+        self.beyond::<NARROW>(x[0]) | self.beyond::<NARROW>(x[1]) | self.beyond::<NARROW>(x[2])
+    }
+}

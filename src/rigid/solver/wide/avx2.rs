@@ -1,0 +1,274 @@
+//! The AVX2 backend of [`Wide`]: eight lanes in two `__m256i` (lanes 0–3, then 4–7), lane
+//! masks built from the sign bits of comparison results. AVX2 lacks several 64-bit
+//! operations that AVX-512 has, so some take a few instructions:
+//!
+//! * the low 64 bits of a 64 × 64 product: a_l·b_l + ((a_h·b_l + a_l·b_h) mod 2³²)·2³², from
+//!   three unsigned 32 × 32-bit products (`_mm256_mul_epu32`);
+//! * the arithmetic shift right by 32: the high half moved down (a logical shift), with
+//!   the sign of the high half (an arithmetic shift of the 32-bit elements) above it;
+//! * the signed maximum and minimum: a comparison and a blend;
+//! * the unsigned comparison: a signed one of both operands with their sign bits flipped;
+//! * the blend of two values under a lane mask: the mask's bits spread over the lanes by a
+//!   comparison.
+//!
+//! The bodies are loaded and stored lane by lane, through arrays.
+//!
+//! As in the AVX-512 backend, the operations carry no `#[target_feature]` of their own:
+//! they are always inlined into a kernel entry point that enables AVX2.
+
+use core::arch::x86_64::{
+    __m256i, _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8,
+    _mm256_castsi256_pd, _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_loadu_si256,
+    _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32, _mm256_set_epi64x, _mm256_set1_epi64x,
+    _mm256_setzero_si256, _mm256_slli_epi64, _mm256_srai_epi32, _mm256_srli_epi64,
+    _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
+};
+
+use super::Wide;
+use crate::math::{Fx, Vec3};
+use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::lanes::LANES;
+
+/// `f` of each half of two values. A macro, not a closure: the kernels are large, and a
+/// closure there may not be inlined (nor, then, the intrinsics inside it).
+macro_rules! halves {
+    ($a:expr, $b:expr, |$x:ident, $y:ident| $f:expr) => {{
+        let (a, b): ([__m256i; 2], [__m256i; 2]) = ($a, $b);
+        [
+            {
+                let ($x, $y) = (a[0], b[0]);
+                $f
+            },
+            {
+                let ($x, $y) = (a[1], b[1]);
+                $f
+            },
+        ]
+    }};
+}
+
+/// The AVX2 backend. A value exists only where the processor has AVX2.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Avx2(());
+
+impl Avx2 {
+    /// The backend, if this processor runs it.
+    #[inline]
+    pub(crate) fn detect() -> Option<Self> {
+        std::arch::is_x86_feature_detected!("avx2").then_some(Self(()))
+    }
+
+    /// The lane mask of a comparison result (all ones or all zeros per lane).
+    #[inline(always)]
+    fn mask_of(self, x: [__m256i; 2]) -> u8 {
+        // SAFETY (here and below): a value of `Avx2` exists only on a processor with AVX2.
+        let (low, high) = unsafe {
+            (
+                _mm256_movemask_pd(_mm256_castsi256_pd(x[0])),
+                _mm256_movemask_pd(_mm256_castsi256_pd(x[1])),
+            )
+        };
+        (low | (high << 4)) as u8
+    }
+}
+
+// SAFETY (every `unsafe` block below that calls an intrinsic): a value of `Avx2` exists only
+// on a processor with AVX2 (`Avx2::detect`).
+impl Wide for Avx2 {
+    type V = [__m256i; 2];
+
+    #[inline(always)]
+    fn zero(self) -> Self::V {
+        unsafe { [_mm256_setzero_si256(); 2] }
+    }
+
+    #[inline(always)]
+    fn splat(self, x: i64) -> Self::V {
+        unsafe { [_mm256_set1_epi64x(x); 2] }
+    }
+
+    #[inline(always)]
+    fn load_words(self, x: [i64; LANES]) -> Self::V {
+        // SAFETY: 2 × 32 readable bytes.
+        unsafe {
+            [
+                _mm256_loadu_si256(x.as_ptr().cast()),
+                _mm256_loadu_si256(x.as_ptr().add(4).cast()),
+            ]
+        }
+    }
+
+    #[inline(always)]
+    fn store_words(self, x: Self::V) -> [i64; LANES] {
+        let mut out = [0; LANES];
+        // SAFETY: 2 × 32 writable bytes.
+        unsafe {
+            _mm256_storeu_si256(out.as_mut_ptr().cast(), x[0]);
+            _mm256_storeu_si256(out.as_mut_ptr().add(4).cast(), x[1]);
+        }
+        out
+    }
+
+    #[inline(always)]
+    fn add(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe { _mm256_add_epi64(a, b) })
+    }
+
+    #[inline(always)]
+    fn sub(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe { _mm256_sub_epi64(a, b) })
+    }
+
+    #[inline(always)]
+    fn and(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe { _mm256_and_si256(a, b) })
+    }
+
+    #[inline(always)]
+    fn max(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe {
+            _mm256_blendv_epi8(b, a, _mm256_cmpgt_epi64(a, b))
+        })
+    }
+
+    #[inline(always)]
+    fn min(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe {
+            _mm256_blendv_epi8(a, b, _mm256_cmpgt_epi64(a, b))
+        })
+    }
+
+    #[inline(always)]
+    fn mul_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe { _mm256_mul_epi32(a, b) })
+    }
+
+    #[inline(always)]
+    fn mul_low(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe {
+            let low = _mm256_mul_epu32(a, b);
+            let cross = _mm256_add_epi64(
+                _mm256_mul_epu32(_mm256_srli_epi64::<32>(a), b),
+                _mm256_mul_epu32(a, _mm256_srli_epi64::<32>(b)),
+            );
+            _mm256_add_epi64(low, _mm256_slli_epi64::<32>(cross))
+        })
+    }
+
+    #[inline(always)]
+    fn shift_down_32(self, a: Self::V) -> Self::V {
+        halves!(a, a, |a, _b| unsafe {
+            _mm256_blend_epi32::<0b1010_1010>(
+                _mm256_srli_epi64::<32>(a),
+                _mm256_srai_epi32::<31>(a),
+            )
+        })
+    }
+
+    #[inline(always)]
+    fn greater(self, a: Self::V, b: Self::V) -> u8 {
+        self.mask_of(halves!(a, b, |a, b| unsafe { _mm256_cmpgt_epi64(a, b) }))
+    }
+
+    #[inline(always)]
+    fn at_least_unsigned(self, a: Self::V, b: Self::V) -> u8 {
+        // a ≥ b unsigned unless b > a unsigned, that is b ^ 2⁶³ > a ^ 2⁶³ signed.
+        let below = halves!(a, b, |a, b| unsafe {
+            let sign = _mm256_set1_epi64x(i64::MIN);
+            _mm256_cmpgt_epi64(_mm256_xor_si256(b, sign), _mm256_xor_si256(a, sign))
+        });
+        !self.mask_of(below)
+    }
+
+    #[inline(always)]
+    fn equal(self, a: Self::V, b: Self::V) -> u8 {
+        self.mask_of(halves!(a, b, |a, b| unsafe { _mm256_cmpeq_epi64(a, b) }))
+    }
+
+    #[inline(always)]
+    fn select(self, mask: u8, on: Self::V, off: Self::V) -> Self::V {
+        // SAFETY: see the implementation's comment.
+        unsafe {
+            // Lane l of a half is on when bit l of its nibble is set.
+            let bits = _mm256_set_epi64x(8, 4, 2, 1);
+            let low = _mm256_and_si256(_mm256_set1_epi64x(i64::from(mask & 0xf)), bits);
+            let high = _mm256_and_si256(_mm256_set1_epi64x(i64::from(mask >> 4)), bits);
+            [
+                _mm256_blendv_epi8(off[0], on[0], _mm256_cmpeq_epi64(low, bits)),
+                _mm256_blendv_epi8(off[1], on[1], _mm256_cmpeq_epi64(high, bits)),
+            ]
+        }
+    }
+
+    /// Lane by lane: the words of each body of `active` gathered into arrays, then loaded.
+    #[inline(always)]
+    unsafe fn load_bodies(
+        self,
+        bodies: &[SolverBody<Fx>],
+        indices: &[u32; LANES],
+        active: u8,
+        with_motion: bool,
+    ) -> [[Self::V; 3]; 4] {
+        let mut words = [[[0; LANES]; 3]; 4];
+        for (l, &index) in indices.iter().enumerate() {
+            if active & (1 << l) == 0 {
+                continue;
+            }
+            let body = &bodies[index as usize];
+            let [dp, dtheta] = if with_motion {
+                [body.dp, body.dtheta]
+            } else {
+                [Vec3::ZERO; 2]
+            };
+            for (vector, value) in words.iter_mut().zip([body.v, body.w, dp, dtheta]) {
+                vector[0][l] = value.x.to_bits();
+                vector[1][l] = value.y.to_bits();
+                vector[2][l] = value.z.to_bits();
+            }
+        }
+        let mut out = [[self.zero(); 3]; 4];
+        for (out, words) in out.iter_mut().zip(&words) {
+            for (out, words) in out.iter_mut().zip(words) {
+                *out = self.load_words(*words);
+            }
+        }
+        out
+    }
+
+    /// Lane by lane, from arrays.
+    #[inline(always)]
+    unsafe fn store_velocities(
+        self,
+        bodies: &mut [SolverBody<Fx>],
+        indices: &[u32; LANES],
+        active: u8,
+        [v, w]: [[Self::V; 3]; 2],
+    ) {
+        let [vx, vy, vz] = [
+            self.store_words(v[0]),
+            self.store_words(v[1]),
+            self.store_words(v[2]),
+        ];
+        let [wx, wy, wz] = [
+            self.store_words(w[0]),
+            self.store_words(w[1]),
+            self.store_words(w[2]),
+        ];
+        for (l, &index) in indices.iter().enumerate() {
+            if active & (1 << l) == 0 {
+                continue;
+            }
+            let body = &mut bodies[index as usize];
+            body.v = Vec3::new(
+                Fx::from_bits(vx[l]),
+                Fx::from_bits(vy[l]),
+                Fx::from_bits(vz[l]),
+            );
+            body.w = Vec3::new(
+                Fx::from_bits(wx[l]),
+                Fx::from_bits(wy[l]),
+                Fx::from_bits(wz[l]),
+            );
+        }
+    }
+}
