@@ -107,10 +107,46 @@ pub(super) fn solve<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
-    if let Some(wide) = Avx512::detect() {
-        return solve_on(wide, block, bodies, pass);
+    match backend()? {
+        Backend::Avx512(wide) => solve_on(wide, block, bodies, pass),
+        Backend::Avx2(wide) => solve_on(wide, block, bodies, pass),
     }
-    solve_on(Avx2::detect()?, block, bodies, pass)
+}
+
+/// A backend of the kernels.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Backend {
+    Avx512(Avx512),
+    Avx2(Avx2),
+}
+
+/// The backend of the kernels on this processor: AVX-512 (F and DQ), else AVX2; none
+/// without either (the blocks then go lane by lane). Tests may choose one the processor
+/// has, or none, for the thread ([`with_backend`]).
+#[inline]
+fn backend() -> Option<Backend> {
+    #[cfg(test)]
+    if let Some(chosen) = CHOSEN.get() {
+        return chosen;
+    }
+    Avx512::detect()
+        .map(Backend::Avx512)
+        .or_else(|| Avx2::detect().map(Backend::Avx2))
+}
+
+#[cfg(test)]
+std::thread_local! {
+    /// The backend a test chose for this thread, if it chose one.
+    static CHOSEN: core::cell::Cell<Option<Option<Backend>>> = const { core::cell::Cell::new(None) };
+}
+
+/// Runs `f` with the kernels of `backend` (none: the lanes) on this thread.
+#[cfg(test)]
+pub(crate) fn with_backend<T>(backend: Option<Backend>, f: impl FnOnce() -> T) -> T {
+    let before = CHOSEN.replace(Some(backend));
+    let result = f();
+    CHOSEN.set(before);
+    result
 }
 
 /// Solves an independent `block` with the backend `wide`: none (having written nothing)
@@ -155,10 +191,10 @@ pub(super) fn warm_start<R: Real>(
     let block = (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>()?;
     // SAFETY: `R` is `Fx` (the downcast succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
-    if let Some(wide) = Avx512::detect() {
-        return warm_start_on(wide, block, bodies);
+    match backend()? {
+        Backend::Avx512(wide) => warm_start_on(wide, block, bodies),
+        Backend::Avx2(wide) => warm_start_on(wide, block, bodies),
     }
-    warm_start_on(Avx2::detect()?, block, bodies)
 }
 
 /// Warm starts an independent `block` with the backend `wide`, under the conditions of
@@ -375,10 +411,11 @@ impl KernelFacts {
         let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
             return Self::NONE;
         };
-        if let Some(wide) = Avx512::detect() {
-            return wide.facts(block);
+        match backend() {
+            Some(Backend::Avx512(wide)) => wide.facts(block),
+            Some(Backend::Avx2(wide)) => wide.facts(block),
+            None => Self::NONE,
         }
-        Avx2::detect().map_or(Self::NONE, |wide| wide.facts(block))
     }
 }
 
