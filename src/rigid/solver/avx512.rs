@@ -82,12 +82,6 @@ pub(crate) fn sub(a: __m512i, b: __m512i) -> __m512i {
     _mm512_sub_epi64(a, b)
 }
 
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-pub(crate) fn sub3(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
-    [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
-}
-
 /// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]

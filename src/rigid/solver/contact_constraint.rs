@@ -136,6 +136,8 @@ mod avx512;
 #[cfg(target_arch = "x86_64")]
 mod kernel;
 mod prepare;
+#[cfg(target_arch = "x86_64")]
+mod prepare_kernel;
 #[cfg(test)]
 mod tests;
 

@@ -31,9 +31,48 @@
 pub(crate) mod avx2;
 pub(crate) mod avx512;
 
+use avx2::Avx2;
+use avx512::Avx512;
+
 use super::body::SolverBody;
 use super::lanes::{LANES, Lanes};
 use crate::math::Fx;
+
+/// A backend of the kernels.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Backend {
+    Avx512(Avx512),
+    Avx2(Avx2),
+}
+
+/// The backend of the kernels on this processor: AVX-512 (F and DQ), else AVX2; none
+/// without either (the blocks then go lane by lane). Tests may choose one the processor
+/// has, or none, for the thread ([`with_backend`]).
+#[inline]
+pub(crate) fn backend() -> Option<Backend> {
+    #[cfg(test)]
+    if let Some(chosen) = CHOSEN.get() {
+        return chosen;
+    }
+    Avx512::detect()
+        .map(Backend::Avx512)
+        .or_else(|| Avx2::detect().map(Backend::Avx2))
+}
+
+#[cfg(test)]
+std::thread_local! {
+    /// The backend a test chose for this thread, if it chose one.
+    static CHOSEN: core::cell::Cell<Option<Option<Backend>>> = const { core::cell::Cell::new(None) };
+}
+
+/// Runs `f` with the kernels of `backend` (none: the lanes) on this thread.
+#[cfg(test)]
+pub(crate) fn with_backend<T>(backend: Option<Backend>, f: impl FnOnce() -> T) -> T {
+    let before = CHOSEN.replace(Some(backend));
+    let result = f();
+    CHOSEN.set(before);
+    result
+}
 
 /// Eight `i64` lanes and the operations the kernels need, each modulo 2⁶⁴ lane by lane.
 /// A value of an implementing type proves that the processor runs its instructions.
@@ -83,6 +122,13 @@ pub(crate) trait Wide: Copy {
         active: u8,
         with_motion: bool,
     ) -> [[Self::V; 3]; 4];
+
+    /// Word `words` (an index into `bodies` taken as `i64` words) in each lane of `active`,
+    /// zero elsewhere.
+    ///
+    /// # Safety
+    /// In every lane of `active`, the word must lie in `bodies`.
+    unsafe fn gather(self, bodies: &[SolverBody<Fx>], words: Self::V, active: u8) -> Self::V;
 
     /// Writes v and ω of the bodies `indices` in the lanes of `active`.
     ///

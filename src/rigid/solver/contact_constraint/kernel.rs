@@ -81,7 +81,7 @@ use super::{ContactBlock, SolvePass};
 use crate::math::{Fx, Real};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
-use crate::rigid::solver::wide::Wide;
+use crate::rigid::solver::wide::{Backend, Wide, backend};
 use crate::rigid::solver::wide::{avx2::Avx2, avx512::Avx512};
 
 /// The kernel that took a block: with narrow products, or wide ones ([`Wide::times`]).
@@ -111,42 +111,6 @@ pub(super) fn solve<R: Real>(
         Backend::Avx512(wide) => solve_on(wide, block, bodies, pass),
         Backend::Avx2(wide) => solve_on(wide, block, bodies, pass),
     }
-}
-
-/// A backend of the kernels.
-#[derive(Clone, Copy, Debug)]
-pub(super) enum Backend {
-    Avx512(Avx512),
-    Avx2(Avx2),
-}
-
-/// The backend of the kernels on this processor: AVX-512 (F and DQ), else AVX2; none
-/// without either (the blocks then go lane by lane). Tests may choose one the processor
-/// has, or none, for the thread ([`with_backend`]).
-#[inline]
-fn backend() -> Option<Backend> {
-    #[cfg(test)]
-    if let Some(chosen) = CHOSEN.get() {
-        return chosen;
-    }
-    Avx512::detect()
-        .map(Backend::Avx512)
-        .or_else(|| Avx2::detect().map(Backend::Avx2))
-}
-
-#[cfg(test)]
-std::thread_local! {
-    /// The backend a test chose for this thread, if it chose one.
-    static CHOSEN: core::cell::Cell<Option<Option<Backend>>> = const { core::cell::Cell::new(None) };
-}
-
-/// Runs `f` with the kernels of `backend` (none: the lanes) on this thread.
-#[cfg(test)]
-pub(crate) fn with_backend<T>(backend: Option<Backend>, f: impl FnOnce() -> T) -> T {
-    let before = CHOSEN.replace(Some(backend));
-    let result = f();
-    CHOSEN.set(before);
-    result
 }
 
 /// Solves an independent `block` with the backend `wide`: none (having written nothing)

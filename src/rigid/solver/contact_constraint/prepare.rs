@@ -144,14 +144,14 @@ impl<R: Real> ContactBlock<R> {
     ///   side for both tangents and their effective masses (kg) as above, I_a⁻¹n, I_b⁻¹n and
     ///   the twist effective mass 1/k_twist (kg·m²), k_twist = (I_a⁻¹n)·n + (I_b⁻¹n)·n.
     ///
-    /// On I32F32 the AVX-512 kernel computes the products when the processor has it and
-    /// every value lies within its bound; otherwise, and on other formats, lane by lane.
-    /// Both give the same bits.
+    /// On I32F32 a kernel computes the products when the processor has AVX-512 or AVX2
+    /// ([`prepare_kernel`](super::prepare_kernel)) and every value lies within its bound;
+    /// otherwise, and on other formats, lane by lane. Both give the same bits.
     pub fn prepare_products(&mut self, arms: &ContactArms<R>, bodies: &[SolverBody<R>]) {
         self.tangents();
         self.twist_arms(arms);
         #[cfg(target_arch = "x86_64")]
-        let done = super::avx512::prepare(self, arms, bodies);
+        let done = super::prepare_kernel::prepare(self, arms, bodies);
         #[cfg(not(target_arch = "x86_64"))]
         let done = false;
         if !done {

@@ -19,9 +19,9 @@
 use core::arch::x86_64::{
     __m256i, _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8,
     _mm256_castsi256_pd, _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_loadu_si256,
-    _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32, _mm256_set_epi64x, _mm256_set1_epi64x,
-    _mm256_setzero_si256, _mm256_slli_epi64, _mm256_srai_epi32, _mm256_srli_epi64,
-    _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
+    _mm256_mask_i64gather_epi64, _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32,
+    _mm256_set_epi64x, _mm256_set1_epi64x, _mm256_setzero_si256, _mm256_slli_epi64,
+    _mm256_srai_epi32, _mm256_srli_epi64, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
 };
 
 use super::Wide;
@@ -56,6 +56,22 @@ impl Avx2 {
     #[inline]
     pub(crate) fn detect() -> Option<Self> {
         std::arch::is_x86_feature_detected!("avx2").then_some(Self(()))
+    }
+
+    /// A lane mask as vectors: all ones in the lanes of `mask`, zero elsewhere (lane l of
+    /// a half is on when bit l of its nibble is set).
+    #[inline(always)]
+    fn spread(self, mask: u8) -> [__m256i; 2] {
+        // SAFETY: see `mask_of`.
+        unsafe {
+            let bits = _mm256_set_epi64x(8, 4, 2, 1);
+            let low = _mm256_and_si256(_mm256_set1_epi64x(i64::from(mask & 0xf)), bits);
+            let high = _mm256_and_si256(_mm256_set1_epi64x(i64::from(mask >> 4)), bits);
+            [
+                _mm256_cmpeq_epi64(low, bits),
+                _mm256_cmpeq_epi64(high, bits),
+            ]
+        }
     }
 
     /// The lane mask of a comparison result (all ones or all zeros per lane).
@@ -189,13 +205,23 @@ impl Wide for Avx2 {
     fn select(self, mask: u8, on: Self::V, off: Self::V) -> Self::V {
         // SAFETY: see the implementation's comment.
         unsafe {
-            // Lane l of a half is on when bit l of its nibble is set.
-            let bits = _mm256_set_epi64x(8, 4, 2, 1);
-            let low = _mm256_and_si256(_mm256_set1_epi64x(i64::from(mask & 0xf)), bits);
-            let high = _mm256_and_si256(_mm256_set1_epi64x(i64::from(mask >> 4)), bits);
+            let [low, high] = self.spread(mask);
             [
-                _mm256_blendv_epi8(off[0], on[0], _mm256_cmpeq_epi64(low, bits)),
-                _mm256_blendv_epi8(off[1], on[1], _mm256_cmpeq_epi64(high, bits)),
+                _mm256_blendv_epi8(off[0], on[0], low),
+                _mm256_blendv_epi8(off[1], on[1], high),
+            ]
+        }
+    }
+
+    #[inline(always)]
+    unsafe fn gather(self, bodies: &[SolverBody<Fx>], words: Self::V, active: u8) -> Self::V {
+        let base = bodies.as_ptr().cast::<i64>();
+        let [low, high] = self.spread(active);
+        // SAFETY: the caller's promise; outside `active` nothing is read.
+        unsafe {
+            [
+                _mm256_mask_i64gather_epi64::<8>(self.zero()[0], base, words[0], low),
+                _mm256_mask_i64gather_epi64::<8>(self.zero()[1], base, words[1], high),
             ]
         }
     }

@@ -9,11 +9,12 @@
 
 use core::arch::x86_64::{
     __m512i, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpeq_epi64_mask, _mm512_cmpge_epu64_mask,
-    _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64,
-    _mm512_maskz_loadu_epi64, _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32,
-    _mm512_mullo_epi64, _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64,
-    _mm512_setzero_si512, _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
-    _mm512_unpackhi_epi64, _mm512_unpacklo_epi64,
+    _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
+    _mm512_mask_i64gather_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_loadu_epi64,
+    _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64,
+    _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
+    _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64, _mm512_unpackhi_epi64,
+    _mm512_unpacklo_epi64,
 };
 use core::mem::{offset_of, size_of};
 
@@ -159,6 +160,13 @@ impl Wide for Avx512 {
     #[inline(always)]
     fn select(self, mask: u8, on: __m512i, off: __m512i) -> __m512i {
         unsafe { _mm512_mask_blend_epi64(mask, off, on) }
+    }
+
+    #[inline(always)]
+    unsafe fn gather(self, bodies: &[SolverBody<Fx>], words: __m512i, active: u8) -> __m512i {
+        let base = bodies.as_ptr().cast::<i64>();
+        // SAFETY: the caller's promise; outside `active` nothing is read.
+        unsafe { _mm512_mask_i64gather_epi64::<8>(self.zero(), active, words, base) }
     }
 
     /// One masked 64-byte load per lane (v, ω, Δp_x, Δp_y), and with the motions a second

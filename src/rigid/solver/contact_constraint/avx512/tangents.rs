@@ -17,15 +17,14 @@
 
 use core::any::Any;
 use core::arch::x86_64::{
-    __mmask8, _mm512_cmplt_epi64_mask, _mm512_maskz_mov_epi64, _mm512_set1_epi64,
+    __m512i, __mmask8, _mm512_cmplt_epi64_mask, _mm512_maskz_mov_epi64, _mm512_set1_epi64,
 };
 
-use super::prepare::{cross, dot, store3};
-use super::{has_kernels, load, load3, mul3, out_of_bound3, store};
+use super::{add, has_kernels, load, load3, mul, mul3, out_of_bound3, store, store_lanes, sub};
 use crate::math::{Fx, Real};
 use crate::rigid::solver::avx512::sqrt::sqrt;
 use crate::rigid::solver::contact_constraint::ContactBlock;
-use crate::rigid::solver::lanes::{LANES, Lanes};
+use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
 
 /// The smallest |o| the kernel takes, as raw bits: 2¹⁹ (2⁻¹³), so that 1/|o| ≤ 2⁴⁵.
 const SHORTEST: i64 = 1 << 19;
@@ -77,4 +76,30 @@ unsafe fn unit_tangents(block: &mut ContactBlock<Fx>) -> bool {
     store3(&mut block.tangents[0], active, t0);
     store3(&mut block.tangents[1], active, cross(n, t0));
     true
+}
+
+/// a × b with each product rounded on its own, as [`Vec3::cross`].
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
+    [
+        sub(mul(a[1], b[2]), mul(a[2], b[1])),
+        sub(mul(a[2], b[0]), mul(a[0], b[2])),
+        sub(mul(a[0], b[1]), mul(a[1], b[0])),
+    ]
+}
+
+/// a·b with each product rounded on its own, as [`Vec3::dot`].
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn dot(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
+    add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2]))
+}
+
+#[inline]
+#[target_feature(enable = "avx512f,avx512dq")]
+fn store3(lanes: &mut Lanes3<Fx>, mask: __mmask8, value: [__m512i; 3]) {
+    store_lanes(&mut lanes.x, mask, value[0]);
+    store_lanes(&mut lanes.y, mask, value[1]);
+    store_lanes(&mut lanes.z, mask, value[2]);
 }

@@ -1,0 +1,371 @@
+//! The products of constraint preparation for a block of I32F32 constraints as a kernel:
+//! the eight lanes side by side, with the bits of
+//! [`ContactBlock::prepare_products_lanes`], written once against [`Wide`] and run with
+//! the backend [`backend`] picks (AVX-512 or AVX2).
+//!
+//! Preparation only reads the bodies, so any block may take it, independent or not.
+//!
+//! # Exactness
+//!
+//! The scalar form rounds every product on its own (the checked `*`: to nearest, ties
+//! toward +∞) and adds with saturation: r × n component by component, I⁻¹v as
+//! Σⱼ Mᵢⱼvⱼ, a·b as Σ aᵢbᵢ. Every value the kernel loads (anchors of the points and of the
+//! friction centre, normal, tangents, the bodies' inverse masses, inverse inertias,
+//! velocities) and every value that enters a product (r × n, r × t, I⁻¹(r × n),
+//! I⁻¹(r × t), I⁻¹n, v_b − v_a) is checked to lie in
+//! [−2⁴⁶, 2⁴⁶) as raw bits. Then each rounded product is below 2⁶⁰ in magnitude, a sum of
+//! three below 2⁶², k = 1/m_a + 1/m_b + two such sums below 2⁶³ (k_twist is two such
+//! sums), and the approach velocity,
+//! whose first two sums are checked against 2⁴⁶ before the third is subtracted, too. So the
+//! scalar form saturates nowhere, and the kernel's wrapping `i64` arithmetic, with the
+//! products of [`Wide::mul`], gives its exact results. When a check fails in a point in use, the
+//! kernel returns false and the caller recomputes every lane with the scalar form, which
+//! overwrites whatever the kernel wrote.
+
+use core::any::Any;
+use core::mem::{offset_of, size_of};
+
+use super::{ContactArms, ContactBlock};
+use crate::math::{Fx, Mat3, Real, Vec3};
+use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::lanes::{LANES, Lanes3};
+use crate::rigid::solver::wide::avx512::{BODY_WORDS, V, W};
+use crate::rigid::solver::wide::{Backend, Wide, avx2::Avx2, avx512::Avx512, backend};
+
+/// Word offsets of the inverse mass and of the inverse inertia's first column in a
+/// `SolverBody<Fx>`; element (i, j) of the inertia is word `INV_INERTIA + 3j + i`.
+const INV_MASS: i64 = (offset_of!(SolverBody<Fx>, inv_mass) / 8) as i64;
+const INV_INERTIA: i64 = (offset_of!(SolverBody<Fx>, inv_inertia) / 8) as i64;
+
+// The layout the gathers rely on: a `Mat3<Fx>` is its three columns in a row.
+const _: () = {
+    assert!(offset_of!(Mat3<Fx>, cols) == 0);
+    assert!(size_of::<Mat3<Fx>>() == 3 * size_of::<Vec3<Fx>>());
+    assert!(INV_INERTIA + 9 <= BODY_WORDS);
+};
+
+/// Computes the products of `block` with the kernel when `R` is I32F32 and the processor
+/// has a backend ([`backend`]); returns whether it did (if not, the caller must compute
+/// them all).
+pub(super) fn prepare<R: Real>(
+    block: &mut ContactBlock<R>,
+    arms: &ContactArms<R>,
+    bodies: &[SolverBody<R>],
+) -> bool {
+    let (Some(block), Some(arms)) = (
+        (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>(),
+        (arms as &dyn Any).downcast_ref::<ContactArms<Fx>>(),
+    ) else {
+        return false;
+    };
+    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
+    let bodies = unsafe { &*(core::ptr::from_ref(bodies) as *const [SolverBody<Fx>]) };
+    match backend() {
+        // SAFETY: a backend exists only where the processor has its instructions.
+        Some(Backend::Avx512(wide)) => unsafe { prepare_avx512(wide, block, arms, bodies) },
+        // SAFETY: as above.
+        Some(Backend::Avx2(wide)) => unsafe { prepare_avx2(wide, block, arms, bodies) },
+        None => false,
+    }
+}
+
+/// [`prepare_block`] with AVX-512F and DQ enabled.
+///
+/// # Safety
+/// The processor must have AVX-512F and AVX-512DQ.
+#[target_feature(enable = "avx512f,avx512dq")]
+unsafe fn prepare_avx512(
+    wide: Avx512,
+    block: &mut ContactBlock<Fx>,
+    arms: &ContactArms<Fx>,
+    bodies: &[SolverBody<Fx>],
+) -> bool {
+    prepare_block(wide, block, arms, bodies)
+}
+
+/// [`prepare_block`] with AVX2 enabled.
+///
+/// # Safety
+/// The processor must have AVX2.
+#[target_feature(enable = "avx2")]
+unsafe fn prepare_avx2(
+    wide: Avx2,
+    block: &mut ContactBlock<Fx>,
+    arms: &ContactArms<Fx>,
+    bodies: &[SolverBody<Fx>],
+) -> bool {
+    prepare_block(wide, block, arms, bodies)
+}
+
+/// The first word of each lane's body, A's and B's, in the lanes in use; `None` if an
+/// index is out of bounds.
+#[inline(always)]
+fn lane_words<W: Wide>(w: W, block: &ContactBlock<Fx>, body_count: usize) -> Option<(W::V, W::V)> {
+    let mut words_a = [0i64; LANES];
+    let mut words_b = [0i64; LANES];
+    for l in 0..block.len {
+        let (a, b) = (block.a[l] as usize, block.b[l] as usize);
+        if a >= body_count || b >= body_count {
+            return None;
+        }
+        words_a[l] = a as i64 * BODY_WORDS;
+        words_b[l] = b as i64 * BODY_WORDS;
+    }
+    Some((w.load_words(words_a), w.load_words(words_b)))
+}
+
+/// Word `offset` of each lane's body, whose first words are `words`.
+///
+/// # Safety
+/// `words` must be the first words of bodies of `bodies` in the lanes of `active`, and
+/// `offset` a word inside a body.
+#[inline(always)]
+unsafe fn field<W: Wide>(
+    w: W,
+    bodies: &[SolverBody<Fx>],
+    words: W::V,
+    offset: i64,
+    active: u8,
+) -> W::V {
+    // SAFETY: the caller's promise.
+    unsafe { w.gather(bodies, w.add(words, w.splat(offset)), active) }
+}
+
+/// Words `offset` to `offset + 2` of each lane's body: a vector.
+///
+/// # Safety
+/// As for [`field`], for all three words.
+#[inline(always)]
+unsafe fn vector<W: Wide>(
+    w: W,
+    bodies: &[SolverBody<Fx>],
+    words: W::V,
+    offset: i64,
+    active: u8,
+) -> [W::V; 3] {
+    // SAFETY: the caller's promise.
+    unsafe {
+        [
+            field(w, bodies, words, offset, active),
+            field(w, bodies, words, offset + 1, active),
+            field(w, bodies, words, offset + 2, active),
+        ]
+    }
+}
+
+/// The inverse inertia of each lane's body, by columns.
+///
+/// # Safety
+/// As for [`field`], with `words` the first words of the bodies.
+#[inline(always)]
+unsafe fn inertia<W: Wide>(
+    w: W,
+    bodies: &[SolverBody<Fx>],
+    words: W::V,
+    active: u8,
+) -> [[W::V; 3]; 3] {
+    // SAFETY: the caller's promise; the inertia lies inside the body (checked above).
+    unsafe {
+        [
+            vector(w, bodies, words, INV_INERTIA, active),
+            vector(w, bodies, words, INV_INERTIA + 3, active),
+            vector(w, bodies, words, INV_INERTIA + 6, active),
+        ]
+    }
+}
+
+/// The kernel. Returns false when a value leaves the checked bound in a point in use.
+#[inline(always)]
+fn prepare_block<W: Wide>(
+    w: W,
+    block: &mut ContactBlock<Fx>,
+    arms: &ContactArms<Fx>,
+    bodies: &[SolverBody<Fx>],
+) -> bool {
+    let Some((words_a, words_b)) = lane_words(w, block, bodies.len()) else {
+        return false;
+    };
+    let active = ((1u16 << block.len) - 1) as u8;
+    let zero = w.zero();
+    // SAFETY: `lane_words` checked every active lane's body index, and each offset is a
+    // word inside a body.
+    let (inv_mass_a, inv_mass_b, inertia_a, inertia_b, v_a, v_b, w_a, w_b) = unsafe {
+        (
+            field(w, bodies, words_a, INV_MASS, active),
+            field(w, bodies, words_b, INV_MASS, active),
+            inertia(w, bodies, words_a, active),
+            inertia(w, bodies, words_b, active),
+            vector(w, bodies, words_a, V, active),
+            vector(w, bodies, words_b, V, active),
+            vector(w, bodies, words_a, W, active),
+            vector(w, bodies, words_b, W, active),
+        )
+    };
+    let normal = w.load3(&block.normal);
+    let tangents = [w.load3(&block.tangents[0]), w.load3(&block.tangents[1])];
+    let mut bad = w.out_of_bound(inv_mass_a)
+        | w.out_of_bound(inv_mass_b)
+        | out_of_bound_matrix(w, inertia_a)
+        | out_of_bound_matrix(w, inertia_b)
+        | w.out_of_bound3(v_a)
+        | w.out_of_bound3(v_b)
+        | w.out_of_bound3(w_a)
+        | w.out_of_bound3(w_b)
+        | w.out_of_bound3(normal)
+        | w.out_of_bound3(tangents[0])
+        | w.out_of_bound3(tangents[1]);
+    let dv = w.sub3(v_b, v_a);
+    bad |= w.out_of_bound3(dv);
+    let m_sum = w.add(inv_mass_a, inv_mass_b);
+    if bad & active != 0 {
+        return false;
+    }
+
+    let mut counts = [0; LANES];
+    for (count, &points) in counts.iter_mut().zip(&block.count) {
+        *count = i64::from(points);
+    }
+    let counts = w.load_words(counts);
+    for (p, cp) in block.points.iter_mut().enumerate() {
+        let in_use = w.greater(counts, w.splat(p as i64)) & active;
+        if in_use == 0 {
+            continue;
+        }
+        let r_a = w.load3(&arms.r_a[p]);
+        let r_b = w.load3(&arms.r_b[p]);
+        let rn_a = cross(w, r_a, normal);
+        let rn_b = cross(w, r_b, normal);
+        let in_a = mat_vec(w, inertia_a, rn_a);
+        let in_b = mat_vec(w, inertia_b, rn_b);
+        let mut bad = w.out_of_bound3(r_a)
+            | w.out_of_bound3(r_b)
+            | w.out_of_bound3(rn_a)
+            | w.out_of_bound3(rn_b)
+            | w.out_of_bound3(in_a)
+            | w.out_of_bound3(in_b);
+        let k = w.add(w.add(m_sum, dot(w, in_a, rn_a)), dot(w, in_b, rn_b));
+        let approach = w.add(dot(w, dv, normal), dot(w, w_b, rn_b));
+        bad |= w.out_of_bound(approach);
+        let approach = w.sub(approach, dot(w, w_a, rn_a));
+        if bad & in_use != 0 {
+            return false;
+        }
+        store3(w, &mut cp.rn_a, in_use, rn_a);
+        store3(w, &mut cp.rn_b, in_use, rn_b);
+        store3(w, &mut cp.in_a, in_use, in_a);
+        store3(w, &mut cp.in_b, in_use, in_b);
+        w.store_lanes(&mut cp.normal_mass, in_use, k);
+        w.store_lanes(&mut cp.relative_velocity, in_use, approach);
+    }
+
+    // Friction, at the centre of each lane's points.
+    let r_a = w.load3(&arms.centre_a);
+    let r_b = w.load3(&arms.centre_b);
+    let mut bad = w.out_of_bound3(r_a) | w.out_of_bound3(r_b);
+    let mut rt_a = [[zero; 3]; 2];
+    let mut rt_b = [[zero; 3]; 2];
+    let mut it_a = [[zero; 3]; 2];
+    let mut it_b = [[zero; 3]; 2];
+    let mut kt = [zero; 2];
+    for j in 0..2 {
+        rt_a[j] = cross(w, r_a, tangents[j]);
+        rt_b[j] = cross(w, r_b, tangents[j]);
+        it_a[j] = mat_vec(w, inertia_a, rt_a[j]);
+        it_b[j] = mat_vec(w, inertia_b, rt_b[j]);
+        bad |= w.out_of_bound3(rt_a[j])
+            | w.out_of_bound3(rt_b[j])
+            | w.out_of_bound3(it_a[j])
+            | w.out_of_bound3(it_b[j]);
+        kt[j] = w.add(
+            w.add(m_sum, dot(w, it_a[j], rt_a[j])),
+            dot(w, it_b[j], rt_b[j]),
+        );
+    }
+    let twist_a = mat_vec(w, inertia_a, normal);
+    let twist_b = mat_vec(w, inertia_b, normal);
+    bad |= w.out_of_bound3(twist_a) | w.out_of_bound3(twist_b);
+    let k_twist = w.add(dot(w, twist_a, normal), dot(w, twist_b, normal));
+    if bad & active != 0 {
+        return false;
+    }
+    let f = &mut block.friction_rows;
+    for j in 0..2 {
+        store3(w, &mut f.rt_a[j], active, rt_a[j]);
+        store3(w, &mut f.rt_b[j], active, rt_b[j]);
+        store3(w, &mut f.it_a[j], active, it_a[j]);
+        store3(w, &mut f.it_b[j], active, it_b[j]);
+        w.store_lanes(&mut f.tangent_mass[j], active, kt[j]);
+    }
+    store3(w, &mut f.twist_a, active, twist_a);
+    store3(w, &mut f.twist_b, active, twist_b);
+    w.store_lanes(&mut f.twist_mass, active, k_twist);
+    store3(w, &mut block.normal_a, active, mul3(w, normal, inv_mass_a));
+    store3(w, &mut block.normal_b, active, mul3(w, normal, inv_mass_b));
+    for (j, tangent) in tangents.into_iter().enumerate() {
+        store3(
+            w,
+            &mut block.tangents_a[j],
+            active,
+            mul3(w, tangent, inv_mass_a),
+        );
+        store3(
+            w,
+            &mut block.tangents_b[j],
+            active,
+            mul3(w, tangent, inv_mass_b),
+        );
+    }
+    true
+}
+
+/// a × b with each product rounded on its own, as [`Vec3::cross`].
+#[inline(always)]
+fn cross<W: Wide>(w: W, a: [W::V; 3], b: [W::V; 3]) -> [W::V; 3] {
+    [
+        w.sub(w.mul(a[1], b[2]), w.mul(a[2], b[1])),
+        w.sub(w.mul(a[2], b[0]), w.mul(a[0], b[2])),
+        w.sub(w.mul(a[0], b[1]), w.mul(a[1], b[0])),
+    ]
+}
+
+/// a·b with each product rounded on its own, as [`Vec3::dot`].
+#[inline(always)]
+fn dot<W: Wide>(w: W, a: [W::V; 3], b: [W::V; 3]) -> W::V {
+    w.add(
+        w.add(w.mul(a[0], b[0]), w.mul(a[1], b[1])),
+        w.mul(a[2], b[2]),
+    )
+}
+
+/// Each component times the same factor, as `Vec3 * R`.
+#[inline(always)]
+fn mul3<W: Wide>(w: W, a: [W::V; 3], b: W::V) -> [W::V; 3] {
+    [w.mul(a[0], b), w.mul(a[1], b), w.mul(a[2], b)]
+}
+
+/// M v for M given by columns, as `Mat3 * Vec3`: row i is Σⱼ Mᵢⱼvⱼ.
+#[inline(always)]
+fn mat_vec<W: Wide>(w: W, columns: [[W::V; 3]; 3], v: [W::V; 3]) -> [W::V; 3] {
+    let mut rows = [w.zero(); 3];
+    for (i, row) in rows.iter_mut().enumerate() {
+        *row = w.add(
+            w.add(w.mul(columns[0][i], v[0]), w.mul(columns[1][i], v[1])),
+            w.mul(columns[2][i], v[2]),
+        );
+    }
+    rows
+}
+
+/// The lanes where an element of the matrix lies outside the checked bound.
+#[inline(always)]
+fn out_of_bound_matrix<W: Wide>(w: W, columns: [[W::V; 3]; 3]) -> u8 {
+    w.out_of_bound3(columns[0]) | w.out_of_bound3(columns[1]) | w.out_of_bound3(columns[2])
+}
+
+/// Writes the lanes of `mask` of a vector.
+#[inline(always)]
+fn store3<W: Wide>(w: W, lanes: &mut Lanes3<Fx>, mask: u8, value: [W::V; 3]) {
+    w.store_lanes(&mut lanes.x, mask, value[0]);
+    w.store_lanes(&mut lanes.y, mask, value[1]);
+    w.store_lanes(&mut lanes.z, mask, value[2]);
+}
