@@ -9,6 +9,9 @@
 #   host-debug     x86_64, debug profile (overflow checks, debug assertions, opt-level 1)
 #   host-release   x86_64, release profile
 #   host-native    x86_64, release, -C target-cpu=native (FMA/AVX as the CPU allows)
+#   host-avx2      host-release's binary with FIXSTEP_SIMD=avx2 (its AVX2 kernels, none of
+#                  its AVX-512 ones: what an x86-64 processor without AVX-512 runs)
+#   host-scalar    host-release's binary with FIXSTEP_SIMD=scalar (no kernels at all)
 #   i686           32-bit x86, run natively
 #   aarch64        64-bit ARM under qemu-user
 #   s390x          64-bit big-endian IBM Z under qemu-user
@@ -24,7 +27,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-ALL=host-debug,host-release,host-native,i686,aarch64,s390x,wasm32-wasip1,miri-s390x
+ALL=host-debug,host-release,host-native,host-avx2,host-scalar,i686,aarch64,s390x,wasm32-wasip1,miri-s390x
 SELECTED=$ALL INSTALL=1 STRICT=0
 while [[ $# -gt 0 ]]; do
   case $1 in
@@ -88,6 +91,8 @@ verify() {
 
 t_host_debug()   { build host-debug && verify host-debug target/debug/fixstep; }
 t_host_release() { build host-release --release && verify host-release target/release/fixstep; }
+t_host_avx2()    { build host-release --release && FIXSTEP_SIMD=avx2 verify host-avx2 target/release/fixstep; }
+t_host_scalar()  { build host-release --release && FIXSTEP_SIMD=scalar verify host-scalar target/release/fixstep; }
 t_host_native() {
   CARGO_TARGET_DIR=target/matrix-native RUSTFLAGS="${RUSTFLAGS:-} -C target-cpu=native" \
     build host-native --release && verify host-native target/matrix-native/release/fixstep

@@ -71,6 +71,10 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
             return error.exit_code();
         }
     };
+    if let Err(message) = crate::math::cpu::cap_from_env() {
+        output::eprint_line(&format!("error: {message}"));
+        return Status::Invalid.code();
+    }
     let result = match cli.command {
         None => run::run(&RunArgs::default()),
         Some(Command::Scenes) => scenes::scenes(),

@@ -120,7 +120,7 @@ mod tests {
     /// holds its element, the others zero.
     #[test]
     fn the_loads_match_indexing() {
-        if !std::arch::is_x86_feature_detected!("avx512f") {
+        if !crate::math::cpu::avx512f() {
             return;
         }
         let mut rng = Pcg32::new(11, 7);

@@ -1,6 +1,7 @@
 //! Fixed-point math: the scalar, its integer-only functions, vectors, quaternions, matrices,
 //! the deterministic RNG and the canonical state hasher.
 
+pub mod cpu;
 pub mod exp;
 pub mod fixed_scalar;
 pub mod float_scalar;

@@ -1,6 +1,6 @@
 //! The `fixstep` command line: its contract of commands, outputs and exit codes.
 
-use crate::replay_support::{TempPath, fixstep, sample_bytes};
+use crate::replay_support::{TempPath, fixstep, fixstep_with_env, sample_bytes};
 use fixstep::scene::BUILTIN_SCENES;
 use fixstep::world::{Metrics, Stage};
 
@@ -266,4 +266,55 @@ fn help_and_version_exit_0() {
         let run = fixstep(args);
         assert_eq!(run.code, 0, "{args:?}: {run:?}");
     }
+}
+
+/// The checksum line of a run.
+fn checksum_line(stdout: &str) -> &str {
+    stdout.lines().last().unwrap_or_default()
+}
+
+#[test]
+fn every_simd_cap_gives_the_same_checksums() {
+    // Scenes whose stages have kernels: rigid contacts and joints, the fluid, the cloth and
+    // the particles. Each cap takes other code on a processor that has the kernels, with
+    // the same bits.
+    for (scene, ticks) in [
+        ("pyramid", "30"),
+        ("ragdolls", "30"),
+        ("dam_break", "3"),
+        ("cloth", "30"),
+        ("fountain", "60"),
+    ] {
+        let args = ["run", scene, "--ticks", ticks];
+        let uncapped = fixstep(&args);
+        assert_eq!(uncapped.code, 0, "{uncapped:?}");
+        assert!(
+            is_checksum_line(checksum_line(&uncapped.stdout)),
+            "{uncapped:?}"
+        );
+        for cap in ["avx512", "avx2", "scalar"] {
+            let capped = fixstep_with_env(&args, &[("FIXSTEP_SIMD", cap)]);
+            assert_eq!(capped.code, 0, "{scene}, {cap}: {capped:?}");
+            assert_eq!(
+                checksum_line(&capped.stdout),
+                checksum_line(&uncapped.stdout),
+                "{scene}, FIXSTEP_SIMD={cap}"
+            );
+        }
+    }
+}
+
+#[test]
+fn an_unknown_simd_cap_is_refused() {
+    let run = fixstep_with_env(
+        &["run", "stack", "--ticks", "1"],
+        &[("FIXSTEP_SIMD", "sse9")],
+    );
+    assert_eq!(run.code, 2, "{run:?}");
+    assert!(run.stdout.is_empty(), "{run:?}");
+    assert!(
+        run.stderr.contains("FIXSTEP_SIMD") && run.stderr.contains("`sse9`"),
+        "{}",
+        run.stderr
+    );
 }

@@ -196,9 +196,7 @@ fn admit<'a, R: Real>(
     scales: [R; 2],
     skip_self: bool,
 ) -> Option<Admitted<'a>> {
-    if !std::arch::is_x86_feature_detected!("avx512f")
-        || !std::arch::is_x86_feature_detected!("avx512cd")
-    {
+    if !crate::math::cpu::avx512f() || !crate::math::cpu::avx512cd() {
         return None;
     }
     let fx = |value: &R| (value as &dyn Any).downcast_ref::<Fx>().copied();

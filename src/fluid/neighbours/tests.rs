@@ -116,8 +116,7 @@ fn kernel_takes(_: &[Vec3<Fx>], _: &[Vec3<Fx>], _: &CellGrid<Fx>, _: &Kernel<Fx>
 
 fn kernels_present() -> bool {
     #[cfg(target_arch = "x86_64")]
-    return std::arch::is_x86_feature_detected!("avx512f")
-        && std::arch::is_x86_feature_detected!("avx512cd");
+    return crate::math::cpu::avx512f() && crate::math::cpu::avx512cd();
     #[cfg(not(target_arch = "x86_64"))]
     false
 }

@@ -57,7 +57,7 @@ pub(super) fn density_rates<R: Real>(
     velocities: &[Vec3<R>],
     out: &mut Vec<R>,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !crate::math::cpu::avx512f() {
         return false;
     }
     let (Some(lists), Some(out)) = (
@@ -90,7 +90,7 @@ pub(super) fn pressure_pushes<R: Real>(
     stiffness: &[R],
     out: &mut Vec<Vec3<R>>,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !crate::math::cpu::avx512f() {
         return false;
     }
     let (Some(lists), Some(out)) = (
@@ -123,7 +123,7 @@ pub(super) fn smoothing_sums<R: Real>(
     inv_density: &[R],
     out: &mut Vec<Vec3<R>>,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !crate::math::cpu::avx512f() {
         return false;
     }
     let (Some(lists), Some(out)) = (
@@ -165,7 +165,7 @@ pub(super) fn gradient_sums<R: Real>(
     sums: &mut Vec<Vec3<R>>,
     squares: &mut Vec<R>,
 ) -> (bool, Option<u32>) {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !crate::math::cpu::avx512f() {
         return (false, None);
     }
     let (Some(lists), Some(sums), Some(squares)) = (

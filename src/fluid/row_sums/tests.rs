@@ -153,7 +153,7 @@ fn kernel_takes(_: &NeighbourLists<Fx>, _: &[Vec3<Fx>], _: &[Fx]) -> bool {
 /// Whether this processor runs the kernels.
 fn kernels_present() -> bool {
     #[cfg(target_arch = "x86_64")]
-    return std::arch::is_x86_feature_detected!("avx512f");
+    return crate::math::cpu::avx512f();
     #[cfg(not(target_arch = "x86_64"))]
     false
 }

@@ -149,8 +149,7 @@ mod tests {
     use core::arch::x86_64::{__m512i, _mm512_loadu_si512, _mm512_storeu_si512};
 
     fn present() -> bool {
-        std::arch::is_x86_feature_detected!("avx512f")
-            && std::arch::is_x86_feature_detected!("avx512cd")
+        crate::math::cpu::avx512f() && crate::math::cpu::avx512cd()
     }
 
     /// The first values of `inputs` that the kernel, fed four blocks of eight at a time,

@@ -140,12 +140,12 @@ impl Kernel {
 
     /// The AVX2 kernel (four lanes), if the processor has AVX2.
     pub(super) fn avx2() -> Option<Self> {
-        std::arch::is_x86_feature_detected!("avx2").then_some(Self(Isa::Avx2))
+        crate::math::cpu::avx2().then_some(Self(Isa::Avx2))
     }
 
     /// The AVX-512 kernel (eight lanes), if the processor has AVX-512F.
     pub(super) fn avx512() -> Option<Self> {
-        std::arch::is_x86_feature_detected!("avx512f").then_some(Self(Isa::Avx512))
+        crate::math::cpu::avx512f().then_some(Self(Isa::Avx512))
     }
 
     /// Steps the block in place when its length is a multiple of the lane count and its

@@ -36,8 +36,7 @@ use crate::math::Fx;
 /// Whether this processor runs the kernels: AVX-512F and AVX-512DQ (every processor with
 /// AVX-512 for servers and desktops has both).
 pub(crate) fn has_kernels() -> bool {
-    std::arch::is_x86_feature_detected!("avx512f")
-        && std::arch::is_x86_feature_detected!("avx512dq")
+    crate::math::cpu::avx512f() && crate::math::cpu::avx512dq()
 }
 
 /// The raw bits of a lane array.

@@ -40,7 +40,7 @@ pub(super) fn predict<R: Real>(
     vertices: &mut Vertices<'_, R>,
     motion: &Motion<R>,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f")
+    if !crate::math::cpu::avx512f()
         || TypeId::of::<R>() != TypeId::of::<Fx>()
         || motion.drag != R::ZERO
     {
@@ -78,7 +78,7 @@ pub(super) fn update_velocities<R: Real>(
     v: &mut [Vec3<R>],
     inv_h: R,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") || TypeId::of::<R>() != TypeId::of::<Fx>() {
+    if !crate::math::cpu::avx512f() || TypeId::of::<R>() != TypeId::of::<Fx>() {
         return false;
     }
     // SAFETY: `R` is `Fx` (checked just above), so every type below is unchanged.

@@ -40,8 +40,14 @@ impl Run {
 
 /// Runs the `fixstep` binary with `args`.
 pub fn fixstep<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Run {
+    fixstep_with_env(args, &[])
+}
+
+/// [`fixstep`] with environment variables set for the run.
+pub fn fixstep_with_env<S: AsRef<std::ffi::OsStr>>(args: &[S], vars: &[(&str, &str)]) -> Run {
     let output = Process::new(env!("CARGO_BIN_EXE_fixstep"))
         .args(args)
+        .envs(vars.iter().copied())
         .output()
         .expect("the fixstep binary runs");
     Run {

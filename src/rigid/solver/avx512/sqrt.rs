@@ -59,7 +59,7 @@ pub(crate) fn sqrt<const N: usize>(values: [__m512i; N]) -> [__m512i; N] {
     if largest == 0 {
         return [zero; N];
     }
-    if largest <= ONE && std::arch::is_x86_feature_detected!("avx512cd") {
+    if largest <= ONE && crate::math::cpu::avx512cd() {
         // SAFETY: AVX-512F was detected by the kernels' callers, CD just above.
         return unsafe { up_to_one(values) };
     }
@@ -232,7 +232,7 @@ mod tests {
 
     #[test]
     fn values_up_to_one_take_newton_and_match_the_scalar_form() {
-        if !has_kernels() || !std::arch::is_x86_feature_detected!("avx512cd") {
+        if !has_kernels() || !crate::math::cpu::avx512cd() {
             return;
         }
         let values = inputs_up_to_one();

@@ -210,12 +210,9 @@ fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
     bits
 }
 
-/// The kernel that took a block (no kernel exists off x86_64).
+/// No kernel exists off x86_64.
 #[cfg(not(target_arch = "x86_64"))]
-enum Kernel {
-    Narrow,
-    Wide,
-}
+enum Kernel {}
 
 /// No backend exists off x86_64.
 #[cfg(not(target_arch = "x86_64"))]
@@ -236,9 +233,9 @@ fn backends() -> Vec<Backend> {
     Vec::new()
 }
 
+#[cfg(target_arch = "x86_64")]
 impl Backend {
     /// The facts of `block` as this backend finds them.
-    #[cfg(target_arch = "x86_64")]
     fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts {
         match self {
             Self::Avx512(wide) => wide.facts(block),
@@ -254,7 +251,6 @@ impl Backend {
         bodies: &mut [SolverBody<Fx>],
         pass: &SolvePass<Fx>,
     ) -> Option<Kernel> {
-        #[cfg(target_arch = "x86_64")]
         let taken = if block.independent {
             match self {
                 Self::Avx512(wide) => solve_on(wide, block, bodies, pass),
@@ -263,8 +259,6 @@ impl Backend {
         } else {
             None
         };
-        #[cfg(not(target_arch = "x86_64"))]
-        let taken = match self {};
         if taken.is_none() {
             block.solve_lanes(bodies, pass);
         }
@@ -273,18 +267,31 @@ impl Backend {
 
     /// The warm start of `block` with this backend's kernels, likewise.
     fn warm_start(self, block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) {
-        #[cfg(target_arch = "x86_64")]
         let taken = block.independent
             && match self {
                 Self::Avx512(wide) => warm_start_on(wide, block, bodies),
                 Self::Avx2(wide) => warm_start_on(wide, block, bodies),
             }
             .is_some();
-        #[cfg(not(target_arch = "x86_64"))]
-        let taken = match self {};
         if !taken {
             block.warm_start_lanes(bodies);
         }
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+impl Backend {
+    fn solve(
+        self,
+        _: &mut ContactBlock<Fx>,
+        _: &mut [SolverBody<Fx>],
+        _: &SolvePass<Fx>,
+    ) -> Option<Kernel> {
+        match self {}
+    }
+
+    fn warm_start(self, _: &mut ContactBlock<Fx>, _: &mut [SolverBody<Fx>]) {
+        match self {}
     }
 }
 
@@ -323,6 +330,19 @@ struct Runs {
     narrow: usize,
     wide: usize,
     shared: usize,
+}
+
+impl Runs {
+    /// One more pass taken by `kernel`.
+    fn count(&mut self, kernel: Kernel) {
+        #[cfg(target_arch = "x86_64")]
+        match kernel {
+            Kernel::Narrow => self.narrow += 1,
+            Kernel::Wide => self.wide += 1,
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        match kernel {}
+    }
 }
 
 /// The magnitudes of a comparison: the largest velocity (m/s, and a hundredth of it for
@@ -383,10 +403,8 @@ fn compare(seed: u64, trials: usize, scales: &Scales) -> Runs {
             if independent {
                 for use_bias in [true, false] {
                     let (mut bodies, mut block) = (bodies.clone(), block.clone());
-                    match backend.solve(&mut block, &mut bodies, &pass(use_bias)) {
-                        Some(Kernel::Narrow) => runs.narrow += 1,
-                        Some(Kernel::Wide) => runs.wide += 1,
-                        None => {}
+                    if let Some(kernel) = backend.solve(&mut block, &mut bodies, &pass(use_bias)) {
+                        runs.count(kernel);
                     }
                 }
             }

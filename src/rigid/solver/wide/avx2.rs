@@ -55,7 +55,7 @@ impl Avx2 {
     /// The backend, if this processor runs it.
     #[inline]
     pub(crate) fn detect() -> Option<Self> {
-        std::arch::is_x86_feature_detected!("avx2").then_some(Self(()))
+        crate::math::cpu::avx2().then_some(Self(()))
     }
 
     /// A lane mask as vectors: all ones in the lanes of `mask`, zero elsewhere (lane l of

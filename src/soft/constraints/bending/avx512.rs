@@ -56,7 +56,7 @@ pub(super) fn solve<R: Real>(
     relax: &[R],
     independent: &[bool],
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !crate::math::cpu::avx512f() {
         return false;
     }
     let Some(rows) = (rows as &mut dyn Any).downcast_mut::<Hinges<Fx>>() else {

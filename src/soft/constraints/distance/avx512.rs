@@ -76,7 +76,7 @@ pub(super) fn solve<R: Real>(
     positions: &mut [Vec3<R>],
     f: &DistanceFactors<R>,
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !crate::math::cpu::avx512f() {
         return false;
     }
     let (Some(rows), Some(f)) = (

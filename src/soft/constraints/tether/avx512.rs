@@ -59,7 +59,7 @@ pub(super) fn solve<R: Real>(
     positions: &mut [Vec3<R>],
     independent: &[bool],
 ) -> bool {
-    if !std::arch::is_x86_feature_detected!("avx512f") {
+    if !crate::math::cpu::avx512f() {
         return false;
     }
     let Some(rows) = (rows as &dyn Any).downcast_ref::<Tethers<Fx>>() else {
