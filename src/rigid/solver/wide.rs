@@ -1,7 +1,7 @@
 //! Exact I32F32 arithmetic on eight `i64` lanes, behind one interface with two backends
 //! for x86_64: AVX-512 ([`avx512::Avx512`], AVX-512F and DQ) and AVX2 ([`avx2::Avx2`]).
-//! The contact solver's solve and warm-start kernels are written once against [`Wide`]
-//! and give the same bits with either backend, and the same bits as the checked scalar
+//! The contact solver's preparation, warm-start and solve kernels are written once against
+//! [`Wide`] and give the same bits with either backend, and the same bits as the checked scalar
 //! operators wherever their operands stay within the bounds each kernel checks.
 //!
 //! A lane mask is a `u8`, bit l for lane l, in both backends.

@@ -202,135 +202,71 @@ pub(super) trait Kernels: Wide {
     fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts;
 }
 
-impl Kernels for Avx512 {
-    #[inline]
-    fn solve_block<const RELAX: bool, const NARROW: bool>(
-        self,
-        block: &mut ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-        pass: &SolvePass<Fx>,
-    ) -> bool {
-        // SAFETY: a value of `Avx512` exists only where the processor has AVX-512F and DQ.
-        unsafe { avx512_entries::solve_block::<RELAX, NARROW>(self, block, bodies, pass) }
-    }
+/// [`Kernels`] for a backend whose instructions are `$features`: each kernel an entry point
+/// with them enabled, into which the generic form is inlined.
+macro_rules! kernels_for {
+    ($backend:ident, $features:literal) => {
+        impl Kernels for $backend {
+            #[inline]
+            fn solve_block<const RELAX: bool, const NARROW: bool>(
+                self,
+                block: &mut ContactBlock<Fx>,
+                bodies: &mut [SolverBody<Fx>],
+                pass: &SolvePass<Fx>,
+            ) -> bool {
+                /// # Safety
+                /// The processor must have the backend's instructions.
+                #[target_feature(enable = $features)]
+                unsafe fn entry<const RELAX: bool, const NARROW: bool>(
+                    wide: $backend,
+                    block: &mut ContactBlock<Fx>,
+                    bodies: &mut [SolverBody<Fx>],
+                    pass: &SolvePass<Fx>,
+                ) -> bool {
+                    solve_block::<$backend, RELAX, NARROW>(wide, block, bodies, pass)
+                }
+                // SAFETY: a value of the backend exists only where the processor has its
+                // instructions.
+                unsafe { entry::<RELAX, NARROW>(self, block, bodies, pass) }
+            }
 
-    #[inline]
-    fn warm_start_block<const NARROW: bool>(
-        self,
-        block: &ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-    ) -> bool {
-        // SAFETY: as above.
-        unsafe { avx512_entries::warm_start_block::<NARROW>(self, block, bodies) }
-    }
+            #[inline]
+            fn warm_start_block<const NARROW: bool>(
+                self,
+                block: &ContactBlock<Fx>,
+                bodies: &mut [SolverBody<Fx>],
+            ) -> bool {
+                /// # Safety
+                /// The processor must have the backend's instructions.
+                #[target_feature(enable = $features)]
+                unsafe fn entry<const NARROW: bool>(
+                    wide: $backend,
+                    block: &ContactBlock<Fx>,
+                    bodies: &mut [SolverBody<Fx>],
+                ) -> bool {
+                    warm_start_block::<$backend, NARROW>(wide, block, bodies)
+                }
+                // SAFETY: as in `solve_block`.
+                unsafe { entry::<NARROW>(self, block, bodies) }
+            }
 
-    #[inline]
-    fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts {
-        // SAFETY: as above.
-        unsafe { avx512_entries::facts(self, block) }
-    }
+            #[inline]
+            fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts {
+                /// # Safety
+                /// The processor must have the backend's instructions.
+                #[target_feature(enable = $features)]
+                unsafe fn entry(wide: $backend, block: &ContactBlock<Fx>) -> KernelFacts {
+                    facts(wide, block)
+                }
+                // SAFETY: as in `solve_block`.
+                unsafe { entry(self, block) }
+            }
+        }
+    };
 }
 
-/// The kernels compiled with AVX-512F and DQ enabled.
-mod avx512_entries {
-    use super::{ContactBlock, Fx, KernelFacts, SolvePass, SolverBody};
-    use crate::rigid::solver::wide::avx512::Avx512;
-
-    /// # Safety
-    /// The processor must have AVX-512F and AVX-512DQ.
-    #[target_feature(enable = "avx512f,avx512dq")]
-    pub(super) unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
-        wide: Avx512,
-        block: &mut ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-        pass: &SolvePass<Fx>,
-    ) -> bool {
-        super::solve_block::<Avx512, RELAX, NARROW>(wide, block, bodies, pass)
-    }
-
-    /// # Safety
-    /// As for [`solve_block`].
-    #[target_feature(enable = "avx512f,avx512dq")]
-    pub(super) unsafe fn warm_start_block<const NARROW: bool>(
-        wide: Avx512,
-        block: &ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-    ) -> bool {
-        super::warm_start_block::<Avx512, NARROW>(wide, block, bodies)
-    }
-
-    /// # Safety
-    /// As for [`solve_block`].
-    #[target_feature(enable = "avx512f,avx512dq")]
-    pub(super) unsafe fn facts(wide: Avx512, block: &ContactBlock<Fx>) -> KernelFacts {
-        super::facts(wide, block)
-    }
-}
-
-impl Kernels for Avx2 {
-    #[inline]
-    fn solve_block<const RELAX: bool, const NARROW: bool>(
-        self,
-        block: &mut ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-        pass: &SolvePass<Fx>,
-    ) -> bool {
-        // SAFETY: a value of `Avx2` exists only where the processor has AVX2.
-        unsafe { avx2_entries::solve_block::<RELAX, NARROW>(self, block, bodies, pass) }
-    }
-
-    #[inline]
-    fn warm_start_block<const NARROW: bool>(
-        self,
-        block: &ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-    ) -> bool {
-        // SAFETY: as above.
-        unsafe { avx2_entries::warm_start_block::<NARROW>(self, block, bodies) }
-    }
-
-    #[inline]
-    fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts {
-        // SAFETY: as above.
-        unsafe { avx2_entries::facts(self, block) }
-    }
-}
-
-/// The kernels compiled with AVX2 enabled.
-mod avx2_entries {
-    use super::{ContactBlock, Fx, KernelFacts, SolvePass, SolverBody};
-    use crate::rigid::solver::wide::avx2::Avx2;
-
-    /// # Safety
-    /// The processor must have AVX2.
-    #[target_feature(enable = "avx2")]
-    pub(super) unsafe fn solve_block<const RELAX: bool, const NARROW: bool>(
-        wide: Avx2,
-        block: &mut ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-        pass: &SolvePass<Fx>,
-    ) -> bool {
-        super::solve_block::<Avx2, RELAX, NARROW>(wide, block, bodies, pass)
-    }
-
-    /// # Safety
-    /// As for [`solve_block`].
-    #[target_feature(enable = "avx2")]
-    pub(super) unsafe fn warm_start_block<const NARROW: bool>(
-        wide: Avx2,
-        block: &ContactBlock<Fx>,
-        bodies: &mut [SolverBody<Fx>],
-    ) -> bool {
-        super::warm_start_block::<Avx2, NARROW>(wide, block, bodies)
-    }
-
-    /// # Safety
-    /// As for [`solve_block`].
-    #[target_feature(enable = "avx2")]
-    pub(super) unsafe fn facts(wide: Avx2, block: &ContactBlock<Fx>) -> KernelFacts {
-        super::facts(wide, block)
-    }
-}
+kernels_for!(Avx512, "avx512f,avx512dq");
+kernels_for!(Avx2, "avx2");
 
 /// What the kernels need to know of a block's coefficients, which do not change during a
 /// step: found once per step ([`KernelFacts::of`]).
