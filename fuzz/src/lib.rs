@@ -8,6 +8,8 @@
 //! true (the seeds must all be accepted, or they would seed nothing).
 
 use fixstep::codec;
+use fixstep::fluid::FluidSystem;
+use fixstep::fluid::grid::CellGrid;
 use fixstep::math::{Fx, Real};
 use fixstep::replay::{InputFeed, Replay, scene_section, verify};
 use fixstep::scene::parse_scene;
@@ -24,17 +26,58 @@ pub const MAX_TICKS: u64 = 64;
 /// tick still times out.
 pub const MAX_WORK: usize = 100_000;
 
+/// The most work one tick may take, in the elements [`worst_tick`] counts: about a second
+/// in release. A world whose worst tick is larger is not run (its scene is refused here):
+/// the work bound below stops a run only between ticks, and a scene such as a dam break of
+/// 256 world substeps of 10 fluid substeps, each iterating to its limit, takes ten
+/// seconds a tick.
+pub const MAX_TICK_WORK: usize = 2_000_000_000;
+
+/// The most work the next tick of `world` may take: [`load`] with every fluid substep
+/// iterating to its `max_iterations`.
+fn worst_tick(world: &World<Fx>) -> usize {
+    let fluid = world.fluid().map_or(0, |f| {
+        let s = f.settings();
+        let passes = (s.max_iterations as usize).saturating_add(1);
+        f.len()
+            .saturating_mul(32)
+            .saturating_mul(passes)
+            .saturating_add(grid_cells(f))
+            .saturating_mul(s.substeps.max(1) as usize)
+    });
+    let substeps = world.settings().substeps.max(1) as usize;
+    load(world).saturating_add(fluid.saturating_mul(substeps))
+}
+
+/// The cells of the fluid's neighbour grid over its tank, which a rebuild of the grid
+/// visits each fluid substep.
+fn grid_cells(fluid: &FluidSystem<Fx>) -> usize {
+    let s = fluid.settings();
+    let (lower, upper) = (s.tank.min, s.tank.max);
+    [(lower.x, upper.x), (lower.y, upper.y), (lower.z, upper.z)]
+        .into_iter()
+        .fold(1usize, |cells, (lower, upper)| {
+            let along = CellGrid::cells_along(lower, upper, s.support);
+            cells.saturating_mul(usize::try_from(along).unwrap_or(usize::MAX))
+        })
+}
+
 /// The work of one tick of `world`, counted in elements the step visits, once per
 /// substep: rigid bodies and their contacts (as the last step left them), fluid particles
-/// (times 32, about their neighbours, and times the fluid's own substeps, at most) and
-/// particle slots.
+/// (times 32, about their neighbours, and times the passes over them its last step made:
+/// one per fluid substep, at most, plus its solver iterations, up to DFSPH's
+/// `max_iterations` a substep) and particle slots.
 fn load(world: &World<Fx>) -> usize {
     let rigid = world
         .rigid()
         .map_or(0, |r| r.body_count().saturating_add(r.contact_count()));
     let fluid = world.fluid().map_or(0, |f| {
         let fluid_substeps = f.settings().substeps.max(1) as usize;
-        f.len().saturating_mul(32).saturating_mul(fluid_substeps)
+        let passes = fluid_substeps.saturating_add(f.last_iterations() as usize);
+        f.len()
+            .saturating_mul(32)
+            .saturating_mul(passes)
+            .saturating_add(grid_cells(f).saturating_mul(fluid_substeps))
     });
     let particles = world.particles().map_or(0, |p| p.slot_count());
     let substeps = world.settings().substeps.max(1) as usize;
@@ -113,6 +156,9 @@ pub fn world_step(data: &[u8]) -> bool {
     let Ok(mut world) = scene.build() else {
         return false;
     };
+    if worst_tick(&world) > MAX_TICK_WORK {
+        return false;
+    }
     let mut feed = InputFeed::new(&inputs);
     // Each half runs until half the ticks or a third of the work (the second half runs
     // twice), at least one tick: the load may grow as the run goes (an emitter).
@@ -165,6 +211,9 @@ fn assert_unit_orientations(world: &World<Fx>) {
 
 /// Runs `ticks` ticks of `inputs`, or fewer once their [`load`] passes [`MAX_WORK`].
 fn run(mut world: World<Fx>, inputs: &[TickInput<Fx>], ticks: u64) {
+    if worst_tick(&world) > MAX_TICK_WORK {
+        return;
+    }
     let mut feed = InputFeed::new(inputs);
     let mut work = 0usize;
     for _ in 0..ticks {
