@@ -194,15 +194,20 @@ pub(crate) trait Wide: Copy {
         ]
     }
 
+    /// `on` in the lanes of `mask`, `off` elsewhere, component by component.
+    #[inline(always)]
+    fn select3(self, mask: u8, on: [Self::V; 3], off: [Self::V; 3]) -> [Self::V; 3] {
+        [
+            self.select(mask, on[0], off[0]),
+            self.select(mask, on[1], off[1]),
+            self.select(mask, on[2], off[2]),
+        ]
+    }
+
     /// `value` in the lanes of `mask`, zero elsewhere.
     #[inline(always)]
     fn keep3(self, mask: u8, value: [Self::V; 3]) -> [Self::V; 3] {
-        let zero = self.zero();
-        [
-            self.select(mask, value[0], zero),
-            self.select(mask, value[1], zero),
-            self.select(mask, value[2], zero),
-        ]
+        self.select3(mask, value, [self.zero(); 3])
     }
 
     /// ⌊(a + 2³¹)/2³²⌋: the high half of a around its signed low half.

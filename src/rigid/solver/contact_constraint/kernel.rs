@@ -77,7 +77,7 @@
 
 use core::any::Any;
 
-use super::{ContactBlock, SolvePass};
+use super::{ContactArms, ContactBlock, SolvePass};
 use crate::math::{Fx, Real};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
@@ -200,6 +200,14 @@ pub(super) trait Kernels: Wide {
 
     /// [`facts`] with this backend.
     fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts;
+
+    /// [`prepare_block`](super::prepare_kernel::prepare_block) with this backend.
+    fn prepare_block(
+        self,
+        block: &mut ContactBlock<Fx>,
+        arms: &ContactArms<Fx>,
+        bodies: &[SolverBody<Fx>],
+    ) -> bool;
 }
 
 /// [`Kernels`] for a backend whose instructions are `$features`: each kernel an entry point
@@ -260,6 +268,28 @@ macro_rules! kernels_for {
                 }
                 // SAFETY: as in `solve_block`.
                 unsafe { entry(self, block) }
+            }
+
+            #[inline]
+            fn prepare_block(
+                self,
+                block: &mut ContactBlock<Fx>,
+                arms: &ContactArms<Fx>,
+                bodies: &[SolverBody<Fx>],
+            ) -> bool {
+                /// # Safety
+                /// The processor must have the backend's instructions.
+                #[target_feature(enable = $features)]
+                unsafe fn entry(
+                    wide: $backend,
+                    block: &mut ContactBlock<Fx>,
+                    arms: &ContactArms<Fx>,
+                    bodies: &[SolverBody<Fx>],
+                ) -> bool {
+                    super::prepare_kernel::prepare_block(wide, block, arms, bodies)
+                }
+                // SAFETY: as in `solve_block`.
+                unsafe { entry(self, block, arms, bodies) }
             }
         }
     };
@@ -453,10 +483,10 @@ impl<W: Wide> Linear<W> {
                 shared: None,
             };
         }
-        let normal = select3(w, facts.moving_b, normal_b, normal_a);
+        let normal = w.select3(facts.moving_b, normal_b, normal_a);
         let tangents = [
-            select3(w, facts.moving_b, tangents_b[0], tangents_a[0]),
-            select3(w, facts.moving_b, tangents_b[1], tangents_a[1]),
+            w.select3(facts.moving_b, tangents_b[0], tangents_a[0]),
+            w.select3(facts.moving_b, tangents_b[1], tangents_a[1]),
         ];
         Self {
             normal: [normal; 2],
@@ -1013,7 +1043,7 @@ fn clamp_to_cone(
 
 /// The points in use of each lane, as lanes.
 #[inline(always)]
-fn counts_of<W: Wide>(w: W, block: &ContactBlock<Fx>) -> W::V {
+pub(super) fn counts_of<W: Wide>(w: W, block: &ContactBlock<Fx>) -> W::V {
     let mut counts = [0; LANES];
     for (count, &points) in counts.iter_mut().zip(&block.count) {
         *count = i64::from(points);
@@ -1023,7 +1053,7 @@ fn counts_of<W: Wide>(w: W, block: &ContactBlock<Fx>) -> W::V {
 
 /// The lanes where lane `k` has a point: k < its count, among `active`.
 #[inline(always)]
-fn points_in_use<W: Wide>(w: W, counts: W::V, active: u8, k: usize) -> u8 {
+pub(super) fn points_in_use<W: Wide>(w: W, counts: W::V, active: u8, k: usize) -> u8 {
     w.greater(counts, w.splat(k as i64)) & active
 }
 
@@ -1034,16 +1064,6 @@ fn combine<W: Wide, const NARROW: bool>(w: W, a: [[W::V; 3]; 2], impulses: [W::V
         w.times3::<NARROW>(a[0], impulses[0]),
         w.times3::<NARROW>(a[1], impulses[1]),
     )
-}
-
-/// `on` in the lanes of `mask`, `off` elsewhere, component by component.
-#[inline(always)]
-fn select3<W: Wide>(w: W, mask: u8, on: [W::V; 3], off: [W::V; 3]) -> [W::V; 3] {
-    [
-        w.select(mask, on[0], off[0]),
-        w.select(mask, on[1], off[1]),
-        w.select(mask, on[2], off[2]),
-    ]
 }
 
 /// The lanes where a component of one of `vectors` lies outside [−2⁴⁶, 2⁴⁶).

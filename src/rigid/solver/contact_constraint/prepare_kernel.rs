@@ -25,12 +25,13 @@
 use core::any::Any;
 use core::mem::{offset_of, size_of};
 
+use super::kernel::{Kernels, counts_of, points_in_use};
 use super::{ContactArms, ContactBlock};
 use crate::math::{Fx, Mat3, Real, Vec3};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::{LANES, Lanes3};
 use crate::rigid::solver::wide::avx512::{BODY_WORDS, V, W};
-use crate::rigid::solver::wide::{Backend, Wide, avx2::Avx2, avx512::Avx512, backend};
+use crate::rigid::solver::wide::{Backend, Wide, backend};
 
 /// Word offsets of the inverse mass and of the inverse inertia's first column in a
 /// `SolverBody<Fx>`; element (i, j) of the inertia is word `INV_INERTIA + 3j + i`.
@@ -61,40 +62,10 @@ pub(super) fn prepare<R: Real>(
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let bodies = unsafe { &*(core::ptr::from_ref(bodies) as *const [SolverBody<Fx>]) };
     match backend() {
-        // SAFETY: a backend exists only where the processor has its instructions.
-        Some(Backend::Avx512(wide)) => unsafe { prepare_avx512(wide, block, arms, bodies) },
-        // SAFETY: as above.
-        Some(Backend::Avx2(wide)) => unsafe { prepare_avx2(wide, block, arms, bodies) },
+        Some(Backend::Avx512(wide)) => wide.prepare_block(block, arms, bodies),
+        Some(Backend::Avx2(wide)) => wide.prepare_block(block, arms, bodies),
         None => false,
     }
-}
-
-/// [`prepare_block`] with AVX-512F and DQ enabled.
-///
-/// # Safety
-/// The processor must have AVX-512F and AVX-512DQ.
-#[target_feature(enable = "avx512f,avx512dq")]
-unsafe fn prepare_avx512(
-    wide: Avx512,
-    block: &mut ContactBlock<Fx>,
-    arms: &ContactArms<Fx>,
-    bodies: &[SolverBody<Fx>],
-) -> bool {
-    prepare_block(wide, block, arms, bodies)
-}
-
-/// [`prepare_block`] with AVX2 enabled.
-///
-/// # Safety
-/// The processor must have AVX2.
-#[target_feature(enable = "avx2")]
-unsafe fn prepare_avx2(
-    wide: Avx2,
-    block: &mut ContactBlock<Fx>,
-    arms: &ContactArms<Fx>,
-    bodies: &[SolverBody<Fx>],
-) -> bool {
-    prepare_block(wide, block, arms, bodies)
 }
 
 /// The first word of each lane's body, A's and B's, in the lanes in use; `None` if an
@@ -176,7 +147,7 @@ unsafe fn inertia<W: Wide>(
 
 /// The kernel. Returns false when a value leaves the checked bound in a point in use.
 #[inline(always)]
-fn prepare_block<W: Wide>(
+pub(super) fn prepare_block<W: Wide>(
     w: W,
     block: &mut ContactBlock<Fx>,
     arms: &ContactArms<Fx>,
@@ -221,13 +192,9 @@ fn prepare_block<W: Wide>(
         return false;
     }
 
-    let mut counts = [0; LANES];
-    for (count, &points) in counts.iter_mut().zip(&block.count) {
-        *count = i64::from(points);
-    }
-    let counts = w.load_words(counts);
+    let counts = counts_of(w, block);
     for (p, cp) in block.points.iter_mut().enumerate() {
-        let in_use = w.greater(counts, w.splat(p as i64)) & active;
+        let in_use = points_in_use(w, counts, active, p);
         if in_use == 0 {
             continue;
         }
