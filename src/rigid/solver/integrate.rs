@@ -1,7 +1,7 @@
 //! Integration of the moving bodies over one substep.
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 #[cfg(test)]
 mod tests;
 
@@ -64,8 +64,8 @@ impl<R: Real> Solver<R> {
     /// ([`Quat::integrate`], skipped when ω = 0), and the step's accumulated motion
     /// Δp += h v, Δθ += h ω.
     ///
-    /// On I32F32 the orientations go [`LANES`] bodies at a time to the AVX-512 kernel
-    /// when the processor has it, which gives the same bits; the bodies it leaves (far
+    /// On I32F32 the orientations go [`LANES`] bodies at a time to a kernel when the
+    /// processor has AVX-512 or AVX2, which gives the same bits; the bodies it leaves (far
     /// from unit length, or values past its bound) are integrated one by one.
     pub fn integrate_positions(&mut self, bodies: &mut Bodies<R>, h: R) {
         let moving = self.bodies[1..]
@@ -83,7 +83,7 @@ impl<R: Real> Solver<R> {
                 continue;
             }
             #[cfg(target_arch = "x86_64")]
-            let done = avx512::integrate_orientations(chunk, slots, &mut bodies.orientation, h);
+            let done = kernel::integrate_orientations(chunk, slots, &mut bodies.orientation, h);
             #[cfg(not(target_arch = "x86_64"))]
             let done = 0u8;
             for (l, (sb, &slot)) in chunk.iter().zip(slots).enumerate() {

@@ -65,6 +65,18 @@ std::thread_local! {
     static CHOSEN: core::cell::Cell<Option<Option<Backend>>> = const { core::cell::Cell::new(None) };
 }
 
+/// The backends this processor runs.
+#[cfg(test)]
+pub(crate) fn backends() -> Vec<Backend> {
+    [
+        Avx512::detect().map(Backend::Avx512),
+        Avx2::detect().map(Backend::Avx2),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
 /// Runs `f` with the kernels of `backend` (none: the lanes) on this thread.
 #[cfg(test)]
 pub(crate) fn with_backend<T>(backend: Option<Backend>, f: impl FnOnce() -> T) -> T {
@@ -73,6 +85,39 @@ pub(crate) fn with_backend<T>(backend: Option<Backend>, f: impl FnOnce() -> T) -
     CHOSEN.set(before);
     result
 }
+
+/// Defines `fn $name(backend: Backend, args…) -> ret`, which runs the generic kernel
+/// `$kernel(wide, args…)` in a function compiled with the instructions of the chosen
+/// backend, one such function per backend, so that the kernel and the operations of
+/// [`Wide`] inline into it.
+macro_rules! kernel_entry {
+    ($(#[$meta:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty = $kernel:path;) => {
+        $(#[$meta])*
+        $vis fn $name(backend: $crate::rigid::solver::wide::Backend, $($arg: $ty),*) -> $ret {
+            use $crate::rigid::solver::wide::{Backend, avx2::Avx2, avx512::Avx512};
+            /// # Safety
+            /// The processor must have AVX-512F and AVX-512DQ.
+            #[target_feature(enable = "avx512f,avx512dq")]
+            unsafe fn on_avx512(wide: Avx512, $($arg: $ty),*) -> $ret {
+                $kernel(wide, $($arg),*)
+            }
+            /// # Safety
+            /// The processor must have AVX2.
+            #[target_feature(enable = "avx2")]
+            unsafe fn on_avx2(wide: Avx2, $($arg: $ty),*) -> $ret {
+                $kernel(wide, $($arg),*)
+            }
+            match backend {
+                // SAFETY: a value of a backend exists only where the processor has its
+                // instructions.
+                Backend::Avx512(wide) => unsafe { on_avx512(wide, $($arg),*) },
+                // SAFETY: as above.
+                Backend::Avx2(wide) => unsafe { on_avx2(wide, $($arg),*) },
+            }
+        }
+    };
+}
+pub(crate) use kernel_entry;
 
 /// Eight `i64` lanes and the operations the kernels need, each modulo 2⁶⁴ lane by lane.
 /// A value of an implementing type proves that the processor runs its instructions.
@@ -95,6 +140,8 @@ pub(crate) trait Wide: Copy {
     fn and(self, a: Self::V, b: Self::V) -> Self::V;
     fn max(self, a: Self::V, b: Self::V) -> Self::V;
     fn min(self, a: Self::V, b: Self::V) -> Self::V;
+    /// |a|, wrapping (i64::MIN stays itself).
+    fn abs(self, a: Self::V) -> Self::V;
     /// The signed low 32 bits of a times those of b, in 64 bits.
     fn mul_low_halves(self, a: Self::V, b: Self::V) -> Self::V;
     /// The low 64 bits of a·b.

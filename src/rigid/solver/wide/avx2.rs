@@ -155,6 +155,14 @@ impl Wide for Avx2 {
     }
 
     #[inline(always)]
+    fn abs(self, a: Self::V) -> Self::V {
+        halves!(a, a, |a, _b| unsafe {
+            let zero = _mm256_setzero_si256();
+            _mm256_blendv_epi8(a, _mm256_sub_epi64(zero, a), _mm256_cmpgt_epi64(zero, a))
+        })
+    }
+
+    #[inline(always)]
     fn mul_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
         halves!(a, b, |a, b| unsafe { _mm256_mul_epi32(a, b) })
     }

@@ -8,8 +8,8 @@
 //! "avx512f,avx512dq")]`, where they compile to single instructions.
 
 use core::arch::x86_64::{
-    __m512i, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpeq_epi64_mask, _mm512_cmpge_epu64_mask,
-    _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
+    __m512i, _mm512_abs_epi64, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
+    _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
     _mm512_mask_i64gather_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_loadu_epi64,
     _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64,
     _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
@@ -125,6 +125,11 @@ impl Wide for Avx512 {
     #[inline(always)]
     fn min(self, a: __m512i, b: __m512i) -> __m512i {
         unsafe { _mm512_min_epi64(a, b) }
+    }
+
+    #[inline(always)]
+    fn abs(self, a: __m512i) -> __m512i {
+        unsafe { _mm512_abs_epi64(a) }
     }
 
     #[inline(always)]
