@@ -1,13 +1,13 @@
 //! Box against box: separating axes (3 + 3 face normals, 9 edge cross products, in
-//! `axes.rs`, and eight pairs at a time in `avx512.rs`), then a clipped reference face, or
+//! `axes.rs`, and eight pairs at a time in `kernel.rs`), then a clipped reference face, or
 //! one point between two edges. A face contact's points go to the world frame four at a
 //! time (`world_points.rs`).
 
-#[cfg(target_arch = "x86_64")]
-mod avx512;
 mod axes;
 #[cfg(test)]
 mod face_tests;
+#[cfg(target_arch = "x86_64")]
+mod kernel;
 #[cfg(test)]
 mod tests;
 mod world_points;
@@ -56,15 +56,15 @@ pub(super) fn box_box<R: Real>(
 /// The separating-axis tests of up to [`LANES`] pairs, in order: lane l is what
 /// [`separating_axes`] gives for `pairs[l]`, bit for bit (lanes past the pairs are `None`).
 ///
-/// On I32F32 the pairs go to the AVX-512 kernel together when the processor has it; the
-/// lanes it leaves (values past its bound) are tested one by one.
+/// On I32F32 the pairs go to a kernel together when the processor has AVX-512 or AVX2;
+/// the lanes it leaves (values past its bound) are tested one by one.
 pub(crate) fn separating_axes_batch<R: Real>(
     pairs: &[BoxPair<'_, R>],
     margin: R,
 ) -> [Option<Axes<R>>; LANES] {
     let mut out = [None; LANES];
     #[cfg(target_arch = "x86_64")]
-    let done = avx512::separating_axes_lanes(pairs, margin, &mut out);
+    let done = kernel::separating_axes_lanes(pairs, margin, &mut out);
     #[cfg(not(target_arch = "x86_64"))]
     let done = 0u8;
     for (l, pair) in pairs.iter().enumerate().take(LANES) {

@@ -26,8 +26,8 @@ pub(crate) mod sqrt;
 
 use core::arch::x86_64::{
     __m512i, __mmask8, _mm512_add_epi64, _mm512_cmpge_epu64_mask, _mm512_loadu_si512,
-    _mm512_mask_blend_epi64, _mm512_mask_storeu_epi64, _mm512_mul_epi32, _mm512_mullo_epi64,
-    _mm512_set1_epi64, _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
+    _mm512_mask_storeu_epi64, _mm512_mul_epi32, _mm512_mullo_epi64, _mm512_set1_epi64,
+    _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
 };
 
 use super::lanes::{Lanes, Lanes3};
@@ -120,18 +120,4 @@ pub(crate) fn out_of_bound(x: __m512i) -> __mmask8 {
 #[target_feature(enable = "avx512f,avx512dq")]
 pub(crate) fn out_of_bound3(x: [__m512i; 3]) -> __mmask8 {
     out_of_bound(x[0]) | out_of_bound(x[1]) | out_of_bound(x[2])
-}
-
-/// `on` where the mask is set, `off` elsewhere.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-pub(crate) fn select(mask: __mmask8, on: __m512i, off: __m512i) -> __m512i {
-    _mm512_mask_blend_epi64(mask, off, on)
-}
-
-/// The same value in every lane.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-pub(crate) fn splat(x: Fx) -> __m512i {
-    _mm512_set1_epi64(x.to_bits())
 }

@@ -35,7 +35,7 @@ mod mixed_materials;
 mod prepare;
 mod softness;
 #[cfg(target_arch = "x86_64")]
-mod wide;
+pub(crate) mod wide;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};
 pub(crate) use contact_constraint::{ContactBlock, SolvePass};

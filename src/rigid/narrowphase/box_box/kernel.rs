@@ -1,5 +1,5 @@
-//! The separating-axis test of eight I32F32 box pairs at once in AVX-512 (F and DQ), one
-//! `i64` lane per pair, with the bits of [`separating_axes`]: the same sums of products,
+//! The separating-axis test of eight I32F32 box pairs at once, one `i64` lane per pair,
+//! with the bits of [`separating_axes`]: the same sums of products,
 //! each product rounded on its own as the scalar `*` rounds it, and the same comparisons,
 //!
 //! ```text
@@ -11,7 +11,9 @@
 //! The scalar test stops at the first separating axis and picks the first best face and
 //! edge axes in order; the kernel computes every axis of every lane and keeps, per lane,
 //! whether any axis separates (then the result is `None`, whichever axis it was) and the
-//! same first best axes, by masked updates in the scalar's order.
+//! same first best axes, by masked updates in the scalar's order. Written once against
+//! [`Wide`], it runs with the AVX-512 or the AVX2 backend, whichever the processor has
+//! ([`backend`]).
 //!
 //! # Exactness
 //!
@@ -19,26 +21,18 @@
 //! the threshold and its square, the margin's square, |L|², s_ij and s_ij²) is checked to
 //! lie in [−2⁴⁶, 2⁴⁶) as raw bits, and every sum has at most four terms, each such a value
 //! or a product below 2⁶⁰: no operation of the scalar form saturates, and the kernel's
-//! wrapping arithmetic gives its exact results
-//! ([`solver::avx512`](crate::rigid::solver::avx512)). A lane that fails a check is not
+//! wrapping arithmetic gives its exact results ([`Wide::mul`]). A lane that fails a check is not
 //! written and is left to the caller, even where the scalar test would have stopped
 //! before the value that failed.
 
 use core::any::Any;
-use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_abs_epi64, _mm512_cmpge_epi64_mask, _mm512_cmpgt_epi64_mask,
-    _mm512_cmplt_epi64_mask, _mm512_loadu_si512, _mm512_set1_epi64, _mm512_setzero_si512,
-    _mm512_storeu_si512,
-};
 
 #[cfg(doc)]
 use super::separating_axes;
 use super::{Axes, BoxPair, Choice, LANES};
 use crate::math::{Fx, Real};
 use crate::rigid::narrowphase::tolerance::parallel_sine_squared;
-use crate::rigid::solver::avx512::{
-    add, has_kernels, mul, out_of_bound, out_of_bound3, select, splat, sub,
-};
+use crate::rigid::solver::wide::{Wide, backend, kernel_entry};
 
 /// Input words per lane: A's axes (9), B's axes (9), A's and B's centres (3 + 3), A's and
 /// B's half extents (3 + 3).
@@ -51,16 +45,16 @@ const A_HALF: usize = 24;
 const B_HALF: usize = 27;
 
 /// Tests the pairs `pairs` (at most [`LANES`]) with the kernel when `R` is I32F32 and the
-/// processor has AVX-512F and DQ, writing lane l's result to `out[l]`. Returns the lanes
-/// it is done with; the caller tests the others.
+/// processor has AVX-512 (F and DQ) or AVX2, writing lane l's result to `out[l]`. Returns
+/// the lanes it is done with; the caller tests the others.
 pub(super) fn separating_axes_lanes<R: Real>(
     pairs: &[BoxPair<'_, R>],
     margin: R,
     out: &mut [Option<Axes<R>>; LANES],
 ) -> u8 {
-    if !has_kernels() {
+    let Some(backend) = backend() else {
         return 0;
-    }
+    };
     let Some(&margin) = (&margin as &dyn Any).downcast_ref::<Fx>() else {
         return 0;
     };
@@ -87,8 +81,7 @@ pub(super) fn separating_axes_lanes<R: Real>(
             words[B_HALF + m][l] = pair.half_b[m].to_bits();
         }
     }
-    // SAFETY: AVX-512F and DQ were detected on this processor just above.
-    let lanes = unsafe { test_block(&words, margin) };
+    let lanes = test_on(backend, &words, margin);
     let live = if count == LANES {
         u8::MAX
     } else {
@@ -150,128 +143,146 @@ struct Block {
     unchecked: u8,
 }
 
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn load(words: &[i64; LANES]) -> __m512i {
-    // SAFETY: eight `i64`: 64 readable bytes.
-    unsafe { _mm512_loadu_si512(words.as_ptr().cast()) }
-}
-
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn store(words: &mut [i64; LANES], value: __m512i) {
-    // SAFETY: eight `i64`: 64 writable bytes.
-    unsafe { _mm512_storeu_si512(words.as_mut_ptr().cast(), value) }
+kernel_entry! {
+    /// [`test_block`] with the instructions of `backend`.
+    fn test_on(words: &[[i64; LANES]; WORDS], margin: Fx) -> Block = test_block;
 }
 
 /// The scalar [`Vec3::dot`](crate::math::Vec3::dot): x₀y₀ + x₁y₁ + x₂y₂, each product
 /// rounded.
-#[inline]
-#[target_feature(enable = "avx512f,avx512dq")]
-fn dot(x: [__m512i; 3], y: [__m512i; 3]) -> __m512i {
-    add(add(mul(x[0], y[0]), mul(x[1], y[1])), mul(x[2], y[2]))
+#[inline(always)]
+fn dot<W: Wide>(w: W, x: [W::V; 3], y: [W::V; 3]) -> W::V {
+    w.add(
+        w.add(w.mul(x[0], y[0]), w.mul(x[1], y[1])),
+        w.mul(x[2], y[2]),
+    )
 }
 
 /// The lanes where `greater` holds between two signed quantities p and q known through
 /// their signs (`p_nonneg`, `q_nonneg`) and, when the signs agree, a comparison of
 /// magnitudes that is reversed for two negatives: true when p ≥ 0 > q, false when
 /// p < 0 ≤ q, `larger` (p² against q², scaled) when both are ≥ 0, `smaller` when both < 0.
-#[inline]
-fn by_signs(p_nonneg: __mmask8, q_nonneg: __mmask8, larger: __mmask8, smaller: __mmask8) -> u8 {
+#[inline(always)]
+fn by_signs(p_nonneg: u8, q_nonneg: u8, larger: u8, smaller: u8) -> u8 {
     (p_nonneg & !q_nonneg) | (p_nonneg & q_nonneg & larger) | (!p_nonneg & !q_nonneg & smaller)
 }
 
+/// Three consecutive words of the inputs as lanes.
+#[inline(always)]
+fn vector<W: Wide>(w: W, words: &[[i64; LANES]; WORDS], k: usize) -> [W::V; 3] {
+    [
+        w.load_words(words[k]),
+        w.load_words(words[k + 1]),
+        w.load_words(words[k + 2]),
+    ]
+}
+
+/// The lanes where a ≥ b, signed.
+#[inline(always)]
+fn at_least<W: Wide>(w: W, a: W::V, b: W::V) -> u8 {
+    !w.greater(b, a)
+}
+
 /// The kernel (see the module documentation).
-///
-/// # Safety
-/// The processor must have AVX-512F and AVX-512DQ.
-#[target_feature(enable = "avx512f,avx512dq")]
-unsafe fn test_block(words: &[[i64; LANES]; WORDS], margin: Fx) -> Block {
-    let w = |k: usize| load(&words[k]);
-    let vector = |k: usize| [w(k), w(k + 1), w(k + 2)];
-    let a = [vector(A_AXES), vector(A_AXES + 3), vector(A_AXES + 6)];
-    let b = [vector(B_AXES), vector(B_AXES + 3), vector(B_AXES + 6)];
-    let (ca, cb) = (vector(A_CENTRE), vector(B_CENTRE));
-    let (ha, hb) = (vector(A_HALF), vector(B_HALF));
-    let margin = splat(margin);
-    let zero = _mm512_setzero_si512();
-    let mut unchecked = out_of_bound(margin);
+#[inline(always)]
+fn test_block<W: Wide>(w: W, words: &[[i64; LANES]; WORDS], margin: Fx) -> Block {
+    let a = [
+        vector(w, words, A_AXES),
+        vector(w, words, A_AXES + 3),
+        vector(w, words, A_AXES + 6),
+    ];
+    let b = [
+        vector(w, words, B_AXES),
+        vector(w, words, B_AXES + 3),
+        vector(w, words, B_AXES + 6),
+    ];
+    let (ca, cb) = (vector(w, words, A_CENTRE), vector(w, words, B_CENTRE));
+    let (ha, hb) = (vector(w, words, A_HALF), vector(w, words, B_HALF));
+    let margin = w.splat(margin.to_bits());
+    let zero = w.zero();
+    let mut unchecked = w.out_of_bound(margin);
     for v in [a[0], a[1], a[2], b[0], b[1], b[2], ca, cb, ha, hb] {
-        unchecked |= out_of_bound3(v);
+        unchecked |= w.out_of_bound3(v);
     }
-    let d = [sub(cb[0], ca[0]), sub(cb[1], ca[1]), sub(cb[2], ca[2])];
-    unchecked |= out_of_bound3(d);
-    let t = [dot(a[0], d), dot(a[1], d), dot(a[2], d)];
-    unchecked |= out_of_bound3(t);
+    let d = w.sub3(cb, ca);
+    unchecked |= w.out_of_bound3(d);
+    let t = [dot(w, a[0], d), dot(w, a[1], d), dot(w, a[2], d)];
+    unchecked |= w.out_of_bound3(t);
     let mut c = [[zero; 3]; 3];
     let mut abs = [[zero; 3]; 3];
     for i in 0..3 {
         for j in 0..3 {
-            c[i][j] = dot(a[i], b[j]);
-            abs[i][j] = _mm512_abs_epi64(c[i][j]);
+            c[i][j] = dot(w, a[i], b[j]);
+            abs[i][j] = w.abs(c[i][j]);
         }
-        unchecked |= out_of_bound3(c[i]);
+        unchecked |= w.out_of_bound3(c[i]);
     }
 
     // Face axes: the first deepest of A's, then of B's (strictly deeper replaces).
     let mut separated: u8 = 0;
-    let mut face_a = (_mm512_set1_epi64(i64::MIN), zero);
-    let mut face_b = (_mm512_set1_epi64(i64::MIN), zero);
+    let lowest = w.splat(i64::MIN);
+    let (mut deepest_a, mut axis_a) = (lowest, zero);
+    let (mut deepest_b, mut axis_b) = (lowest, zero);
     let mut tb = [zero; 3];
     for i in 0..3 {
-        let reach = add(
-            add(add(ha[i], mul(hb[0], abs[i][0])), mul(hb[1], abs[i][1])),
-            mul(hb[2], abs[i][2]),
+        let reach = w.add(
+            w.add(
+                w.add(ha[i], w.mul(hb[0], abs[i][0])),
+                w.mul(hb[1], abs[i][1]),
+            ),
+            w.mul(hb[2], abs[i][2]),
         );
-        let separation = sub(_mm512_abs_epi64(t[i]), reach);
-        separated |= _mm512_cmpgt_epi64_mask(separation, margin);
-        let deeper = _mm512_cmpgt_epi64_mask(separation, face_a.0);
-        face_a = (
-            select(deeper, separation, face_a.0),
-            select(deeper, _mm512_set1_epi64(i as i64), face_a.1),
-        );
+        let separation = w.sub(w.abs(t[i]), reach);
+        separated |= w.greater(separation, margin);
+        let deeper = w.greater(separation, deepest_a);
+        deepest_a = w.select(deeper, separation, deepest_a);
+        axis_a = w.select(deeper, w.splat(i as i64), axis_a);
     }
     for j in 0..3 {
-        tb[j] = add(
-            add(mul(t[0], c[0][j]), mul(t[1], c[1][j])),
-            mul(t[2], c[2][j]),
+        tb[j] = w.add(
+            w.add(w.mul(t[0], c[0][j]), w.mul(t[1], c[1][j])),
+            w.mul(t[2], c[2][j]),
         );
-        let reach = add(
-            add(add(hb[j], mul(ha[0], abs[0][j])), mul(ha[1], abs[1][j])),
-            mul(ha[2], abs[2][j]),
+        let reach = w.add(
+            w.add(
+                w.add(hb[j], w.mul(ha[0], abs[0][j])),
+                w.mul(ha[1], abs[1][j]),
+            ),
+            w.mul(ha[2], abs[2][j]),
         );
-        let separation = sub(_mm512_abs_epi64(tb[j]), reach);
-        separated |= _mm512_cmpgt_epi64_mask(separation, margin);
-        let deeper = _mm512_cmpgt_epi64_mask(separation, face_b.0);
-        face_b = (
-            select(deeper, separation, face_b.0),
-            select(deeper, _mm512_set1_epi64(3 + j as i64), face_b.1),
-        );
+        let separation = w.sub(w.abs(tb[j]), reach);
+        separated |= w.greater(separation, margin);
+        let deeper = w.greater(separation, deepest_b);
+        deepest_b = w.select(deeper, separation, deepest_b);
+        axis_b = w.select(deeper, w.splat(3 + j as i64), axis_b);
     }
-    let bias_b = splat(Fx::from_ratio(1, 1 << 11));
-    let of_b = _mm512_cmpgt_epi64_mask(face_b.0, add(face_a.0, bias_b));
-    let face_separation = select(of_b, face_b.0, face_a.0);
-    let mut choice = select(of_b, face_b.1, face_a.1);
-    unchecked |= out_of_bound(face_separation);
+    let bias_b = w.splat(Fx::from_ratio(1, 1 << 11).to_bits());
+    let of_b = w.greater(deepest_b, w.add(deepest_a, bias_b));
+    let face_separation = w.select(of_b, deepest_b, deepest_a);
+    let mut choice = w.select(of_b, axis_b, axis_a);
+    unchecked |= w.out_of_bound(face_separation);
 
     // Edge axes, in the scalar's order, the first best kept.
-    let threshold = add(
-        add(face_separation, splat(Fx::from_ratio(1, 1 << 10))),
-        mul(
-            _mm512_abs_epi64(face_separation),
-            splat(Fx::from_ratio(1, 16)),
+    let threshold = w.add(
+        w.add(
+            face_separation,
+            w.splat(Fx::from_ratio(1, 1 << 10).to_bits()),
+        ),
+        w.mul(
+            w.abs(face_separation),
+            w.splat(Fx::from_ratio(1, 16).to_bits()),
         ),
     );
-    unchecked |= out_of_bound(threshold);
-    let threshold_squared = mul(threshold, threshold);
-    let margin_squared = mul(margin, margin);
-    unchecked |= out_of_bound(threshold_squared) | out_of_bound(margin_squared);
-    let threshold_nonneg = _mm512_cmpge_epi64_mask(threshold, zero);
-    let parallel = splat(parallel_sine_squared::<Fx>());
+    unchecked |= w.out_of_bound(threshold);
+    let threshold_squared = w.mul(threshold, threshold);
+    let margin_squared = w.mul(margin, margin);
+    unchecked |= w.out_of_bound(threshold_squared) | w.out_of_bound(margin_squared);
+    let threshold_nonneg = at_least(w, threshold, zero);
+    let parallel = w.splat(parallel_sine_squared::<Fx>().to_bits());
     let mut square = [[zero; 3]; 3];
     for i in 0..3 {
         for j in 0..3 {
-            square[i][j] = mul(c[i][j], c[i][j]);
+            square[i][j] = w.mul(c[i][j], c[i][j]);
         }
     }
     let mut edge_found: u8 = 0;
@@ -281,39 +292,39 @@ unsafe fn test_block(words: &[[i64; LANES]; WORDS], margin: Fx) -> Block {
         let (i1, i2) = ((i + 1) % 3, (i + 2) % 3);
         for j in 0..3 {
             let (j1, j2) = ((j + 1) % 3, (j + 2) % 3);
-            let length_squared = add(square[i1][j], square[i2][j]);
-            let tested = _mm512_cmpgt_epi64_mask(length_squared, parallel);
-            let ra = add(mul(ha[i1], abs[i2][j]), mul(ha[i2], abs[i1][j]));
-            let rb = add(mul(hb[j1], abs[i][j2]), mul(hb[j2], abs[i][j1]));
-            let along = sub(mul(t[i2], c[i1][j]), mul(t[i1], c[i2][j]));
-            let s = sub(_mm512_abs_epi64(along), add(ra, rb));
-            let s2 = mul(s, s);
+            let length_squared = w.add(square[i1][j], square[i2][j]);
+            let tested = w.greater(length_squared, parallel);
+            let ra = w.add(w.mul(ha[i1], abs[i2][j]), w.mul(ha[i2], abs[i1][j]));
+            let rb = w.add(w.mul(hb[j1], abs[i][j2]), w.mul(hb[j2], abs[i][j1]));
+            let along = w.sub(w.mul(t[i2], c[i1][j]), w.mul(t[i1], c[i2][j]));
+            let s = w.sub(w.abs(along), w.add(ra, rb));
+            let s2 = w.mul(s, s);
             unchecked |=
-                tested & (out_of_bound(length_squared) | out_of_bound(s) | out_of_bound(s2));
-            let positive = _mm512_cmpgt_epi64_mask(s, zero);
-            let nonneg = _mm512_cmpge_epi64_mask(s, zero);
-            let margin_reach = mul(margin_squared, length_squared);
-            separated |= tested & positive & _mm512_cmpgt_epi64_mask(s2, margin_reach);
-            let face_reach = mul(threshold_squared, length_squared);
+                tested & (w.out_of_bound(length_squared) | w.out_of_bound(s) | w.out_of_bound(s2));
+            let positive = w.greater(s, zero);
+            let nonneg = at_least(w, s, zero);
+            let margin_reach = w.mul(margin_squared, length_squared);
+            separated |= tested & positive & w.greater(s2, margin_reach);
+            let face_reach = w.mul(threshold_squared, length_squared);
             let beats_face = by_signs(
                 nonneg,
                 threshold_nonneg,
-                _mm512_cmpgt_epi64_mask(s2, face_reach),
-                _mm512_cmplt_epi64_mask(s2, face_reach),
+                w.greater(s2, face_reach),
+                w.greater(face_reach, s2),
             );
-            let (lhs, rhs) = (mul(s2, best_l), mul(best_s2, length_squared));
+            let (lhs, rhs) = (w.mul(s2, best_l), w.mul(best_s2, length_squared));
             let beats_best = by_signs(
                 nonneg,
-                _mm512_cmpge_epi64_mask(best_s, zero),
-                _mm512_cmpgt_epi64_mask(lhs, rhs),
-                _mm512_cmplt_epi64_mask(lhs, rhs),
+                at_least(w, best_s, zero),
+                w.greater(lhs, rhs),
+                w.greater(rhs, lhs),
             );
             let take = tested & beats_face & (!edge_found | beats_best);
             edge_found |= take;
-            best_s = select(take, s, best_s);
-            best_s2 = select(take, s2, best_s2);
-            best_l = select(take, length_squared, best_l);
-            choice = select(take, _mm512_set1_epi64(6 + 3 * i as i64 + j as i64), choice);
+            best_s = w.select(take, s, best_s);
+            best_s2 = w.select(take, s2, best_s2);
+            best_l = w.select(take, length_squared, best_l);
+            choice = w.select(take, w.splat(6 + 3 * i as i64 + j as i64), choice);
         }
     }
 
@@ -321,24 +332,18 @@ unsafe fn test_block(words: &[[i64; LANES]; WORDS], margin: Fx) -> Block {
         c: [[[0; LANES]; 3]; 3],
         t: [[0; LANES]; 3],
         tb: [[0; LANES]; 3],
-        choice: [0; LANES],
+        choice: w.store_words(choice),
         separated,
         unchecked,
     };
     for (row, values) in lanes.c.iter_mut().zip(c) {
         for (words, value) in row.iter_mut().zip(values) {
-            store(words, value);
+            *words = w.store_words(value);
         }
     }
-    for ((t_words, tb_words), (t, tb)) in lanes
-        .t
-        .iter_mut()
-        .zip(&mut lanes.tb)
-        .zip(t.into_iter().zip(tb))
-    {
-        store(t_words, t);
-        store(tb_words, tb);
+    for i in 0..3 {
+        lanes.t[i] = w.store_words(t[i]);
+        lanes.tb[i] = w.store_words(tb[i]);
     }
-    store(&mut lanes.choice, choice);
     lanes
 }
