@@ -47,7 +47,7 @@ pub(crate) enum Backend {
 
 /// The backend of the kernels on this processor: AVX-512 (F and DQ), else AVX2; none
 /// without either (the blocks then go lane by lane). Tests may choose one the processor
-/// has, or none, for the thread ([`with_backend`]).
+/// has, or none, for the thread (`with_backend`).
 #[inline]
 pub(crate) fn backend() -> Option<Backend> {
     #[cfg(test)]
