@@ -455,76 +455,73 @@ fn facts<W: Wide>(w: W, block: &ContactBlock<Fx>) -> KernelFacts {
     }
 }
 
-/// The velocity changes per unit impulse of a block's lanes, n/m and t/m, on each side, and
-/// how a product with them reaches the two sides.
-struct Linear<W: Wide> {
-    /// n/m_a and n/m_b, or the shared coefficients on both sides.
-    normal: [[W::V; 3]; 2],
-    /// t/m_a and t/m_b for the two tangents, likewise.
-    tangents: [[[W::V; 3]; 2]; 2],
+/// Velocity changes per unit impulse of a block's lanes on each side, n/m (K = 1) or t₁/m
+/// and t₂/m (K = 2), and how a product with them reaches the two sides. Each set is loaded
+/// where its rows begin, so that it holds no registers before.
+struct Linear<W: Wide, const K: usize> {
+    /// Per side (A, B), the K coefficient vectors, or the shared ones on both sides.
+    sides: [[[W::V; 3]; K]; 2],
     /// The lanes each side moves in when the coefficients are shared
     /// ([`KernelFacts::linear_shared`]).
     shared: Option<(u8, u8)>,
 }
 
-impl<W: Wide> Linear<W> {
-    /// The coefficients of `block`: when they are shared, B's where B moves and A's
-    /// elsewhere (where B's are zero), for both sides.
+impl<W: Wide> Linear<W, 1> {
+    /// n/m_a and n/m_b of `block` ([`Linear::of`]).
     #[inline(always)]
-    fn of(w: W, block: &ContactBlock<Fx>) -> Self {
-        let (normal_a, normal_b) = (w.load3(&block.normal_a), w.load3(&block.normal_b));
-        let tangents_a = [w.load3(&block.tangents_a[0]), w.load3(&block.tangents_a[1])];
-        let tangents_b = [w.load3(&block.tangents_b[0]), w.load3(&block.tangents_b[1])];
-        let facts = &block.kernel;
+    fn normal(w: W, block: &ContactBlock<Fx>) -> Self {
+        Self::of(w, &block.kernel, [&block.normal_a], [&block.normal_b])
+    }
+}
+
+impl<W: Wide> Linear<W, 2> {
+    /// t₁/m_a, t₂/m_a and t₁/m_b, t₂/m_b of `block` ([`Linear::of`]).
+    #[inline(always)]
+    fn tangents(w: W, block: &ContactBlock<Fx>) -> Self {
+        let [a1, a2] = &block.tangents_a;
+        let [b1, b2] = &block.tangents_b;
+        Self::of(w, &block.kernel, [a1, a2], [b1, b2])
+    }
+}
+
+impl<W: Wide, const K: usize> Linear<W, K> {
+    /// The coefficients `a` and `b` of the two sides: when they are shared (`facts`), B's
+    /// where B moves and A's elsewhere (where B's are zero), for both sides.
+    #[inline(always)]
+    fn of(w: W, facts: &KernelFacts, a: [&Lanes3<Fx>; K], b: [&Lanes3<Fx>; K]) -> Self {
+        let mut side_a = [[w.zero(); 3]; K];
+        let mut side_b = [[w.zero(); 3]; K];
+        for j in 0..K {
+            side_a[j] = w.load3(a[j]);
+            side_b[j] = w.load3(b[j]);
+        }
         if !facts.linear_shared {
             return Self {
-                normal: [normal_a, normal_b],
-                tangents: [tangents_a, tangents_b],
+                sides: [side_a, side_b],
                 shared: None,
             };
         }
-        let normal = w.select3(facts.moving_b, normal_b, normal_a);
-        let tangents = [
-            w.select3(facts.moving_b, tangents_b[0], tangents_a[0]),
-            w.select3(facts.moving_b, tangents_b[1], tangents_a[1]),
-        ];
+        let mut shared = [[w.zero(); 3]; K];
+        for j in 0..K {
+            shared[j] = w.select3(facts.moving_b, side_b[j], side_a[j]);
+        }
         Self {
-            normal: [normal; 2],
-            tangents: [tangents; 2],
+            sides: [shared; 2],
             shared: Some((facts.moving_a, facts.moving_b)),
         }
     }
 
-    /// (Δv_a, Δv_b) = (λ n/m_a, λ n/m_b), each product rounded as `Vec3 * R`.
+    /// (Δv_a, Δv_b) = (Σⱼ λⱼ cⱼ,a, Σⱼ λⱼ cⱼ,b), each product rounded as `Vec3 * R`.
     #[inline(always)]
-    fn along_normal<const NARROW: bool>(&self, w: W, impulse: W::V) -> ([W::V; 3], [W::V; 3]) {
+    fn changes<const NARROW: bool>(&self, w: W, impulses: [W::V; K]) -> ([W::V; 3], [W::V; 3]) {
         match self.shared {
             Some((moving_a, moving_b)) => {
-                let change = w.times3::<NARROW>(self.normal[0], impulse);
+                let change = combine::<W, NARROW, K>(w, self.sides[0], impulses);
                 (w.keep3(moving_a, change), w.keep3(moving_b, change))
             }
             None => (
-                w.times3::<NARROW>(self.normal[0], impulse),
-                w.times3::<NARROW>(self.normal[1], impulse),
-            ),
-        }
-    }
-
-    /// (Δv_a, Δv_b) = (λ₁ t₁/m_a + λ₂ t₂/m_a, λ₁ t₁/m_b + λ₂ t₂/m_b).
-    #[inline(always)]
-    fn along_tangents<const NARROW: bool>(
-        &self,
-        w: W,
-        impulses: [W::V; 2],
-    ) -> ([W::V; 3], [W::V; 3]) {
-        match self.shared {
-            Some((moving_a, moving_b)) => {
-                let change = combine::<W, NARROW>(w, self.tangents[0], impulses);
-                (w.keep3(moving_a, change), w.keep3(moving_b, change))
-            }
-            None => (
-                combine::<W, NARROW>(w, self.tangents[0], impulses),
-                combine::<W, NARROW>(w, self.tangents[1], impulses),
+                combine::<W, NARROW, K>(w, self.sides[0], impulses),
+                combine::<W, NARROW, K>(w, self.sides[1], impulses),
             ),
         }
     }
@@ -553,7 +550,7 @@ fn warm_start_block<W: Wide, const NARROW: bool>(
     // products.
     let mut bad = side_a.beyond::<false>(w) | side_b.beyond::<false>(w);
     let zero = w.zero();
-    let linear = Linear::of(w, block);
+    let normal_linear = Linear::normal(w, block);
     let counts = counts_of(w, block);
     for (k, cp) in block.points.iter().enumerate() {
         let in_use = w.greater(counts, w.splat(k as i64)) & active;
@@ -563,7 +560,7 @@ fn warm_start_block<W: Wide, const NARROW: bool>(
         let n = w.select(in_use, w.load(&cp.normal_impulse), zero);
         let (in_a, in_b) = (w.load3(&cp.in_a), w.load3(&cp.in_b));
         bad |= w.out_of_bound(n) & in_use;
-        let (dv_a, dv_b) = linear.along_normal::<NARROW>(w, n);
+        let (dv_a, dv_b) = normal_linear.changes::<NARROW>(w, [n]);
         Side::exchange(
             w,
             (&mut side_a, &mut side_b),
@@ -588,19 +585,19 @@ fn warm_start_block<W: Wide, const NARROW: bool>(
     ];
     let twist = w.select(active, w.load(&f.twist_impulse), zero);
     bad |= (w.out_of_bound(t[0]) | w.out_of_bound(t[1]) | w.out_of_bound(twist)) & active;
-    let (dv_a, dv_b) = linear.along_tangents::<NARROW>(w, t);
+    let (dv_a, dv_b) = Linear::tangents(w, block).changes::<NARROW>(w, t);
     Side::exchange(
         w,
         (&mut side_a, &mut side_b),
         [
             dv_a,
             w.add3(
-                combine::<W, NARROW>(w, it_a, t),
+                combine::<W, NARROW, 2>(w, it_a, t),
                 w.times3::<NARROW>(twist_a, twist),
             ),
             dv_b,
             w.add3(
-                combine::<W, NARROW>(w, it_b, t),
+                combine::<W, NARROW, 2>(w, it_b, t),
                 w.times3::<NARROW>(twist_b, twist),
             ),
         ],
@@ -770,7 +767,7 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
         & active;
 
     let normal = w.load3(&block.normal);
-    let linear = Linear::of(w, block);
+    let normal_linear = Linear::normal(w, block);
     let counts = counts_of(w, block);
 
     // Normal impulses. The separations first: kept by the block in the biased pass,
@@ -817,7 +814,6 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
             continue;
         }
         let (rn_a, rn_b) = (w.load3(&cp.rn_a), w.load3(&cp.rn_b));
-        let (in_a, in_b) = (w.load3(&cp.in_a), w.load3(&cp.in_b));
         let normal_mass = w.load(&cp.normal_mass);
         let old = w.load(&cp.normal_impulse);
         let old_max = w.load(&cp.max_normal_impulse);
@@ -855,15 +851,15 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
         let new = w.max(w.add(old, impulse), zero);
         let applied = w.select(in_use, w.sub(new, old), zero);
         bad |= w.out_of_bound(applied) & in_use;
-        let (dv_a, dv_b) = linear.along_normal::<NARROW>(w, applied);
+        let (dv_a, dv_b) = normal_linear.changes::<NARROW>(w, [applied]);
         Side::exchange(
             w,
             (&mut side_a, &mut side_b),
             [
                 dv_a,
-                w.times3::<NARROW>(in_a, applied),
+                w.times3::<NARROW>(w.load3(&cp.in_a), applied),
                 dv_b,
-                w.times3::<NARROW>(in_b, applied),
+                w.times3::<NARROW>(w.load3(&cp.in_b), applied),
             ],
         );
         bad |= Side::spin_beyond::<NARROW>(w, &side_a, &side_b) & active;
@@ -894,7 +890,6 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
             twist_sum = w.add(twist_sum, w.mul(impulse, arm));
         }
     }
-    let tangents = [w.load3(&block.tangents[0]), w.load3(&block.tangents[1])];
     let friction = w.load(&block.friction);
     let old = [w.load(&f.tangent_impulse[0]), w.load(&f.tangent_impulse[1])];
     let old_twist = w.load(&f.twist_impulse);
@@ -906,13 +901,6 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
     let mut tangent_impulses = old;
     let mut twist_impulses = old_twist;
     if in_use != 0 {
-        let rt_a = [w.load3(&f.rt_a[0]), w.load3(&f.rt_a[1])];
-        let rt_b = [w.load3(&f.rt_b[0]), w.load3(&f.rt_b[1])];
-        let it_a = [w.load3(&f.it_a[0]), w.load3(&f.it_a[1])];
-        let it_b = [w.load3(&f.it_b[0]), w.load3(&f.it_b[1])];
-        let (twist_a, twist_b) = (w.load3(&f.twist_a), w.load3(&f.twist_b));
-        let tangent_mass = [w.load(&f.tangent_mass[0]), w.load(&f.tangent_mass[1])];
-        let twist_mass = w.load(&f.twist_mass);
         bad |= (w.out_of_bound(normal_sum)
             | w.out_of_bound(twist_sum)
             | w.out_of_bound(old[0])
@@ -922,16 +910,17 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
         let dv = w.sub3(side_b.v, side_a.v);
         bad |= w.beyond3::<NARROW>(dv) & in_use;
         let mut new = [zero; 2];
+        // Each row's coefficients are loaded where they are used, to spare registers.
         for j in 0..2 {
             let vt = w.sub(
                 w.add(
-                    w.dot::<NARROW>(dv, tangents[j]),
-                    w.dot::<NARROW>(side_b.w, rt_b[j]),
+                    w.dot::<NARROW>(dv, w.load3(&block.tangents[j])),
+                    w.dot::<NARROW>(side_b.w, w.load3(&f.rt_b[j])),
                 ),
-                w.dot::<NARROW>(side_a.w, rt_a[j]),
+                w.dot::<NARROW>(side_a.w, w.load3(&f.rt_a[j])),
             );
             bad |= w.out_of_bound(vt) & in_use;
-            new[j] = w.sub(old[j], w.mul(tangent_mass[j], vt));
+            new[j] = w.sub(old[j], w.mul(w.load(&f.tangent_mass[j]), vt));
         }
         let limit = w.mul(friction, normal_sum);
         bad |= (w.out_of_bound(new[0]) | w.out_of_bound(new[1]) | w.out_of_bound(limit)) & in_use;
@@ -954,15 +943,15 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
             w.select(in_use, w.sub(new[1], old[1]), zero),
         ];
         bad |= (w.out_of_bound(applied[0]) | w.out_of_bound(applied[1])) & in_use;
-        let (dv_a, dv_b) = linear.along_tangents::<NARROW>(w, applied);
+        let (dv_a, dv_b) = Linear::tangents(w, block).changes::<NARROW>(w, applied);
         Side::exchange(
             w,
             (&mut side_a, &mut side_b),
             [
                 dv_a,
-                combine::<W, NARROW>(w, it_a, applied),
+                combine::<W, NARROW, 2>(w, [w.load3(&f.it_a[0]), w.load3(&f.it_a[1])], applied),
                 dv_b,
-                combine::<W, NARROW>(w, it_b, applied),
+                combine::<W, NARROW, 2>(w, [w.load3(&f.it_b[0]), w.load3(&f.it_b[1])], applied),
             ],
         );
         // The twist row reads the angular velocities only through ω_b − ω_a, checked there.
@@ -978,7 +967,7 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
             bad |= (w.out_of_bound(twist_limit) | w.beyond3::<NARROW>(spin_rate)) & in_use;
             let spin = w.dot::<NARROW>(spin_rate, normal);
             bad |= w.out_of_bound(spin) & in_use;
-            let unclamped = w.sub(old_twist, w.mul(twist_mass, spin));
+            let unclamped = w.sub(old_twist, w.mul(w.load(&f.twist_mass), spin));
             let new_twist = w.min(w.max(unclamped, w.sub(zero, twist_limit)), twist_limit);
             let applied = w.select(in_use, w.sub(new_twist, old_twist), zero);
             bad |= w.out_of_bound(applied) & in_use;
@@ -988,9 +977,9 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
                 (&mut side_a, &mut side_b),
                 [
                     [zero; 3],
-                    w.times3::<NARROW>(twist_a, applied),
+                    w.times3::<NARROW>(w.load3(&f.twist_a), applied),
                     [zero; 3],
-                    w.times3::<NARROW>(twist_b, applied),
+                    w.times3::<NARROW>(w.load3(&f.twist_b), applied),
                 ],
             );
             if bad != 0 {
@@ -1057,13 +1046,19 @@ pub(super) fn points_in_use<W: Wide>(w: W, counts: W::V, active: u8, k: usize) -
     w.greater(counts, w.splat(k as i64)) & active
 }
 
-/// a₁λ₁ + a₂λ₂ for two vectors of coefficients and two impulses ([`Wide::times`]).
+/// a₁λ₁ + … + a_Kλ_K for K vectors of coefficients and K impulses ([`Wide::times`]),
+/// summed in that order.
 #[inline(always)]
-fn combine<W: Wide, const NARROW: bool>(w: W, a: [[W::V; 3]; 2], impulses: [W::V; 2]) -> [W::V; 3] {
-    w.add3(
-        w.times3::<NARROW>(a[0], impulses[0]),
-        w.times3::<NARROW>(a[1], impulses[1]),
-    )
+fn combine<W: Wide, const NARROW: bool, const K: usize>(
+    w: W,
+    a: [[W::V; 3]; K],
+    impulses: [W::V; K],
+) -> [W::V; 3] {
+    let mut sum = w.times3::<NARROW>(a[0], impulses[0]);
+    for j in 1..K {
+        sum = w.add3(sum, w.times3::<NARROW>(a[j], impulses[j]));
+    }
+    sum
 }
 
 /// The lanes where a component of one of `vectors` lies outside [−2⁴⁶, 2⁴⁶).
