@@ -157,7 +157,6 @@ pub(super) fn prepare_block<W: Wide>(
         return false;
     };
     let active = ((1u16 << block.len) - 1) as u8;
-    let zero = w.zero();
     // SAFETY: `lane_words` checked every active lane's body index, and each offset is a
     // word inside a body.
     let (inv_mass_a, inv_mass_b, inertia_a, inertia_b, v_a, v_b, w_a, w_b) = unsafe {
@@ -229,24 +228,24 @@ pub(super) fn prepare_block<W: Wide>(
     let r_a = w.load3(&arms.centre_a);
     let r_b = w.load3(&arms.centre_b);
     let mut bad = w.out_of_bound3(r_a) | w.out_of_bound3(r_b);
-    let mut rt_a = [[zero; 3]; 2];
-    let mut rt_b = [[zero; 3]; 2];
-    let mut it_a = [[zero; 3]; 2];
-    let mut it_b = [[zero; 3]; 2];
-    let mut kt = [zero; 2];
-    for j in 0..2 {
-        rt_a[j] = cross(w, r_a, tangents[j]);
-        rt_b[j] = cross(w, r_b, tangents[j]);
-        it_a[j] = mat_vec(w, inertia_a, rt_a[j]);
-        it_b[j] = mat_vec(w, inertia_b, rt_b[j]);
-        bad |= w.out_of_bound3(rt_a[j])
-            | w.out_of_bound3(rt_b[j])
-            | w.out_of_bound3(it_a[j])
-            | w.out_of_bound3(it_b[j]);
-        kt[j] = w.add(
-            w.add(m_sum, dot(w, it_a[j], rt_a[j])),
-            dot(w, it_b[j], rt_b[j]),
-        );
+    // Each row is stored as soon as it is computed (a failed check later leaves the block
+    // to the scalar form, which overwrites it), so that no row holds registers after.
+    let f = &mut block.friction_rows;
+    for (j, &tangent) in tangents.iter().enumerate() {
+        let rt_a = cross(w, r_a, tangent);
+        let rt_b = cross(w, r_b, tangent);
+        let it_a = mat_vec(w, inertia_a, rt_a);
+        let it_b = mat_vec(w, inertia_b, rt_b);
+        bad |= w.out_of_bound3(rt_a)
+            | w.out_of_bound3(rt_b)
+            | w.out_of_bound3(it_a)
+            | w.out_of_bound3(it_b);
+        let kt = w.add(w.add(m_sum, dot(w, it_a, rt_a)), dot(w, it_b, rt_b));
+        store3(w, &mut f.rt_a[j], active, rt_a);
+        store3(w, &mut f.rt_b[j], active, rt_b);
+        store3(w, &mut f.it_a[j], active, it_a);
+        store3(w, &mut f.it_b[j], active, it_b);
+        w.store_lanes(&mut f.tangent_mass[j], active, kt);
     }
     let twist_a = mat_vec(w, inertia_a, normal);
     let twist_b = mat_vec(w, inertia_b, normal);
@@ -254,14 +253,6 @@ pub(super) fn prepare_block<W: Wide>(
     let k_twist = w.add(dot(w, twist_a, normal), dot(w, twist_b, normal));
     if bad & active != 0 {
         return false;
-    }
-    let f = &mut block.friction_rows;
-    for j in 0..2 {
-        store3(w, &mut f.rt_a[j], active, rt_a[j]);
-        store3(w, &mut f.rt_b[j], active, rt_b[j]);
-        store3(w, &mut f.it_a[j], active, it_a[j]);
-        store3(w, &mut f.it_b[j], active, it_b[j]);
-        w.store_lanes(&mut f.tangent_mass[j], active, kt[j]);
     }
     store3(w, &mut f.twist_a, active, twist_a);
     store3(w, &mut f.twist_b, active, twist_b);
