@@ -770,8 +770,8 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
     let normal_linear = Linear::normal(w, block);
     let counts = counts_of(w, block);
 
-    // Normal impulses. The separations first: kept by the block in the biased pass,
-    // computed from the motions in the relax pass, which then no longer needs them.
+    // Normal impulses. In the relax pass the separations first, from the motions, which it
+    // then no longer needs; the biased pass reads the block's with each row.
     let mut separations = [zero; 4];
     if RELAX {
         let moved = w.sub3(side_b.dp, side_a.dp);
@@ -794,16 +794,6 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
             bad |= w.beyond::<NARROW>(s) & in_use;
             separations[k] = s;
         }
-    } else {
-        for (k, cp) in block.points.iter().enumerate() {
-            let in_use = points_in_use(w, counts, active, k);
-            if in_use == 0 {
-                continue;
-            }
-            let s = w.load(&cp.separation);
-            bad |= w.beyond::<NARROW>(s) & in_use;
-            separations[k] = s;
-        }
     }
     let mut normal_impulses = [zero; 4];
     let mut max_normal_impulses = [zero; 4];
@@ -818,7 +808,14 @@ fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
         let old = w.load(&cp.normal_impulse);
         let old_max = w.load(&cp.max_normal_impulse);
         bad |= (w.out_of_bound(old) | w.out_of_bound(old_max)) & in_use;
-        let s = separations[k];
+        // The biased pass reads each point's kept separation with its row.
+        let s = if RELAX {
+            separations[k]
+        } else {
+            let s = w.load(&cp.separation);
+            bad |= w.beyond::<NARROW>(s) & in_use;
+            s
+        };
         let apart = w.greater(s, zero);
         // s/h for the points still apart (s·inv_h is only computed when there are some).
         let speculative_bias = if apart & in_use != 0 {
