@@ -263,12 +263,21 @@ pub(crate) trait Wide: Copy {
         self.shift_down_32(self.add(a, self.splat(1 << 31)))
     }
 
+    /// The low 64 bits of a·b_h, given a's high half a_h = [`high`](Self::high)`(a)` and b_h,
+    /// both within [−2³¹, 2³¹): [`mul_low`](Self::mul_low) by default. A backend without a
+    /// 64-bit multiply takes a·b_h = a_h·b_h·2³² + a_l·b_h, two products of 32-bit halves
+    /// (exact modulo 2⁶⁴ for any a, since a = a_h·2³² + a_l).
+    #[inline(always)]
+    fn mul_low_by_high(self, a: Self::V, _a_high: Self::V, b_high: Self::V) -> Self::V {
+        self.mul_low(a, b_high)
+    }
+
     /// The checked `*` of values within [−2⁴⁶, 2⁴⁶): ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l +
     /// ⌊(a_l·b_l + 2³¹)/2³²⌋ ([module](self) documentation).
     #[inline(always)]
     fn mul(self, a: Self::V, b: Self::V) -> Self::V {
         let (ah, bh) = (self.high(a), self.high(b));
-        let upper = self.add(self.mul_low(a, bh), self.mul_low_halves(ah, b));
+        let upper = self.add(self.mul_low_by_high(a, ah, bh), self.mul_low_halves(ah, b));
         let low = self.high(self.mul_low_halves(a, b));
         self.add(upper, low)
     }
@@ -312,7 +321,7 @@ pub(crate) trait Wide: Copy {
                 self.mul_low_halves(a, self.high(b))
             } else {
                 let (ah, bh) = (self.high(a), self.high(b));
-                self.add(self.mul_low(a, bh), self.mul_low_halves(ah, b))
+                self.add(self.mul_low_by_high(a, ah, bh), self.mul_low_halves(ah, b))
             };
             whole = self.add(whole, self.add(upper, self.shift_down_32(ll)));
             remainders = self.add(remainders, self.and(ll, mask));
