@@ -57,6 +57,17 @@ pub(crate) fn kernels_present() -> bool {
     false
 }
 
+/// Whether this processor runs the rigid step's kernels written against [`wide::Wide`]
+/// (AVX-512 or AVX2; never off x86_64): for tests that check those kernels took their
+/// share of the cases they compare.
+#[cfg(test)]
+pub(crate) fn wide_kernels_present() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return wide::backend().is_some();
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
 /// Buffers the solver reuses from step to step. They hold no state between steps, only
 /// capacity.
 #[derive(Clone, Debug, Default)]
