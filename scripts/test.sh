@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The project's test command (README "Testing"): formatting, lints, every test in the test
+# The project's test command (README "Testing"): formatting, lints, the documentation (its
+# links checked), every test in the test
 # profile (debug arithmetic checks on) and again in release (each re-simulating every
 # committed replay; the release run leaves out the examples and the doc test), the
 # determinism matrix's i686 row, the lints for i686, and the fuzz smoke run (every seed and
@@ -10,6 +11,8 @@ cd "$(dirname "$0")/.."
 
 cargo fmt --all -- --check
 cargo clippy --all-targets --locked -- -D warnings
+# The developers' documentation, every intra-doc link resolved.
+RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps --document-private-items
 
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT

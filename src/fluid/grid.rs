@@ -10,7 +10,7 @@
 //! each cell in ascending point index (the counting sort is stable), so the order of the
 //! entries is the total order (cell, index), the same on every machine.
 //! [`CellGrid::locate`] finds the points' cells without sorting them, for the substeps that
-//! reuse their candidate lists ([`skin`](super::skin)) and need only the order.
+//! reuse their candidate lists ([`skin`](super::neighbours::skin)) and need only the order.
 
 use crate::math::{Real, Vec3};
 

@@ -6,7 +6,7 @@
 //! - [`FixstepConfig`]: save and load are world snapshots, restored exactly;
 //! - [`checksum128`]: the world checksum with a digest byte per part, for GGRS to compare.
 //!
-//! [`sync_test`] runs GGRS's determinism test on a scene; [`run_peer`] runs one peer of a
+//! [`sync_test`](fn@sync_test) runs GGRS's determinism test on a scene; [`run_peer`] runs one peer of a
 //! networked session (`fixstep peer`).
 
 mod bot;

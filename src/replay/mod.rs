@@ -1,7 +1,7 @@
 //! Replays: record a run, write it to a file, read it back and verify it bit for bit.
 //!
 //! A replay file holds a scene, the inputs fed to it and the world checksums at regular
-//! checkpoints (layout in [`format`]). [`verify`] simulates the scene and inputs again and
+//! checkpoints (layout in [`format`](mod@format)). [`verify`](fn@verify) simulates the scene and inputs again and
 //! compares every checkpoint; [`rerecord`] records them again after a deliberate change to
 //! the engine.
 

@@ -13,7 +13,7 @@
 //! f(ω) = I (ω − ω₀) + h ω̄ × (I ω̄) = 0, ω̄ = (ω + ω₀)/2,
 //!
 //! solved by [`NEWTON_ITERATIONS`] Newton iterations from ω₀, each
-//! ω ← ω − J⁻¹ f(ω) with J = I + (h/2) ([ω̄]ₓ I − [I ω̄]ₓ), [v]ₓ the cross-product matrix.
+//! ω ← ω − J⁻¹ f(ω) with J = I + (h/2) (\[ω̄\]ₓ I − \[I ω̄\]ₓ), \[v\]ₓ the cross-product matrix.
 //! A fixed iteration count keeps the cost and the bits the same everywhere. Units: ω in
 //! rad/s, I in kg·m², h in s.
 

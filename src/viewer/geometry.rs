@@ -54,7 +54,7 @@ pub struct Pose {
 
 impl Pose {
     /// The pose of a unit quaternion (w, x, y, z) and a position, by the usual
-    /// quaternion-to-matrix formula R = I + 2w[v]ₓ + 2[v]ₓ².
+    /// quaternion-to-matrix formula R = I + 2w\[v\]ₓ + 2\[v\]ₓ².
     pub fn from_quaternion(q: [f64; 4], origin: P3) -> Self {
         let [w, x, y, z] = q;
         let axes = [

@@ -139,7 +139,7 @@ fn draw_in_parallel(
 
 /// Writes `bytes` to a temporary file beside `path` and renames it over `path`, so readers
 /// see the old file or the new one, never a part. Unlike
-/// [`write_atomic`](crate::replay::write_atomic) it does not sync each file to disk: a
+/// [`write_atomic`] it does not sync each file to disk: a
 /// render writes hundreds of frames, and syncing each would take most of the time.
 fn write_replacing(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let mut name = path.as_os_str().to_owned();

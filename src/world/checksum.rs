@@ -1,7 +1,7 @@
 //! Checksums of canonical state.
 //!
 //! Each part of the state is hashed on its own with XXH3-64 over little-endian bytes (see
-//! [`StateHasher`]), giving one sub-checksum per subsystem, so that a desync report can name
+//! [`StateHasher`](crate::math::state_hash::StateHasher)), giving one sub-checksum per subsystem, so that a desync report can name
 //! the part that diverged. The world checksum hashes, in this order: the engine state
 //! version (`u32`), then each present part as its one-byte [`Part`] code followed by its
 //! sub-checksum (`u64`). Absent subsystems contribute nothing.

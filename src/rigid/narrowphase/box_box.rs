@@ -248,7 +248,7 @@ fn face_contact<R: Real>(
 }
 
 /// The index of the box edge along axis `k` on the side (s_k1, s_k2) of the other two
-/// axes: 4k + [s_k1 > 0] + 2 [s_k2 > 0], 0–11.
+/// axes: 4k + \[s_k1 > 0\] + 2 \[s_k2 > 0\], 0–11.
 #[inline]
 fn edge_index<R: Real>(k: usize, sides: [R; 3]) -> u32 {
     let (k1, k2) = ((k + 1) % 3, (k + 2) % 3);

@@ -100,13 +100,13 @@ impl<R: Real> Polygon<R> {
         polygon
     }
 
-    /// The part of the polygon where x[axis] ≤ `limit` (`upper`) or −x[axis] ≤ `limit` (not
+    /// The part of the polygon where x\[axis\] ≤ `limit` (`upper`) or −x\[axis\] ≤ `limit` (not
     /// `upper`), the side plane being line `line`, with vertices up to `slack` (m) beyond
     /// the plane kept as they are. When every vertex is kept, that part is the polygon
     /// itself: `out` is left alone and the result is `false`. Otherwise it is written to
     /// `out` and the result is `true`.
     ///
-    /// Sutherland–Hodgman with signed distances d = limit ∓ x[axis]: walking the
+    /// Sutherland–Hodgman with signed distances d = limit ∓ x\[axis\]: walking the
     /// edges S → E, a vertex is kept when d ≥ −slack, and where an edge goes from d > 0 to
     /// d < −slack, or back, the point S + (E − S)·d_S/(d_S − d_E) on the plane is added,
     /// its coordinate along `axis` set exactly to the plane's. A kept vertex within the
@@ -200,7 +200,7 @@ impl<R: Real> Polygon<R> {
     }
 }
 
-/// The point where edge S → E crosses the plane x[axis] = `at`, with d_S and d_E of
+/// The point where edge S → E crosses the plane x\[axis\] = `at`, with d_S and d_E of
 /// opposite signs: S + (E − S)·d_S/(d_S − d_E). Entering (S outside), the new vertex's
 /// outgoing edge continues along S's edge; leaving, it runs along the plane `line`.
 #[allow(clippy::too_many_arguments)]

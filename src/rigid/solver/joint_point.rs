@@ -9,7 +9,7 @@
 //! ```
 //!
 //! and the 3 × 3 effective mass is K⁻¹ with
-//! K = (1/m_a + 1/m_b) 𝟙 − [r_a]ₓ I_a⁻¹ [r_a]ₓ − [r_b]ₓ I_b⁻¹ [r_b]ₓ (1/kg), computed once per
+//! K = (1/m_a + 1/m_b) 𝟙 − \[r_a\]ₓ I_a⁻¹ \[r_a\]ₓ − \[r_b\]ₓ I_b⁻¹ \[r_b\]ₓ (1/kg), computed once per
 //! step at the step's start. An impulse λ (N·s, a vector) changes the velocities by
 //! v_a −= λ/m_a, ω_a −= I_a⁻¹(r_a × λ), v_b += λ/m_b, ω_b += I_b⁻¹(r_b × λ).
 

@@ -26,7 +26,7 @@
 //! The digits cost about 32 steps for values near one. When no value exceeds 1 (2³² raw),
 //! as for the twist arms and tangent lengths of contacts between boxes up to about a
 //! metre across, the roots come instead from Newton's method on integers
-//! ([`lanes_below_one`](crate::math::sqrt::lanes_below_one), which needs AVX-512CD for its
+//! ([`lanes_below_one`], which needs AVX-512CD for its
 //! leading-zero counts), with 1 → 1 set apart (that form takes x < 2³²): the same
 //! correctly rounded integers, about a fifth of the work.
 

@@ -1,6 +1,6 @@
 //! Two preparation kernels of a block of I32F32 constraints in AVX-512 (F and DQ), any
-//! block, independent or not: the tangents ([`tangents`]) and the twist arms
-//! ([`twist_arms`]), each with the bits of its scalar form (they need the AVX-512 square
+//! block, independent or not: the tangents ([`tangents`](fn@tangents)) and the twist arms
+//! ([`twist_arms`](fn@twist_arms)), each with the bits of its scalar form (they need the AVX-512 square
 //! root, which has no AVX2 form yet). The products of the anchors and inertias are in
 //! [`prepare_kernel`](super::prepare_kernel), the solve and warm-start passes in
 //! [`kernel`](super::kernel), both for AVX-512 and AVX2.

@@ -78,7 +78,7 @@ unsafe fn unit_tangents(block: &mut ContactBlock<Fx>) -> bool {
     true
 }
 
-/// a × b with each product rounded on its own, as [`Vec3::cross`].
+/// a × b with each product rounded on its own, as [`Vec3::cross`](crate::math::Vec3::cross).
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
 fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
@@ -89,7 +89,7 @@ fn cross(a: [__m512i; 3], b: [__m512i; 3]) -> [__m512i; 3] {
     ]
 }
 
-/// a·b with each product rounded on its own, as [`Vec3::dot`].
+/// a·b with each product rounded on its own, as [`Vec3::dot`](crate::math::Vec3::dot).
 #[inline]
 #[target_feature(enable = "avx512f,avx512dq")]
 fn dot(a: [__m512i; 3], b: [__m512i; 3]) -> __m512i {
