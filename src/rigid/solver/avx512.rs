@@ -1,8 +1,10 @@
-//! Exact I32F32 arithmetic on eight `i64` lanes in AVX-512 (F and DQ), shared by the
-//! solver's preparation kernels and the narrowphase's box–box kernel: loads and stores of
-//! lane arrays, sums, the checked `*` of values within the bound [−2⁴⁶, 2⁴⁶), and the
-//! bound check itself. (The solve and warm-start kernels use the same arithmetic through
-//! [`Wide`](super::wide::Wide), whose documentation derives the products.)
+//! Exact I32F32 arithmetic on eight `i64` lanes in AVX-512 (F and DQ), for the kernels that
+//! have no AVX2 form yet: the tangents and twist arms of constraint preparation (with the
+//! square roots of [`sqrt`]) and the box–box face points' world transform. Loads and
+//! stores of lane arrays, sums, the checked `*` of values within the bound [−2⁴⁶, 2⁴⁶),
+//! and the bound check itself. (The other kernels use the same arithmetic through
+//! [`Wide`](super::wide::Wide), whose documentation derives the products, with AVX-512 or
+//! AVX2.)
 //!
 //! Values within the bound have products below 2⁶⁰ after rounding and sums of a few of
 //! them stay below 2⁶³, so these wrapping operations give exactly what the checked scalar
