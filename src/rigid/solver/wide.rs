@@ -282,6 +282,28 @@ pub(crate) trait Wide: Copy {
         self.add(upper, low)
     }
 
+    /// a·b with each product rounded on its own, as [`Vec3::dot`](crate::math::Vec3::dot)
+    /// rounds it: (a₀b₀ + a₁b₁) + a₂b₂, for values within [−2⁴⁶, 2⁴⁶) ([`mul`](Self::mul)).
+    /// ([`dot`](Self::dot) rounds the sum once instead.)
+    #[inline(always)]
+    fn rounded_dot(self, a: [Self::V; 3], b: [Self::V; 3]) -> Self::V {
+        self.add(
+            self.add(self.mul(a[0], b[0]), self.mul(a[1], b[1])),
+            self.mul(a[2], b[2]),
+        )
+    }
+
+    /// a × b with each product rounded on its own, as
+    /// [`Vec3::cross`](crate::math::Vec3::cross) rounds it, for values within [−2⁴⁶, 2⁴⁶).
+    #[inline(always)]
+    fn cross(self, a: [Self::V; 3], b: [Self::V; 3]) -> [Self::V; 3] {
+        [
+            self.sub(self.mul(a[1], b[2]), self.mul(a[2], b[1])),
+            self.sub(self.mul(a[2], b[0]), self.mul(a[0], b[2])),
+            self.sub(self.mul(a[0], b[1]), self.mul(a[1], b[0])),
+        ]
+    }
+
     /// The checked `*` of `small`, within [−2³¹, 2³¹) when `NARROW` (and within
     /// [−2⁴⁶, 2⁴⁶) otherwise), and `other`, within [−2⁴⁶, 2⁴⁶): when narrow,
     /// ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋, two products of 32-bit halves

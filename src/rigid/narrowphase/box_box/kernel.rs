@@ -148,16 +148,6 @@ kernel_entry! {
     fn test_on(words: &[[i64; LANES]; WORDS], margin: Fx) -> Block = test_block;
 }
 
-/// The scalar [`Vec3::dot`](crate::math::Vec3::dot): x₀y₀ + x₁y₁ + x₂y₂, each product
-/// rounded.
-#[inline(always)]
-fn dot<W: Wide>(w: W, x: [W::V; 3], y: [W::V; 3]) -> W::V {
-    w.add(
-        w.add(w.mul(x[0], y[0]), w.mul(x[1], y[1])),
-        w.mul(x[2], y[2]),
-    )
-}
-
 /// The lanes where `greater` holds between two signed quantities p and q known through
 /// their signs (`p_nonneg`, `q_nonneg`) and, when the signs agree, a comparison of
 /// magnitudes that is reversed for two negatives: true when p ≥ 0 > q, false when
@@ -206,13 +196,17 @@ fn test_block<W: Wide>(w: W, words: &[[i64; LANES]; WORDS], margin: Fx) -> Block
     }
     let d = w.sub3(cb, ca);
     unchecked |= w.out_of_bound3(d);
-    let t = [dot(w, a[0], d), dot(w, a[1], d), dot(w, a[2], d)];
+    let t = [
+        w.rounded_dot(a[0], d),
+        w.rounded_dot(a[1], d),
+        w.rounded_dot(a[2], d),
+    ];
     unchecked |= w.out_of_bound3(t);
     let mut c = [[zero; 3]; 3];
     let mut abs = [[zero; 3]; 3];
     for i in 0..3 {
         for j in 0..3 {
-            c[i][j] = dot(w, a[i], b[j]);
+            c[i][j] = w.rounded_dot(a[i], b[j]);
             abs[i][j] = w.abs(c[i][j]);
         }
         unchecked |= w.out_of_bound3(c[i]);

@@ -199,8 +199,8 @@ pub(super) fn prepare_block<W: Wide>(
         }
         let r_a = w.load3(&arms.r_a[p]);
         let r_b = w.load3(&arms.r_b[p]);
-        let rn_a = cross(w, r_a, normal);
-        let rn_b = cross(w, r_b, normal);
+        let rn_a = w.cross(r_a, normal);
+        let rn_b = w.cross(r_b, normal);
         let in_a = mat_vec(w, inertia_a, rn_a);
         let in_b = mat_vec(w, inertia_b, rn_b);
         let mut bad = w.out_of_bound3(r_a)
@@ -209,10 +209,13 @@ pub(super) fn prepare_block<W: Wide>(
             | w.out_of_bound3(rn_b)
             | w.out_of_bound3(in_a)
             | w.out_of_bound3(in_b);
-        let k = w.add(w.add(m_sum, dot(w, in_a, rn_a)), dot(w, in_b, rn_b));
-        let approach = w.add(dot(w, dv, normal), dot(w, w_b, rn_b));
+        let k = w.add(
+            w.add(m_sum, w.rounded_dot(in_a, rn_a)),
+            w.rounded_dot(in_b, rn_b),
+        );
+        let approach = w.add(w.rounded_dot(dv, normal), w.rounded_dot(w_b, rn_b));
         bad |= w.out_of_bound(approach);
-        let approach = w.sub(approach, dot(w, w_a, rn_a));
+        let approach = w.sub(approach, w.rounded_dot(w_a, rn_a));
         if bad & in_use != 0 {
             return false;
         }
@@ -232,15 +235,18 @@ pub(super) fn prepare_block<W: Wide>(
     // to the scalar form, which overwrites it), so that no row holds registers after.
     let f = &mut block.friction_rows;
     for (j, &tangent) in tangents.iter().enumerate() {
-        let rt_a = cross(w, r_a, tangent);
-        let rt_b = cross(w, r_b, tangent);
+        let rt_a = w.cross(r_a, tangent);
+        let rt_b = w.cross(r_b, tangent);
         let it_a = mat_vec(w, inertia_a, rt_a);
         let it_b = mat_vec(w, inertia_b, rt_b);
         bad |= w.out_of_bound3(rt_a)
             | w.out_of_bound3(rt_b)
             | w.out_of_bound3(it_a)
             | w.out_of_bound3(it_b);
-        let kt = w.add(w.add(m_sum, dot(w, it_a, rt_a)), dot(w, it_b, rt_b));
+        let kt = w.add(
+            w.add(m_sum, w.rounded_dot(it_a, rt_a)),
+            w.rounded_dot(it_b, rt_b),
+        );
         store3(w, &mut f.rt_a[j], active, rt_a);
         store3(w, &mut f.rt_b[j], active, rt_b);
         store3(w, &mut f.it_a[j], active, it_a);
@@ -250,55 +256,43 @@ pub(super) fn prepare_block<W: Wide>(
     let twist_a = mat_vec(w, inertia_a, normal);
     let twist_b = mat_vec(w, inertia_b, normal);
     bad |= w.out_of_bound3(twist_a) | w.out_of_bound3(twist_b);
-    let k_twist = w.add(dot(w, twist_a, normal), dot(w, twist_b, normal));
+    let k_twist = w.add(
+        w.rounded_dot(twist_a, normal),
+        w.rounded_dot(twist_b, normal),
+    );
     if bad & active != 0 {
         return false;
     }
     store3(w, &mut f.twist_a, active, twist_a);
     store3(w, &mut f.twist_b, active, twist_b);
     w.store_lanes(&mut f.twist_mass, active, k_twist);
-    store3(w, &mut block.normal_a, active, mul3(w, normal, inv_mass_a));
-    store3(w, &mut block.normal_b, active, mul3(w, normal, inv_mass_b));
+    store3(
+        w,
+        &mut block.normal_a,
+        active,
+        w.times3::<false>(normal, inv_mass_a),
+    );
+    store3(
+        w,
+        &mut block.normal_b,
+        active,
+        w.times3::<false>(normal, inv_mass_b),
+    );
     for (j, tangent) in tangents.into_iter().enumerate() {
         store3(
             w,
             &mut block.tangents_a[j],
             active,
-            mul3(w, tangent, inv_mass_a),
+            w.times3::<false>(tangent, inv_mass_a),
         );
         store3(
             w,
             &mut block.tangents_b[j],
             active,
-            mul3(w, tangent, inv_mass_b),
+            w.times3::<false>(tangent, inv_mass_b),
         );
     }
     true
-}
-
-/// a × b with each product rounded on its own, as [`Vec3::cross`].
-#[inline(always)]
-fn cross<W: Wide>(w: W, a: [W::V; 3], b: [W::V; 3]) -> [W::V; 3] {
-    [
-        w.sub(w.mul(a[1], b[2]), w.mul(a[2], b[1])),
-        w.sub(w.mul(a[2], b[0]), w.mul(a[0], b[2])),
-        w.sub(w.mul(a[0], b[1]), w.mul(a[1], b[0])),
-    ]
-}
-
-/// a·b with each product rounded on its own, as [`Vec3::dot`].
-#[inline(always)]
-fn dot<W: Wide>(w: W, a: [W::V; 3], b: [W::V; 3]) -> W::V {
-    w.add(
-        w.add(w.mul(a[0], b[0]), w.mul(a[1], b[1])),
-        w.mul(a[2], b[2]),
-    )
-}
-
-/// Each component times the same factor, as `Vec3 * R`.
-#[inline(always)]
-fn mul3<W: Wide>(w: W, a: [W::V; 3], b: W::V) -> [W::V; 3] {
-    [w.mul(a[0], b), w.mul(a[1], b), w.mul(a[2], b)]
 }
 
 /// M v for M given by columns, as `Mat3 * Vec3`: row i is Σⱼ Mᵢⱼvⱼ.

@@ -134,23 +134,12 @@ fn integrate_block<W: Wide>(
 
     let half_h = w.splat((h * Fx::HALF).to_bits());
     let [qw, u @ ..] = q;
-    let a = [
-        w.mul(omega[0], half_h),
-        w.mul(omega[1], half_h),
-        w.mul(omega[2], half_h),
-    ];
+    let a = w.times3::<false>(omega, half_h);
     let mut bad =
         w.out_of_bound(half_h) | w.out_of_bound3(omega) | out_of_bound4(w, &q) | w.out_of_bound3(a);
     // q' = (w − a·u, u + a w + a × u), each product rounded on its own.
-    let a_dot_u = w.add(
-        w.add(w.mul(a[0], u[0]), w.mul(a[1], u[1])),
-        w.mul(a[2], u[2]),
-    );
-    let cross = [
-        w.sub(w.mul(a[1], u[2]), w.mul(a[2], u[1])),
-        w.sub(w.mul(a[2], u[0]), w.mul(a[0], u[2])),
-        w.sub(w.mul(a[0], u[1]), w.mul(a[1], u[0])),
-    ];
+    let a_dot_u = w.rounded_dot(a, u);
+    let cross = w.cross(a, u);
     let turned = [
         w.sub(qw, a_dot_u),
         w.add(u[0], w.add(w.mul(a[0], qw), cross[0])),
