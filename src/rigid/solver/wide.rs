@@ -144,8 +144,11 @@ pub(crate) trait Wide: Copy {
     fn abs(self, a: Self::V) -> Self::V;
     /// The signed low 32 bits of a times those of b, in 64 bits.
     fn mul_low_halves(self, a: Self::V, b: Self::V) -> Self::V;
-    /// The low 64 bits of a·b.
-    fn mul_low(self, a: Self::V, b: Self::V) -> Self::V;
+    /// The low 64 bits of a·b_h, given a's high half a_h = [`high`](Self::high)`(a)` and
+    /// b_h, both within [−2³¹, 2³¹): a 64-bit multiply where the backend has one, else
+    /// a·b_h = a_h·b_h·2³² + a_l·b_h, two products of 32-bit halves (exact modulo 2⁶⁴ for
+    /// any a, since a = a_h·2³² + a_l).
+    fn mul_low_by_high(self, a: Self::V, a_high: Self::V, b_high: Self::V) -> Self::V;
     /// ⌊a/2³²⌋.
     fn shift_down_32(self, a: Self::V) -> Self::V;
     /// The lanes where a > b, signed.
@@ -261,15 +264,6 @@ pub(crate) trait Wide: Copy {
     #[inline(always)]
     fn high(self, a: Self::V) -> Self::V {
         self.shift_down_32(self.add(a, self.splat(1 << 31)))
-    }
-
-    /// The low 64 bits of a·b_h, given a's high half a_h = [`high`](Self::high)`(a)` and b_h,
-    /// both within [−2³¹, 2³¹): [`mul_low`](Self::mul_low) by default. A backend without a
-    /// 64-bit multiply takes a·b_h = a_h·b_h·2³² + a_l·b_h, two products of 32-bit halves
-    /// (exact modulo 2⁶⁴ for any a, since a = a_h·2³² + a_l).
-    #[inline(always)]
-    fn mul_low_by_high(self, a: Self::V, _a_high: Self::V, b_high: Self::V) -> Self::V {
-        self.mul_low(a, b_high)
     }
 
     /// The checked `*` of values within [−2⁴⁶, 2⁴⁶): ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + a_h·b_l +

@@ -2,10 +2,8 @@
 //! masks built from the sign bits of comparison results. AVX2 lacks several 64-bit
 //! operations that AVX-512 has, so some take a few instructions:
 //!
-//! * the low 64 bits of a 64 × 64 product: a_l·b_l + ((a_h·b_l + a_l·b_h) mod 2³²)·2³², from
-//!   three unsigned 32 × 32-bit products (`_mm256_mul_epu32`); where the checked `*` needs
-//!   it, a·b_h with b_h a high half, two signed products of halves do
-//!   ([`Wide::mul_low_by_high`]);
+//! * the one 64-bit product the checked `*` needs, a·b_h with b_h a high half: two signed
+//!   products of 32-bit halves, a_h·b_h·2³² + a_l·b_h ([`Wide::mul_low_by_high`]);
 //! * the arithmetic shift right by 32: the high half moved down (a logical shift), with
 //!   the sign of the high half (an arithmetic shift of the 32-bit elements) above it;
 //! * the signed maximum and minimum: a comparison and a blend;
@@ -21,9 +19,9 @@
 use core::arch::x86_64::{
     __m256i, _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8,
     _mm256_castsi256_pd, _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_loadu_si256,
-    _mm256_mask_i64gather_epi64, _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32,
-    _mm256_set_epi64x, _mm256_set1_epi64x, _mm256_setzero_si256, _mm256_slli_epi64,
-    _mm256_srai_epi32, _mm256_srli_epi64, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
+    _mm256_mask_i64gather_epi64, _mm256_movemask_pd, _mm256_mul_epi32, _mm256_set_epi64x,
+    _mm256_set1_epi64x, _mm256_setzero_si256, _mm256_slli_epi64, _mm256_srai_epi32,
+    _mm256_srli_epi64, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
 };
 
 use super::Wide;
@@ -169,20 +167,9 @@ impl Wide for Avx2 {
         halves!(a, b, |a, b| unsafe { _mm256_mul_epi32(a, b) })
     }
 
-    #[inline(always)]
-    fn mul_low(self, a: Self::V, b: Self::V) -> Self::V {
-        halves!(a, b, |a, b| unsafe {
-            let low = _mm256_mul_epu32(a, b);
-            let cross = _mm256_add_epi64(
-                _mm256_mul_epu32(_mm256_srli_epi64::<32>(a), b),
-                _mm256_mul_epu32(a, _mm256_srli_epi64::<32>(b)),
-            );
-            _mm256_add_epi64(low, _mm256_slli_epi64::<32>(cross))
-        })
-    }
-
-    /// a_h·b_h·2³² + a_l·b_h: two signed products of halves, a shift and a sum, where
-    /// [`mul_low`](Wide::mul_low) takes three products and five other instructions.
+    /// a_h·b_h·2³² + a_l·b_h: two signed products of halves, a shift and a sum (AVX2 has
+    /// no 64-bit multiply; building one takes three products and five other
+    /// instructions).
     #[inline(always)]
     fn mul_low_by_high(self, a: Self::V, a_high: Self::V, b_high: Self::V) -> Self::V {
         let high = self.mul_low_halves(a_high, b_high);

@@ -137,9 +137,10 @@ impl Wide for Avx512 {
         unsafe { _mm512_mul_epi32(a, b) }
     }
 
+    /// `vpmullq` (AVX-512DQ): one instruction, a_high unused.
     #[inline(always)]
-    fn mul_low(self, a: __m512i, b: __m512i) -> __m512i {
-        unsafe { _mm512_mullo_epi64(a, b) }
+    fn mul_low_by_high(self, a: __m512i, _a_high: __m512i, b_high: __m512i) -> __m512i {
+        unsafe { _mm512_mullo_epi64(a, b_high) }
     }
 
     #[inline(always)]
