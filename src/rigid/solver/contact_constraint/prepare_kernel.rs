@@ -129,12 +129,7 @@ unsafe fn vector<W: Wide>(
 /// # Safety
 /// As for [`field`], with `words` the first words of the bodies.
 #[inline(always)]
-unsafe fn inertia<W: Wide>(
-    w: W,
-    bodies: &[SolverBody<Fx>],
-    words: W::V,
-    active: u8,
-) -> [[W::V; 3]; 3] {
+unsafe fn inertia<W: Wide>(w: W, bodies: &[SolverBody<Fx>], words: W::V, active: u8) -> Columns<W> {
     // SAFETY: the caller's promise; the inertia lies inside the body (checked above).
     unsafe {
         [
@@ -199,20 +194,9 @@ pub(super) fn prepare_block<W: Wide>(
         }
         let r_a = w.load3(&arms.r_a[p]);
         let r_b = w.load3(&arms.r_b[p]);
-        let rn_a = w.cross(r_a, normal);
-        let rn_b = w.cross(r_b, normal);
-        let in_a = mat_vec(w, inertia_a, rn_a);
-        let in_b = mat_vec(w, inertia_b, rn_b);
-        let mut bad = w.out_of_bound3(r_a)
-            | w.out_of_bound3(r_b)
-            | w.out_of_bound3(rn_a)
-            | w.out_of_bound3(rn_b)
-            | w.out_of_bound3(in_a)
-            | w.out_of_bound3(in_b);
-        let k = w.add(
-            w.add(m_sum, w.rounded_dot(in_a, rn_a)),
-            w.rounded_dot(in_b, rn_b),
-        );
+        let row = Row::along(w, (r_a, r_b), normal, (inertia_a, inertia_b), m_sum);
+        let (rn_a, rn_b) = row.arms;
+        let mut bad = w.out_of_bound3(r_a) | w.out_of_bound3(r_b) | row.bad;
         let approach = w.add(w.rounded_dot(dv, normal), w.rounded_dot(w_b, rn_b));
         bad |= w.out_of_bound(approach);
         let approach = w.sub(approach, w.rounded_dot(w_a, rn_a));
@@ -221,9 +205,9 @@ pub(super) fn prepare_block<W: Wide>(
         }
         store3(w, &mut cp.rn_a, in_use, rn_a);
         store3(w, &mut cp.rn_b, in_use, rn_b);
-        store3(w, &mut cp.in_a, in_use, in_a);
-        store3(w, &mut cp.in_b, in_use, in_b);
-        w.store_lanes(&mut cp.normal_mass, in_use, k);
+        store3(w, &mut cp.in_a, in_use, row.turns.0);
+        store3(w, &mut cp.in_b, in_use, row.turns.1);
+        w.store_lanes(&mut cp.normal_mass, in_use, row.k);
         w.store_lanes(&mut cp.relative_velocity, in_use, approach);
     }
 
@@ -235,23 +219,13 @@ pub(super) fn prepare_block<W: Wide>(
     // to the scalar form, which overwrites it), so that no row holds registers after.
     let f = &mut block.friction_rows;
     for (j, &tangent) in tangents.iter().enumerate() {
-        let rt_a = w.cross(r_a, tangent);
-        let rt_b = w.cross(r_b, tangent);
-        let it_a = mat_vec(w, inertia_a, rt_a);
-        let it_b = mat_vec(w, inertia_b, rt_b);
-        bad |= w.out_of_bound3(rt_a)
-            | w.out_of_bound3(rt_b)
-            | w.out_of_bound3(it_a)
-            | w.out_of_bound3(it_b);
-        let kt = w.add(
-            w.add(m_sum, w.rounded_dot(it_a, rt_a)),
-            w.rounded_dot(it_b, rt_b),
-        );
-        store3(w, &mut f.rt_a[j], active, rt_a);
-        store3(w, &mut f.rt_b[j], active, rt_b);
-        store3(w, &mut f.it_a[j], active, it_a);
-        store3(w, &mut f.it_b[j], active, it_b);
-        w.store_lanes(&mut f.tangent_mass[j], active, kt);
+        let row = Row::along(w, (r_a, r_b), tangent, (inertia_a, inertia_b), m_sum);
+        bad |= row.bad;
+        store3(w, &mut f.rt_a[j], active, row.arms.0);
+        store3(w, &mut f.rt_b[j], active, row.arms.1);
+        store3(w, &mut f.it_a[j], active, row.turns.0);
+        store3(w, &mut f.it_b[j], active, row.turns.1);
+        w.store_lanes(&mut f.tangent_mass[j], active, row.k);
     }
     let twist_a = mat_vec(w, inertia_a, normal);
     let twist_b = mat_vec(w, inertia_b, normal);
@@ -295,9 +269,54 @@ pub(super) fn prepare_block<W: Wide>(
     true
 }
 
+/// A 3 × 3 matrix in lanes, by columns.
+type Columns<W> = [[<W as Wide>::V; 3]; 3];
+
+/// The products of a constraint row along a unit direction d at anchors r_a and r_b (m):
+/// the arms r × d (m) and I⁻¹(r × d) (1/(kg·m)) on each side, and
+/// k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × d))·(r_a × d) + (I_b⁻¹(r_b × d))·(r_b × d) (1/kg), each
+/// product rounded as the scalar form rounds it.
+struct Row<W: Wide> {
+    arms: ([W::V; 3], [W::V; 3]),
+    turns: ([W::V; 3], [W::V; 3]),
+    k: W::V,
+    /// The lanes where an arm or a turn leaves the checked bound (k is then not exact).
+    bad: u8,
+}
+
+impl<W: Wide> Row<W> {
+    /// The row along `direction`, with the bodies' inverse inertias (by columns) and
+    /// m_sum = 1/m_a + 1/m_b.
+    #[inline(always)]
+    fn along(
+        w: W,
+        (r_a, r_b): ([W::V; 3], [W::V; 3]),
+        direction: [W::V; 3],
+        (inertia_a, inertia_b): (Columns<W>, Columns<W>),
+        m_sum: W::V,
+    ) -> Self {
+        let arms = (w.cross(r_a, direction), w.cross(r_b, direction));
+        let turns = (mat_vec(w, inertia_a, arms.0), mat_vec(w, inertia_b, arms.1));
+        let bad = w.out_of_bound3(arms.0)
+            | w.out_of_bound3(arms.1)
+            | w.out_of_bound3(turns.0)
+            | w.out_of_bound3(turns.1);
+        let k = w.add(
+            w.add(m_sum, w.rounded_dot(turns.0, arms.0)),
+            w.rounded_dot(turns.1, arms.1),
+        );
+        Self {
+            arms,
+            turns,
+            k,
+            bad,
+        }
+    }
+}
+
 /// M v for M given by columns, as `Mat3 * Vec3`: row i is Σⱼ Mᵢⱼvⱼ.
 #[inline(always)]
-fn mat_vec<W: Wide>(w: W, columns: [[W::V; 3]; 3], v: [W::V; 3]) -> [W::V; 3] {
+fn mat_vec<W: Wide>(w: W, columns: Columns<W>, v: [W::V; 3]) -> [W::V; 3] {
     let mut rows = [w.zero(); 3];
     for (i, row) in rows.iter_mut().enumerate() {
         *row = w.add(
@@ -310,7 +329,7 @@ fn mat_vec<W: Wide>(w: W, columns: [[W::V; 3]; 3], v: [W::V; 3]) -> [W::V; 3] {
 
 /// The lanes where an element of the matrix lies outside the checked bound.
 #[inline(always)]
-fn out_of_bound_matrix<W: Wide>(w: W, columns: [[W::V; 3]; 3]) -> u8 {
+fn out_of_bound_matrix<W: Wide>(w: W, columns: Columns<W>) -> u8 {
     w.out_of_bound3(columns[0]) | w.out_of_bound3(columns[1]) | w.out_of_bound3(columns[2])
 }
 
