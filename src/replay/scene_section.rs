@@ -12,7 +12,11 @@
 //!
 //! A fluid is written as format 3 wrote it ([`FluidFields`]: every field of [`FluidDesc`]
 //! but the CFL number); a fluid whose substeps adapt adds [`Addition::FluidCfl`] with its
-//! CFL number, which is never 0 and never without a fluid.
+//! CFL number, which is never 0 and never without a fluid. Likewise rigid bodies are
+//! written as state version 4 wrote them ([`RigidFields`]: every solver setting but the
+//! contact recycle distance), and a scene that recycles contacts adds
+//! [`Addition::RigidRecycle`] with its distance, which is never 0 and never without rigid
+//! bodies: a file written before recycling existed reads as a scene without it.
 
 use serde::{Deserialize, Serialize};
 
@@ -20,7 +24,7 @@ use crate::codec::{self, CodecError};
 use crate::fluid::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
-use crate::rigid::{JointsDesc, RigidDesc};
+use crate::rigid::{BodyDesc, JointsDesc, RigidDesc, SolverSettings};
 use crate::scene::Scene;
 use crate::soft::SoftDesc;
 use crate::world::TickInput;
@@ -60,12 +64,15 @@ struct Base<R: Real> {
 #[derive(Serialize, Deserialize)]
 #[serde(bound = "")]
 enum Addition<R: Real> {
-    Rigid(RigidDesc<R>),
+    Rigid(RigidFields<R>),
     Fluid(FluidFields<R>),
     Soft(SoftDesc<R>),
     Joints(JointsDesc<R>),
     /// The fluid's CFL number ([`FluidDesc::cfl`]), when not 0.
     FluidCfl(R),
+    /// The rigid bodies' contact recycle distance
+    /// ([`SolverSettings::contact_recycle_distance`]), when not 0.
+    RigidRecycle(R),
 }
 
 impl<R: Real> Addition<R> {
@@ -76,6 +83,7 @@ impl<R: Real> Addition<R> {
             Self::Soft(_) => 2,
             Self::Joints(_) => 3,
             Self::FluidCfl(_) => 4,
+            Self::RigidRecycle(_) => 5,
         }
     }
 }
@@ -136,6 +144,64 @@ impl<R: Real> FluidFields<R> {
     }
 }
 
+/// [`RigidDesc`]'s fields as state version 4 wrote them: the bodies, and every solver
+/// setting but the contact recycle distance, in [`SolverSettings`]' order.
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct RigidFields<R: Real> {
+    bodies: Vec<BodyDesc<R>>,
+    substeps: u32,
+    contact_hertz: R,
+    contact_damping_ratio: R,
+    max_push_velocity: R,
+    restitution_threshold: R,
+    speculative_distance: R,
+    sleeping: bool,
+    time_to_sleep: R,
+    linear_sleep_speed: R,
+    angular_sleep_speed: R,
+}
+
+impl<R: Real> RigidFields<R> {
+    /// The fields of `desc` but its contact recycle distance.
+    fn of(desc: &RigidDesc<R>) -> Self {
+        let s = &desc.solver;
+        Self {
+            bodies: desc.bodies.clone(),
+            substeps: s.substeps,
+            contact_hertz: s.contact_hertz,
+            contact_damping_ratio: s.contact_damping_ratio,
+            max_push_velocity: s.max_push_velocity,
+            restitution_threshold: s.restitution_threshold,
+            speculative_distance: s.speculative_distance,
+            sleeping: s.sleeping,
+            time_to_sleep: s.time_to_sleep,
+            linear_sleep_speed: s.linear_sleep_speed,
+            angular_sleep_speed: s.angular_sleep_speed,
+        }
+    }
+
+    /// The description without contact recycling (distance 0).
+    fn into_desc(self) -> RigidDesc<R> {
+        RigidDesc {
+            bodies: self.bodies,
+            solver: SolverSettings {
+                substeps: self.substeps,
+                contact_hertz: self.contact_hertz,
+                contact_damping_ratio: self.contact_damping_ratio,
+                max_push_velocity: self.max_push_velocity,
+                restitution_threshold: self.restitution_threshold,
+                speculative_distance: self.speculative_distance,
+                sleeping: self.sleeping,
+                time_to_sleep: self.time_to_sleep,
+                linear_sleep_speed: self.linear_sleep_speed,
+                angular_sleep_speed: self.angular_sleep_speed,
+                contact_recycle_distance: R::ZERO,
+            },
+        }
+    }
+}
+
 /// The scene section's bytes.
 pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     let mut bytes = codec::encode(&BaseRef {
@@ -151,7 +217,7 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     })?;
     let mut additions = Vec::new();
     if let Some(rigid) = &scene.rigid {
-        additions.push(Addition::Rigid(rigid.clone()));
+        additions.push(Addition::Rigid(RigidFields::of(rigid)));
     }
     if let Some(fluid) = &scene.fluid {
         additions.push(Addition::Fluid(FluidFields::of(fluid)));
@@ -164,6 +230,15 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     }
     if let Some(fluid) = scene.fluid.as_ref().filter(|f| f.cfl != Fx::ZERO) {
         additions.push(Addition::FluidCfl(fluid.cfl));
+    }
+    if let Some(rigid) = scene
+        .rigid
+        .as_ref()
+        .filter(|r| r.solver.contact_recycle_distance != Fx::ZERO)
+    {
+        additions.push(Addition::RigidRecycle(
+            rigid.solver.contact_recycle_distance,
+        ));
     }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
@@ -217,7 +292,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
     }
     for addition in additions {
         match addition {
-            Addition::Rigid(rigid) => scene.rigid = Some(rigid),
+            Addition::Rigid(rigid) => scene.rigid = Some(rigid.into_desc()),
             Addition::Fluid(fluid) => scene.fluid = Some(fluid.into_desc()),
             Addition::Soft(soft) => scene.soft = Some(soft),
             Addition::Joints(joints) => scene.joints = Some(joints),
@@ -230,6 +305,18 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                     return not_canonical("a fluid CFL number of 0 (written by leaving it out)");
                 }
                 fluid.cfl = cfl;
+            }
+            Addition::RigidRecycle(distance) => {
+                let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
+                let Some(rigid) = &mut scene.rigid else {
+                    return not_canonical("a contact recycle distance without rigid bodies");
+                };
+                if distance == Fx::ZERO {
+                    return not_canonical(
+                        "a contact recycle distance of 0 (written by leaving it out)",
+                    );
+                }
+                rigid.solver.contact_recycle_distance = distance;
             }
         }
     }
@@ -294,6 +381,45 @@ mod tests {
         // The adaptive scene adds one addition: its count, then the variant and the number.
         assert_eq!(adaptive.len(), fixed.len() + 4 + 8);
         assert_eq!(decode_scene(&fixed).expect("decodes"), scene);
+    }
+
+    #[test]
+    fn a_recycle_distance_survives_the_round_trip_and_none_is_zero() {
+        let mut scene = builtin_scene::<Fx>("stack").expect("a built-in scene");
+        let distance = scene
+            .rigid
+            .as_ref()
+            .expect("rigid bodies")
+            .solver
+            .contact_recycle_distance;
+        assert_ne!(distance, Fx::ZERO);
+        let recycling = encode_scene(&scene).expect("encodes");
+        assert_eq!(decode_scene(&recycling).expect("decodes"), scene);
+        // A section without the addition (as state version 4 wrote) reads as distance 0.
+        let rigid = RigidFields::of(scene.rigid.as_ref().expect("rigid bodies"));
+        let older = with_additions(&scene, &[Addition::Rigid(rigid)]);
+        assert_eq!(recycling.len(), older.len() + 4 + 8);
+        scene
+            .rigid
+            .as_mut()
+            .expect("rigid bodies")
+            .solver
+            .contact_recycle_distance = Fx::ZERO;
+        assert_eq!(decode_scene(&older).expect("decodes"), scene);
+        assert_eq!(encode_scene(&scene).expect("encodes"), older);
+    }
+
+    #[test]
+    fn a_recycle_distance_of_zero_or_without_rigid_bodies_is_refused() {
+        let scene = builtin_scene::<Fx>("stack").expect("a built-in scene");
+        let rigid = RigidFields::of(scene.rigid.as_ref().expect("rigid bodies"));
+        let zero = with_additions(
+            &scene,
+            &[Addition::Rigid(rigid), Addition::RigidRecycle(Fx::ZERO)],
+        );
+        assert!(rejection(&zero).contains("of 0"));
+        let alone = with_additions(&scene, &[Addition::RigidRecycle(Fx::ONE)]);
+        assert!(rejection(&alone).contains("without rigid bodies"));
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! Checking a scene's rigid-body description and compiling it into a [`RigidSystem`].
 
 use super::bodies::NewBody;
+use super::contact::NO_FRAME;
 use super::desc::{BodyDesc, BodyKind, MAX_BODIES, MAX_SOLVER_SUBSTEPS, RigidDesc, SolverSettings};
 use super::mass::MassProperties;
 use super::shape::{Part, Shape};
@@ -98,6 +99,12 @@ impl<R: Real> RigidSystem<R> {
             if usize::from(c.count) > super::MAX_MANIFOLD_POINTS {
                 return Err(SceneError::new(field, "more than 4 points"));
             }
+            if c.frame != NO_FRAME && c.frame as usize >= self.frames.len() {
+                return Err(SceneError::new(
+                    format!("{field}.frame"),
+                    format!("names recycling frame {} of {}", c.frame, self.frames.len()),
+                ));
+            }
             previous = Some(c.key);
         }
         self.validate_joints()
@@ -177,6 +184,7 @@ fn check_settings<R: Real>(s: &SolverSettings<R>) -> Result<(), SceneError> {
         ("time_to_sleep", s.time_to_sleep),
         ("linear_sleep_speed", s.linear_sleep_speed),
         ("angular_sleep_speed", s.angular_sleep_speed),
+        ("contact_recycle_distance", s.contact_recycle_distance),
     ] {
         SceneError::check_range(name, value, R::ZERO, limit, "")?;
     }

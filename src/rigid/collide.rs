@@ -8,10 +8,13 @@
 //!    (bodies piled on one spot), the step finds no new contacts and counts one saturation,
 //!    so the run warns instead of running out of memory.
 //!    Pairs of bodies joined by a joint that does not let them collide are dropped.
-//! 3. The narrowphase computes each pair's manifold (part by part for compounds); each
-//!    point takes the impulses of the point with the same feature id in last step's contact
-//!    of the same key. Box–box pairs have their separating-axis tests done up to
-//!    [`LANES`] at a time, with the same results as one by one.
+//! 3. A box or capsule pair that has moved less than the contact recycle distance relative
+//!    to its last narrowphase carries last step's contact with the bodies
+//!    ([`super::recycle`]). For every other pair the narrowphase computes its manifold
+//!    (part by part for compounds); each point takes the impulses of the point with the
+//!    same feature id in last step's contact of the same key. Box–box pairs have their
+//!    separating-axis tests done up to [`LANES`] at a time, with the same results as one by
+//!    one.
 //! 4. Contacts between two bodies that do not move (sleeping or static) are kept as they
 //!    are, impulses included, so a sleeping island wakes with its contacts warm.
 //!
@@ -24,6 +27,7 @@ use super::manifold::Manifold;
 use super::narrowphase::{
     BoxPair, box_box_contact, collide as collide_convex, separating_axes_batch,
 };
+use super::recycle::{PairFrame, PairPose, recyclable};
 use super::shape::Shape;
 use super::solver::LANES;
 use super::system::RigidSystem;
@@ -77,38 +81,93 @@ impl<R: Real> RigidSystem<R> {
                 .retain(|pair| filter.binary_search(pair).is_err());
         }
 
+        // Last step's lists are read while the new ones are filled, in the storage of the
+        // step before (no allocation once it has grown).
+        let mut contacts = core::mem::take(&mut scratch.spare_contacts);
+        let mut frames = core::mem::take(&mut scratch.spare_frames);
+        contacts.clear();
+        frames.clear();
         let old = core::mem::take(&mut self.contacts);
+        let old_frames = core::mem::take(&mut self.frames);
         let bodies = &self.bodies;
-        let mut contacts: Vec<Contact<R>> = old
-            .iter()
-            .filter(|c| {
-                let (a, b) = (c.key.body_a as usize, c.key.body_b as usize);
-                bodies.alive[a] && bodies.alive[b] && !bodies.is_moving(a) && !bodies.is_moving(b)
-            })
-            .copied()
-            .collect();
-        // Room for about as many contacts as last step, so that the list does not grow (and
-        // move) while the narrowphase fills it.
-        contacts.reserve(old.len().saturating_sub(contacts.len()));
-        let margin = self.settings.speculative_distance;
-        // The manifolds come in ascending key order (pairs sorted, parts in order), as do
-        // last step's contacts: the contacts before `cursor` have keys below every key to
-        // come, so finding a manifold's previous contact is a walk, not a search.
-        let mut cursor = 0;
-        let mut push = |key: ContactKey, manifold: &Manifold<R>| {
-            while old.get(cursor).is_some_and(|c| c.key < key) {
-                cursor += 1;
+        // A contact keeps its frame, which moves to the new list of frames.
+        let keep_frame = |frames: &mut Vec<PairFrame<R>>, mut contact: Contact<R>| {
+            if let Some(frame) = old_frames.get(contact.frame as usize) {
+                contact.frame = frames.len() as u32;
+                frames.push(*frame);
             }
-            let previous = old.get(cursor).filter(|c| c.key == key);
-            contacts.push(Contact::from_manifold(key, manifold, previous));
+            contact
         };
+        for c in &old {
+            let (a, b) = (c.key.body_a as usize, c.key.body_b as usize);
+            if bodies.alive[a] && bodies.alive[b] && !bodies.is_moving(a) && !bodies.is_moving(b) {
+                contacts.push(keep_frame(&mut frames, *c));
+            }
+        }
+        let margin = self.settings.speculative_distance;
+        let recycle_distance = self.settings.contact_recycle_distance;
         let pairs = &scratch.pairs;
         let transforms = &scratch.transforms;
+        let pose = |a: u32, b: u32| PairPose {
+            xf_a: &transforms[a as usize],
+            q_a: bodies.orientation[a as usize],
+            xf_b: &transforms[b as usize],
+            q_b: bodies.orientation[b as usize],
+        };
         let collides = |(a, b): (u32, u32)| {
             bodies.kind[a as usize] == BodyKind::Dynamic
                 || bodies.kind[b as usize] == BodyKind::Dynamic
         };
-        let box_pair = |(a, b): (u32, u32)| {
+        let recycles = |(a, b): (u32, u32)| {
+            recycle_distance > R::ZERO
+                && recyclable(&bodies.shape[a as usize], &bodies.shape[b as usize])
+        };
+        find_carried(
+            &mut scratch.carried,
+            pairs,
+            &old,
+            |pair| collides(pair) && recycles(pair),
+            |c: &Contact<R>| {
+                let (a, b) = (c.key.body_a, c.key.body_b);
+                old_frames.get(c.frame as usize).is_some_and(|frame| {
+                    pose(a, b).near(frame, &bodies.shape[b as usize], recycle_distance)
+                })
+            },
+        );
+        let carried = &scratch.carried;
+        // The manifolds come in ascending key order (pairs sorted, parts in order), as do
+        // last step's contacts: the contacts before `cursor` have keys below every key to
+        // come, so finding a manifold's previous contact is a walk, not a search.
+        let mut cursor = 0;
+        let mut push = |key: ContactKey, found: Found<'_, R>| {
+            let pose = pose(key.body_a, key.body_b);
+            let contact = match found {
+                Found::Carried(index) => {
+                    let contact = &old[index as usize];
+                    let frame = &old_frames[contact.frame as usize];
+                    keep_frame(&mut frames, pose.carried(contact, frame))
+                }
+                Found::Fresh(manifold) => {
+                    while old.get(cursor).is_some_and(|c| c.key < key) {
+                        cursor += 1;
+                    }
+                    let previous = old.get(cursor).filter(|c| c.key == key);
+                    let mut contact = Contact::from_manifold(key, manifold, previous);
+                    if recycles((key.body_a, key.body_b)) {
+                        contact.frame = frames.len() as u32;
+                        frames.push(pose.frame(manifold));
+                    }
+                    contact
+                }
+            };
+            contacts.push(contact);
+        };
+        let box_pair = |index: usize| {
+            let (a, b) = pairs[index];
+            if carried[index] != u32::MAX {
+                // Carried, not recomputed: no separating-axis test.
+                return None;
+            }
             let (ia, ib) = (a as usize, b as usize);
             match (&bodies.shape[ia], &bodies.shape[ib]) {
                 (Shape::Box { half_extents: ha }, Shape::Box { half_extents: hb })
@@ -140,7 +199,7 @@ impl<R: Real> RigidSystem<R> {
             let mut count = 0;
             let mut end = next;
             while end < pairs.len() && count < LANES {
-                if let Some(pair) = box_pair(pairs[end]) {
+                if let Some(pair) = box_pair(end) {
                     boxes[count] = pair;
                     indices[count] = end;
                     count += 1;
@@ -166,11 +225,15 @@ impl<R: Real> RigidSystem<R> {
                     part_a,
                     part_b,
                 };
+                if carried[index] != u32::MAX {
+                    push(key(0, 0), Found::Carried(carried[index]));
+                    continue;
+                }
                 if lane < count && indices[lane] == index {
                     if let Some(axes) = &axes[lane] {
                         let manifold = box_box_contact(&boxes[lane], axes, margin);
                         if manifold.count > 0 {
-                            push(key(0, 0), &manifold);
+                            push(key(0, 0), Found::Fresh(&manifold));
                         }
                     }
                     lane += 1;
@@ -183,7 +246,7 @@ impl<R: Real> RigidSystem<R> {
                     &bodies.shape[ib],
                     &transforms[ib],
                     margin,
-                    |part_a, part_b, manifold| push(key(part_a, part_b), manifold),
+                    |part_a, part_b, manifold| push(key(part_a, part_b), Found::Fresh(manifold)),
                 );
             }
             next = end;
@@ -192,6 +255,9 @@ impl<R: Real> RigidSystem<R> {
         // keys: the stable sort merges them in one pass and leaves a single run untouched.
         contacts.sort_by_key(|c| c.key);
         self.contacts = contacts;
+        self.frames = frames;
+        self.scratch.spare_contacts = old;
+        self.scratch.spare_frames = old_frames;
     }
 
     /// Recomputes placements and boxes: all of them when the cache is not valid, otherwise
@@ -294,5 +360,42 @@ fn for_each_part<R: Real>(
             }
         }
         _ => f(0, shape, xf),
+    }
+}
+
+/// Where a contact comes from: the narrowphase, or last step's contact at this index,
+/// carried ([`super::recycle`]).
+enum Found<'a, R: Real> {
+    Fresh(&'a Manifold<R>),
+    Carried(u32),
+}
+
+/// Fills `carried` with, for each of `pairs` (in key order, as `old`), the index in `old`
+/// of the contact it carries, or `u32::MAX`: the pair must be `recyclable` and last step's
+/// contact of its key (parts 0 and 0: the pair is not a compound) must be `near` the pair's
+/// pose now (which needs a frame).
+fn find_carried<R: Real>(
+    carried: &mut Vec<u32>,
+    pairs: &[(u32, u32)],
+    old: &[Contact<R>],
+    recyclable: impl Fn((u32, u32)) -> bool,
+    near: impl Fn(&Contact<R>) -> bool,
+) {
+    carried.clear();
+    let mut cursor = 0;
+    for &(a, b) in pairs {
+        let key = ContactKey {
+            body_a: a,
+            body_b: b,
+            part_a: 0,
+            part_b: 0,
+        };
+        while old.get(cursor).is_some_and(|c| c.key < key) {
+            cursor += 1;
+        }
+        let kept = old
+            .get(cursor)
+            .is_some_and(|c| c.key == key && recyclable((a, b)) && near(c));
+        carried.push(if kept { cursor as u32 } else { u32::MAX });
     }
 }

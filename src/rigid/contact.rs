@@ -50,7 +50,17 @@ pub(crate) struct Contact<R: Real> {
     pub friction_impulse: [R; 2],
     /// Accumulated twist friction impulse about the normal, N·m·s.
     pub twist_impulse: R,
+    /// The index in the system's frames of this contact's [`PairFrame`]: the pair's pose
+    /// when the narrowphase last ran for it, for pairs whose manifold may be carried
+    /// instead of recomputed ([`super::recycle`]); [`NO_FRAME`] for the others. The frames
+    /// are kept apart so that the contacts that have none stay small.
+    ///
+    /// [`PairFrame`]: super::recycle::PairFrame
+    pub frame: u32,
 }
+
+/// The [`Contact::frame`] of a contact without one.
+pub(crate) const NO_FRAME: u32 = u32::MAX;
 
 impl<R: Real> Contact<R> {
     /// A contact from a fresh manifold, with impulses carried from `previous` (the same
@@ -84,6 +94,7 @@ impl<R: Real> Contact<R> {
             points,
             friction_impulse,
             twist_impulse,
+            frame: NO_FRAME,
         }
     }
 

@@ -209,6 +209,13 @@ pub struct SolverSettings<R: Real = Fx> {
     /// Angular speed below which a body counts as resting, rad/s. Default 0.035 (2°/s).
     #[serde(default = "default_angular_sleep_speed")]
     pub angular_sleep_speed: R,
+    /// How far, m, the shapes of a pair (box–box, box–capsule, capsule–capsule) may move
+    /// relative to each other before the narrowphase runs for it again; until then its
+    /// contact points are carried with the bodies (contact recycling, as Jolt's body-pair
+    /// cache and Rapier's `contact_recycling`). Default 0.001 (Jolt's); 0 runs the
+    /// narrowphase every step.
+    #[serde(default = "default_contact_recycle_distance")]
+    pub contact_recycle_distance: R,
 }
 
 fn default_substeps() -> u32 {
@@ -228,6 +235,9 @@ fn default_restitution_threshold<R: Real>() -> R {
 }
 fn default_speculative_distance<R: Real>() -> R {
     R::from_ratio(2, 100)
+}
+fn default_contact_recycle_distance<R: Real>() -> R {
+    R::from_ratio(1, 1000)
 }
 fn default_true() -> bool {
     true
@@ -255,6 +265,7 @@ impl<R: Real> Default for SolverSettings<R> {
             time_to_sleep: default_time_to_sleep(),
             linear_sleep_speed: default_linear_sleep_speed(),
             angular_sleep_speed: default_angular_sleep_speed(),
+            contact_recycle_distance: default_contact_recycle_distance(),
         }
     }
 }

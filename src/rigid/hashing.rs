@@ -6,7 +6,7 @@
 //!
 //! 1. the solver settings: substeps (`u32`), contact hertz, damping ratio, push velocity,
 //!    restitution threshold, speculative distance, sleeping flag, time to sleep, linear and
-//!    angular sleep speeds;
+//!    angular sleep speeds, contact recycle distance;
 //! 2. the slot count (`u64`), then each slot in ascending index: its generation (`u32`),
 //!    its alive flag, and for a live body: kind code (`u8`), position, orientation, linear
 //!    and angular velocity, force, torque, inverse mass, mass, inertia, linear and angular
@@ -14,7 +14,9 @@
 //! 3. the contact count (`u64`), then each contact in key order: body A, body B (`u32`),
 //!    part A, part B (`u32`), normal, point count (`u8`), each point's position,
 //!    separation, feature id (`u32`) and normal impulse, then the contact's two friction
-//!    impulses and its twist impulse.
+//!    impulses and its twist impulse, then its recycling frame as an option (a byte 0 for
+//!    none; else 1, the translation, rotation and normal of the frame, and each point's
+//!    anchors on A and on B).
 //!
 //! Shapes do not change during a run and are part of the scene, which replays check by
 //! its own hash; they are not hashed here.
@@ -127,6 +129,7 @@ impl<R: Real> RigidSystem<R> {
         h.write_real(s.time_to_sleep);
         h.write_real(s.linear_sleep_speed);
         h.write_real(s.angular_sleep_speed);
+        h.write_real(s.contact_recycle_distance);
 
         h.write_len(self.bodies.len());
         for i in 0..self.bodies.len() {
@@ -150,6 +153,16 @@ impl<R: Real> RigidSystem<R> {
             h.write_real(c.friction_impulse[0]);
             h.write_real(c.friction_impulse[1]);
             h.write_real(c.twist_impulse);
+            let frame = self.frames.get(c.frame as usize).copied();
+            write_option(h, frame, |h, frame| {
+                h.write_vec3(frame.translation);
+                write_quat(h, frame.rotation);
+                h.write_vec3(frame.normal);
+                for [on_a, on_b] in &frame.anchors[..usize::from(c.count)] {
+                    h.write_vec3(*on_a);
+                    h.write_vec3(*on_b);
+                }
+            });
         }
 
         if !self.joints.is_empty() {

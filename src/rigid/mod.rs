@@ -40,6 +40,7 @@ pub mod material;
 mod metrics;
 pub mod narrowphase;
 pub mod presets;
+mod recycle;
 pub mod shape;
 mod sleep;
 mod solve;

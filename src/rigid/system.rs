@@ -10,6 +10,7 @@ use super::contact::Contact;
 use super::desc::{BodyKind, SolverSettings};
 use super::joints::JointEvent;
 use super::joints::storage::Joints;
+use super::recycle::PairFrame;
 use super::solver::Solver;
 use super::transform::Transform;
 use crate::math::{Fx, Real, Vec3};
@@ -20,7 +21,8 @@ use crate::world::Handle;
 /// A step ([`RigidSystem::step`]) runs these stages, in order:
 /// 1. **collide** ([`collide`](super::collide)): bounding boxes of the moving bodies,
 ///    broadphase pairs (less those of jointed bodies that do not collide), narrowphase
-///    manifolds, impulses carried over by feature id;
+///    manifolds (or last step's, carried with the bodies: [`recycle`](super::recycle)),
+///    impulses carried over by feature id;
 /// 2. **wake** ([`sleep`](super::sleep)): sleeping islands touched or jointed to a moving
 ///    body;
 /// 3. **solve** ([`solver`](super::solver)): soft-constraint sequential impulses over
@@ -36,6 +38,8 @@ pub struct RigidSystem<R: Real = Fx> {
     pub(crate) bodies: Bodies<R>,
     /// Touching shape pairs, sorted by key.
     pub(crate) contacts: Vec<Contact<R>>,
+    /// The recycling frames the contacts name ([`Contact::frame`], [`super::recycle`]).
+    pub(crate) frames: Vec<PairFrame<R>>,
     /// Joints between the bodies.
     pub(crate) joints: Joints<R>,
     #[serde(skip)]
@@ -61,6 +65,12 @@ pub(crate) struct Scratch<R: Real> {
     pub planes: Vec<u32>,
     pub broadphase: BroadPhase<R>,
     pub pairs: Vec<(u32, u32)>,
+    /// For each pair of `pairs`, the index in last step's contacts of the contact it
+    /// carries instead of running the narrowphase ([`super::recycle`]), or `u32::MAX`.
+    pub carried: Vec<u32>,
+    /// Last step's contacts and frames, cleared: their storage, for the next step's.
+    pub spare_contacts: Vec<Contact<R>>,
+    pub spare_frames: Vec<PairFrame<R>>,
     pub solver: Solver<R>,
     /// Union-find parents of the sleep stage, by slot.
     pub island_parent: Vec<u32>,
@@ -93,6 +103,7 @@ impl<R: Real> RigidSystem<R> {
             settings,
             bodies: Bodies::default(),
             contacts: Vec::new(),
+            frames: Vec::new(),
             joints: Joints::default(),
             scratch: Scratch::default(),
         }

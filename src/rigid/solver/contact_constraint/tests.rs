@@ -147,6 +147,7 @@ fn lanes_of(
             points,
             friction_impulse: [value(rng, carried / 2.0), value(rng, carried / 2.0)],
             twist_impulse: value(rng, carried / 4.0),
+            frame: crate::rigid::contact::NO_FRAME,
         };
         block.prepare_lane(
             &contact,
