@@ -66,6 +66,7 @@ fn reach_squared<R: Real>(shape: &Shape<R>) -> R {
             radius,
             half_height,
         } => (radius + half_height) * (radius + half_height),
+        // Not reached: `recyclable` admits boxes and capsules only.
         _ => R::MAX,
     }
 }
@@ -80,7 +81,8 @@ pub(crate) struct PairPose<'a, R: Real> {
 }
 
 /// R v for the rotation with rows `rows`, each component a dot product rounded once
-/// ([`Vec3::dot_fused`]).
+/// ([`Vec3::dot_fused`]). Given a rotation's columns instead, it gives Rᵀ v: the vector in
+/// the rotated frame.
 #[inline(always)]
 fn rotate<R: Real>(rows: &[Vec3<R>; 3], v: Vec3<R>) -> Vec3<R> {
     Vec3::new(
@@ -118,6 +120,7 @@ impl<R: Real> PairPose<'_, R> {
     /// The frame of the contact the narrowphase just found, `manifold`.
     pub fn frame(&self, manifold: &Manifold<R>) -> PairFrame<R> {
         let n = manifold.normal;
+        // Rotating by the columns gives Rᵀ v: world vectors into each body's frame.
         let (to_a, to_b) = (&self.xf_a.rotation.cols, &self.xf_b.rotation.cols);
         let mut anchors = [[Vec3::ZERO; 2]; MAX_MANIFOLD_POINTS];
         for (anchor, found) in anchors.iter_mut().zip(manifold.points()) {

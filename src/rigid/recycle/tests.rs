@@ -5,7 +5,8 @@ use crate::math::Fx;
 use crate::rigid::contact::{ContactKey, NO_FRAME};
 use crate::rigid::narrowphase::collide;
 
-fn v(x: f64, y: f64, z: f64) -> Vec3<Fx> {
+fn v(x: f64, y: f64, z: f64) -> Vec3<Fx> // ok-det: test input
+{
     Vec3::from_f64(x, y, z)
 }
 
@@ -18,7 +19,8 @@ fn unit_box() -> Shape<Fx> {
 /// A box resting on a box, the upper one turned by `turn` rad about y and sunk 5 mm; both
 /// then placed at `offset` and turned by `tilt` rad about the axis (1, 2, 3): the same
 /// relative pose for every `offset` and `tilt`.
-fn stacked(offset: Vec3<Fx>, tilt: f64, turn: f64) -> [(Transform<Fx>, Quat<Fx>); 2] {
+fn stacked(offset: Vec3<Fx>, tilt: f64, turn: f64) -> [(Transform<Fx>, Quat<Fx>); 2] // ok-det: test input
+{
     let whole = Quat::from_axis_angle(v(1.0, 2.0, 3.0).normalize_or_zero(), Fx::from_f64(tilt));
     let upper = Quat::from_axis_angle(v(0.0, 1.0, 0.0), Fx::from_f64(turn));
     let lower_at = offset;
@@ -55,7 +57,8 @@ fn contact(found: &Manifold<Fx>) -> Contact<Fx> {
 
 /// The largest distance between matching points of two contacts, and between their
 /// separations, m (the points matched by feature id, every id found).
-fn mismatch(a: &Contact<Fx>, b: &Contact<Fx>) -> (f64, f64) {
+fn mismatch(a: &Contact<Fx>, b: &Contact<Fx>) -> (f64, f64) // ok-det: test report
+{
     assert_eq!(a.count, b.count);
     let mut worst = (0.0f64, 0.0f64);
     for p in a.points() {
@@ -142,8 +145,8 @@ fn a_move_beyond_the_distance_is_not_near() {
     let frame = pose(&before).frame(&manifold(&before));
     let distance = Fx::from_ratio(1, 1000);
     let [(lower, q_lower), (upper, q_upper)] = before;
-    let moved_by = |shift: Vec3<Fx>, angle: f64| {
-        let turn = Quat::from_axis_angle(v(1.0, 0.0, 0.0), Fx::from_f64(angle));
+    let moved_by = |shift: Vec3<Fx>, angle: Fx| {
+        let turn = Quat::from_axis_angle(v(1.0, 0.0, 0.0), angle);
         [
             (lower, q_lower),
             (
@@ -153,10 +156,10 @@ fn a_move_beyond_the_distance_is_not_near() {
         ]
     };
     // |Δt| up to d/2, and 2 sin(Δθ/2)·ρ up to d/2 with ρ = √0.75 m: Δθ up to 5.8·10⁻⁴ rad.
-    assert!(pose(&moved_by(v(0.0004, 0.0, 0.0), 0.0)).near(&frame, &unit_box(), distance));
-    assert!(!pose(&moved_by(v(0.0006, 0.0, 0.0), 0.0)).near(&frame, &unit_box(), distance));
-    assert!(pose(&moved_by(Vec3::ZERO, 5.5e-4)).near(&frame, &unit_box(), distance));
-    assert!(!pose(&moved_by(Vec3::ZERO, 6.2e-4)).near(&frame, &unit_box(), distance));
+    assert!(pose(&moved_by(v(0.0004, 0.0, 0.0), Fx::ZERO)).near(&frame, &unit_box(), distance));
+    assert!(!pose(&moved_by(v(0.0006, 0.0, 0.0), Fx::ZERO)).near(&frame, &unit_box(), distance));
+    assert!(pose(&moved_by(Vec3::ZERO, Fx::from_f64(5.5e-4))).near(&frame, &unit_box(), distance));
+    assert!(!pose(&moved_by(Vec3::ZERO, Fx::from_f64(6.2e-4))).near(&frame, &unit_box(), distance));
 }
 
 /// Boxes and capsules recycle; spheres, planes and compounds do not.
