@@ -365,7 +365,7 @@ fn check_integrate<R: Real>(omega: [f64; 3], q0: Quat<R>, steps: u32) {
 // ---------------------------------------------------------------------------------------
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(16384))]
+    #![proptest_config(crate::property_cases::fixed_cases(16384))]
 
     /// The accuracy requirement: rotating by a normalised quaternion preserves the length
     /// of vectors with components in [−1000, 1000] within 4 ulp (I32F32). The length is
@@ -413,7 +413,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(4096))]
+    #![proptest_config(crate::property_cases::fixed_cases(4096))]
 
     #[test]
     fn rotate_matches_the_exact_rotation(c in int_components(), v in vec_in(1000.0)) {
@@ -498,7 +498,7 @@ fn check_normalize_raw<F: FracBits>(c: [i64; 4]) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(4096))]
+    #![proptest_config(crate::property_cases::fixed_cases(4096))]
 
     #[test]
     fn normalize_takes_any_length(c in raw_components()) {
@@ -552,7 +552,7 @@ fn check_integrate_step<F: FracBits>(q: Quat<Fixed<F>>, omega: Vec3<Fixed<F>>) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+    #![proptest_config(crate::property_cases::fixed_cases(256))]
 
     #[test]
     fn integrate_matches_the_exact_rotation_within_the_first_order_lag(
@@ -975,7 +975,7 @@ fn check_rotate_inertia<R: Real>(c: [i32; 4], d: [f64; 3], off: [f64; 3]) {
 // ---------------------------------------------------------------------------------------
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(2048))]
+    #![proptest_config(crate::property_cases::fixed_cases(2048))]
 
     #[test]
     fn products_transposes_and_elementwise_operations(

@@ -29,7 +29,7 @@ fn saturate(v: i128) -> i64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(4096))]
+    #![proptest_config(crate::property_cases::fixed_cases(4096))]
 
     #[test]
     fn multiply_rounds_to_nearest_and_saturates(a: i64, b: i64) {

@@ -177,7 +177,7 @@ fn sqrt_is_correctly_rounded_at_the_extreme_formats() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(20_000))]
+    #![proptest_config(crate::property_cases::fixed_cases(20_000))]
 
     #[test]
     fn sqrt_matches_exact_reference_over_all_bits(bits in 0..=i64::MAX, shift in 0u32..64) {
@@ -599,7 +599,7 @@ fn powf_is_accurate_over_its_range() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(20_000))]
+    #![proptest_config(crate::property_cases::fixed_cases(20_000))]
 
     #[test]
     fn powf_matches_f64(x in 1e-3f64..64.0, y in -6.0f64..6.0) {

@@ -163,7 +163,7 @@ fn max_half_pi_multiple(frac: u32) -> i64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(4096))]
+    #![proptest_config(crate::property_cases::fixed_cases(4096))]
 
     #[test]
     fn sin_cos_of_every_bit_pattern(bits: i64) {

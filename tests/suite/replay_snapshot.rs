@@ -101,7 +101,7 @@ fn run_to(world: &mut World<Fx>, feed_script: &[TickInput<Fx>], until: u64) -> V
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+    #![proptest_config(crate::property_cases::fixed_cases(12))]
 
     #[test]
     fn restoring_a_snapshot_continues_like_an_uninterrupted_run(

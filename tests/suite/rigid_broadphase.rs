@@ -131,7 +131,7 @@ fn check_order(pairs: &[(u32, u32)]) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    #![proptest_config(crate::property_cases::fixed_cases(400))]
 
     /// A fresh broadphase gives exactly the brute-force pairs.
     #[test]
