@@ -10,15 +10,21 @@
 //!   0.005 s): DFSPH at 8k particles, a whole step of 5 ms in the 3 fluid substeps the
 //!   time-step limit asks for (0.2 H / u with u = c/10 = 2 m/s, H = 2 cm), from the state
 //!   after 20 steps (water settling under gravity, 0.1 s in).
+//! - A puddle in a large tank: 1000 particles (a cube of 10³ in a corner, [`presets::cube`],
+//!   spreading over the floor) in a tank 2 and 16 times as wide and deep as the cube (64
+//!   times the floor in the second; the far walls beyond the water's reach in both), DFSPH,
+//!   a step of 5 ms in 3 substeps, from the state after 6 steps, timed as a step of a
+//!   running simulation (the working memory built). A scene pays for the water, not for the
+//!   tank: the two should take about the same time.
 //!
-//! Every case runs in I32F32 and, with the same generic code, in `f64`, measured in the
-//! same run. Throughput is reported in particle-steps.
+//! Every case but the puddle runs in I32F32 and, with the same generic code, in `f64`,
+//! measured in the same run. Throughput is reported in particle-steps.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use fixstep::fluid::{FluidSolver, FluidSystem, presets};
+use fixstep::fluid::{FluidDesc, FluidSolver, FluidSystem, presets};
 use fixstep::math::{Fx, Real, Vec3};
 
 /// A case: the solver, the step (1/`rate` s) and its fluid substeps.
@@ -48,21 +54,52 @@ fn bench_cube<R: Real>(
     case: &Case,
     warm_steps: u32,
 ) {
+    let desc = presets::cube::<R>(n, case.solver, case.substeps);
+    let name = format!("{:?}_{}_dt_1/{}", case.solver, n * n * n, case.rate);
+    bench_desc(group, &name, desc, case, warm_steps, false);
+}
+
+/// The puddle: a cube of 10³ particles in a tank `widen` times as wide and deep as the
+/// cube's own.
+fn bench_puddle(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    widen: i32,
+) {
+    let mut desc = presets::cube::<Fx>(10, DFSPH.solver, DFSPH.substeps);
+    desc.tank.max.x *= Fx::from_int(widen);
+    desc.tank.max.z *= Fx::from_int(widen);
+    let name = format!("puddle_1000_in_tank_{widen}x");
+    bench_desc(group, &name, desc, &DFSPH, 5, true);
+}
+
+/// Steps `desc` `warm_steps` times, then times one step of a copy per iteration. A copy
+/// starts without the working memory the steps rebuild (boundary particles and grids);
+/// with `steady`, it takes one step untimed first, so that the step timed is one of a
+/// running simulation, which has them.
+fn bench_desc<R: Real>(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    name: &str,
+    desc: FluidDesc<R>,
+    case: &Case,
+    warm_steps: u32,
+    steady: bool,
+) {
     let dt = R::from_ratio(1, case.rate);
     let gravity = Vec3::new(R::ZERO, R::from_f64(-9.81), R::ZERO);
-    let desc = presets::cube::<R>(n, case.solver, case.substeps);
     let mut fluid = FluidSystem::from_desc(&desc, dt).expect("the cube builds");
     for _ in 0..warm_steps {
         fluid.step(dt, gravity);
     }
-    let particles = u64::from(n * n * n);
+    let particles = fluid.positions().len() as u64;
     group.throughput(Throughput::Elements(particles));
-    let name = format!("{:?}_{particles}_dt_1/{}", case.solver, case.rate);
     group.bench_function(BenchmarkId::new(name, R::NAME), |b| {
         b.iter_custom(|iterations| {
             let mut total = Duration::ZERO;
             for _ in 0..iterations {
                 let mut copy = fluid.clone();
+                if steady {
+                    copy.step(dt, gravity);
+                }
                 let start = Instant::now();
                 copy.step(dt, gravity);
                 total += start.elapsed();
@@ -84,6 +121,8 @@ fn fluid(c: &mut Criterion) {
         bench_cube::<Fx>(&mut group, n, &WCSPH, 5);
         bench_cube::<f64>(&mut group, n, &WCSPH, 5);
     }
+    bench_puddle(&mut group, 2);
+    bench_puddle(&mut group, 16);
     group.finish();
 }
 

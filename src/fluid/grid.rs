@@ -9,8 +9,17 @@
 //! Cells are numbered x fastest, then y, then z; [`CellGrid::fill`] lists the points of
 //! each cell in ascending point index (the counting sort is stable), so the order of the
 //! entries is the total order (cell, index), the same on every machine.
+//!
+//! The cell lists cover only the box of cells the points occupy (its [`Window`]), not the
+//! whole grid: a fill costs O(points + cells of that box), so a little water in a large
+//! tank pays for the cells it fills, not for the tank's. Cells outside the box are empty.
+//! The box changes nothing that a search finds or its order: a row of cells is the same
+//! points, clipped to the box.
 //! [`CellGrid::locate`] finds the points' cells without sorting them, for the substeps that
 //! reuse their candidate lists ([`skin`](super::neighbours::skin)) and need only the order.
+
+#[cfg(test)]
+mod tests;
 
 use crate::math::{Real, Vec3};
 
@@ -28,12 +37,86 @@ pub struct CellGrid<R: Real> {
     edges: [Vec<R>; 3],
     /// Cells along x, y and z.
     dims: [u32; 3],
-    /// `entries[start[c]..start[c + 1]]` are the points of cell c.
+    /// The box of cells holding every point of the last fill, which the cell lists cover.
+    window: Window,
+    /// `entries[start[k]..start[k + 1]]` are the points of the window's cell k
+    /// ([`Window::local`]).
     start: Vec<u32>,
     /// Point indices, by cell then index.
     entries: Vec<u32>,
     /// The cell of each point.
     cell_of: Vec<u32>,
+    /// The cell coordinates of each point, while a fill finds the window (scratch).
+    coords_of: Vec<[u32; 3]>,
+    /// The window cell of each point, while a fill sorts them (scratch).
+    local_of: Vec<u32>,
+}
+
+/// A box of cells: `dims` cells along each axis from the cell `lower`; no cell when any
+/// of `dims` is zero.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Window {
+    lower: [u32; 3],
+    dims: [u32; 3],
+}
+
+impl Window {
+    /// The smallest box holding every cell of `coords` (none for none).
+    fn around(coords: impl Iterator<Item = [u32; 3]>) -> Self {
+        let mut bounds: Option<([u32; 3], [u32; 3])> = None;
+        for c in coords {
+            let (lo, hi) = bounds.get_or_insert((c, c));
+            for a in 0..3 {
+                lo[a] = lo[a].min(c[a]);
+                hi[a] = hi[a].max(c[a]);
+            }
+        }
+        match bounds {
+            Some((lower, upper)) => Self {
+                lower,
+                dims: [0, 1, 2].map(|a| upper[a] - lower[a] + 1),
+            },
+            None => Self::default(),
+        }
+    }
+
+    /// The number of cells in the box.
+    fn len(&self) -> usize {
+        self.dims.iter().map(|&d| d as usize).product()
+    }
+
+    /// The box's index of the cell `c`, which lies in the box: x fastest, then y, then z,
+    /// as the grid numbers its cells.
+    #[inline(always)]
+    fn local(&self, c: [u32; 3]) -> u32 {
+        let [x, y, z] = [0, 1, 2].map(|a| c[a] - self.lower[a]);
+        x + self.dims[0] * (y + self.dims[1] * z)
+    }
+
+    /// The box's indices of the cells `x` of the row (y, z) that lie in the box, as a
+    /// half-open range (empty when none does).
+    #[inline(always)]
+    fn row(&self, row: &Row) -> core::ops::Range<u32> {
+        let [lx, ly, lz] = self.lower;
+        let [dx, dy, dz] = self.dims;
+        let (y, z) = (row.y.wrapping_sub(ly), row.z.wrapping_sub(lz));
+        if y >= dy || z >= dz || row.last_x < lx || row.first_x >= lx + dx {
+            return 0..0;
+        }
+        let first = row.first_x.max(lx) - lx;
+        let last = row.last_x.min(lx + dx - 1) - lx;
+        let base = dx * (y + dy * z);
+        base + first..base + last + 1
+    }
+}
+
+/// The cells `first_x..=last_x` of the row (y, z) of a grid.
+#[derive(Clone, Copy, Debug)]
+struct Row {
+    y: u32,
+    z: u32,
+    first_x: u32,
+    last_x: u32,
 }
 
 impl<R: Real> CellGrid<R> {
@@ -57,14 +140,16 @@ impl<R: Real> CellGrid<R> {
             axis(lower.z, upper.z),
         ];
         let dims = edges.each_ref().map(|e| e.len() as u32 + 1);
-        let cells = dims.iter().map(|&d| d as usize).product::<usize>();
         Self {
             size,
             edges,
             dims,
-            start: vec![0; cells + 1],
+            window: Window::default(),
+            start: vec![0],
             entries: Vec::new(),
             cell_of: Vec::new(),
+            coords_of: Vec::new(),
+            local_of: Vec::new(),
         }
     }
 
@@ -127,11 +212,24 @@ impl<R: Real> CellGrid<R> {
         }
     }
 
-    /// Sorts `points` into their cells by counting sort: O(points + cells), no comparison.
+    /// Sorts `points` into their cells by counting sort, over the box of cells they occupy
+    /// ([`Window`]): O(points + cells of that box), no comparison.
     pub fn fill(&mut self, points: &[Vec3<R>]) {
-        self.locate(points);
-        self.start.fill(0);
-        for &cell in &self.cell_of {
+        self.cell_of.clear();
+        self.coords_of.clear();
+        for &p in points {
+            let c = self.coords(p);
+            self.cell_of.push(self.cell_index(c));
+            self.coords_of.push(c);
+        }
+        self.window = Window::around(self.coords_of.iter().copied());
+        let window = self.window;
+        self.local_of.clear();
+        self.local_of
+            .extend(self.coords_of.iter().map(|&c| window.local(c)));
+        self.start.clear();
+        self.start.resize(window.len() + 1, 0);
+        for &cell in &self.local_of {
             self.start[cell as usize + 1] += 1;
         }
         for c in 1..self.start.len() {
@@ -141,7 +239,7 @@ impl<R: Real> CellGrid<R> {
         self.entries.resize(points.len(), 0);
         // Each cell's next free entry, in the first `start.len() − 1` slots of a cursor run
         // over `start` itself: place, then restore the starts by shifting back.
-        for (index, &cell) in self.cell_of.iter().enumerate() {
+        for (index, &cell) in self.local_of.iter().enumerate() {
             let at = &mut self.start[cell as usize];
             self.entries[*at as usize] = index as u32;
             *at += 1;
@@ -169,8 +267,8 @@ impl<R: Real> CellGrid<R> {
         span: u32,
         mut visit: impl FnMut(&[u32]),
     ) {
-        self.for_each_row_within(p, inv_radius, span, |cells| {
-            let points = self.points_in(cells);
+        self.for_each_row_within(p, inv_radius, span, |row| {
+            let points = self.points_in(&row);
             if !points.is_empty() {
                 visit(points);
             }
@@ -191,9 +289,9 @@ impl<R: Real> CellGrid<R> {
         span: u32,
         mut visit: impl FnMut(usize, &[u32]),
     ) {
-        self.for_each_row_within(p, inv_radius, span, |cells| {
+        self.for_each_row_within(p, inv_radius, span, |row| {
             for (k, grid) in [self, other].into_iter().enumerate() {
-                let points = grid.points_in(cells.clone());
+                let points = grid.points_in(&row);
                 if !points.is_empty() {
                     visit(k, points);
                 }
@@ -207,23 +305,24 @@ impl<R: Real> CellGrid<R> {
         self.size == other.size && self.edges == other.edges
     }
 
-    /// The points of the consecutive cells `cells`.
+    /// The points of the cells of `row` (those outside the window hold none).
     #[inline(always)]
-    fn points_in(&self, cells: core::ops::Range<u32>) -> &[u32] {
+    fn points_in(&self, row: &Row) -> &[u32] {
+        let cells = self.window.row(row);
         let first = self.start[cells.start as usize] as usize;
         let last = self.start[cells.end as usize] as usize;
         &self.entries[first..last]
     }
 
-    /// The rows of cells that [`CellGrid::for_each_within`] visits, as ranges of cell
-    /// indices, in ascending order.
+    /// The rows of cells that [`CellGrid::for_each_within`] visits, in ascending order of
+    /// cell index.
     #[inline(always)]
     fn for_each_row_within(
         &self,
         p: Vec3<R>,
         inv_radius: R,
         span: u32,
-        mut visit: impl FnMut(core::ops::Range<u32>),
+        mut visit: impl FnMut(Row),
     ) {
         let span = span.min(MAX_SPAN);
         let c = self.coords(p);
@@ -268,8 +367,12 @@ impl<R: Real> CellGrid<R> {
                 while last_x > c[0] && gyz + gap2(0, last_x) > reach {
                     last_x -= 1;
                 }
-                let row = self.cell_index([0, y, z]);
-                visit(row + first_x..row + last_x + 1);
+                visit(Row {
+                    y,
+                    z,
+                    first_x,
+                    last_x,
+                });
             }
         }
     }
