@@ -1,8 +1,18 @@
 //! Fluid step time per particle-step at 8k, 64k and 256k particles (docs/PERFORMANCE.md).
 //!
 //! The fluid is a cube of n³ particles (n = 20, 40, 64) on the floor of a tank of the same
-//! footprint, 1 cm apart ([`presets::cube`]), one thread; the copy a sample steps is made
-//! outside the timing.
+//! footprint, 1 cm apart ([`presets::cube`]), one thread. Each sample copies a state
+//! reached beforehand, outside the timing, and then:
+//!
+//! - **running** (every case): steps the copy once untimed, then times [`RUN`] steps in a
+//!   row and reports their mean: steps of a running simulation, which keeps its boundary
+//!   particles, grids and candidate lists from step to step;
+//! - **after a restore** (the 8k cubes, cases named `…_after_restore`): times the copy's
+//!   first step. A copy, like a state restored from a snapshot (a GGRS rollback), starts
+//!   without that working memory, and its first step rebuilds it: what each rollback pays
+//!   once.
+//!
+//! The cases:
 //!
 //! - Scaling: WCSPH, whose work per particle does not depend on the size, at 8k, 64k and
 //!   256k particles, steps of 0.1 ms (one fluid substep), from the state after 5 steps.
@@ -13,9 +23,8 @@
 //! - A puddle in a large tank: 1000 particles (a cube of 10³ in a corner, [`presets::cube`],
 //!   spreading over the floor) in a tank 2 and 16 times as wide and deep as the cube (64
 //!   times the floor in the second; the far walls beyond the water's reach in both), DFSPH,
-//!   a step of 5 ms in 3 substeps, from the state after 6 steps, timed as a step of a
-//!   running simulation (the working memory built). A scene pays for the water, not for the
-//!   tank: the two should take about the same time.
+//!   5 ms in 3 substeps, from the state after 5 steps. A scene pays for the water, not for
+//!   the tank: the two should take about the same time.
 //!
 //! Every case but the puddle runs in I32F32 and, with the same generic code, in `f64`,
 //! measured in the same run. Throughput is reported in particle-steps.
@@ -26,6 +35,9 @@ use std::time::{Duration, Instant};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use fixstep::fluid::{FluidDesc, FluidSolver, FluidSystem, presets};
 use fixstep::math::{Fx, Real, Vec3};
+
+/// Steps timed in a row per sample of a running simulation.
+const RUN: u32 = 5;
 
 /// A case: the solver, the step (1/`rate` s) and its fluid substeps.
 struct Case {
@@ -48,15 +60,29 @@ const DFSPH: Case = Case {
     substeps: 3,
 };
 
+/// What a sample times.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Timing {
+    /// [`RUN`] steps of a running simulation.
+    Running,
+    /// The first step after a restore.
+    AfterRestore,
+}
+
+/// The cube of `n`³ particles under `case`, from the state after `warm_steps` steps.
 fn bench_cube<R: Real>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     n: u32,
     case: &Case,
     warm_steps: u32,
+    timing: Timing,
 ) {
     let desc = presets::cube::<R>(n, case.solver, case.substeps);
-    let name = format!("{:?}_{}_dt_1/{}", case.solver, n * n * n, case.rate);
-    bench_desc(group, &name, desc, case, warm_steps, false);
+    let mut name = format!("{:?}_{}_dt_1/{}", case.solver, n * n * n, case.rate);
+    if timing == Timing::AfterRestore {
+        name += "_after_restore";
+    }
+    bench_desc(group, &name, desc, case, warm_steps, timing);
 }
 
 /// The puddle: a cube of 10³ particles in a tank `widen` times as wide and deep as the
@@ -69,20 +95,17 @@ fn bench_puddle(
     desc.tank.max.x *= Fx::from_int(widen);
     desc.tank.max.z *= Fx::from_int(widen);
     let name = format!("puddle_1000_in_tank_{widen}x");
-    bench_desc(group, &name, desc, &DFSPH, 5, true);
+    bench_desc(group, &name, desc, &DFSPH, 5, Timing::Running);
 }
 
-/// Steps `desc` `warm_steps` times, then times one step of a copy per iteration. A copy
-/// starts without the working memory the steps rebuild (boundary particles and grids);
-/// with `steady`, it takes one step untimed first, so that the step timed is one of a
-/// running simulation, which has them.
+/// Steps `desc` `warm_steps` times, then times copies of that state as `timing` says.
 fn bench_desc<R: Real>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     name: &str,
     desc: FluidDesc<R>,
     case: &Case,
     warm_steps: u32,
-    steady: bool,
+    timing: Timing,
 ) {
     let dt = R::from_ratio(1, case.rate);
     let gravity = Vec3::new(R::ZERO, R::from_f64(-9.81), R::ZERO);
@@ -97,12 +120,18 @@ fn bench_desc<R: Real>(
             let mut total = Duration::ZERO;
             for _ in 0..iterations {
                 let mut copy = fluid.clone();
-                if steady {
+                let steps = match timing {
+                    Timing::Running => {
+                        copy.step(dt, gravity);
+                        RUN
+                    }
+                    Timing::AfterRestore => 1,
+                };
+                let start = Instant::now();
+                for _ in 0..steps {
                     copy.step(dt, gravity);
                 }
-                let start = Instant::now();
-                copy.step(dt, gravity);
-                total += start.elapsed();
+                total += start.elapsed() / steps;
                 black_box(&copy);
             }
             total
@@ -115,12 +144,16 @@ fn fluid(c: &mut Criterion) {
     group.sample_size(10);
     group.warm_up_time(Duration::from_millis(500));
     group.measurement_time(Duration::from_secs(3));
-    bench_cube::<Fx>(&mut group, 20, &DFSPH, 20);
-    bench_cube::<f64>(&mut group, 20, &DFSPH, 20);
-    for n in [20, 40, 64] {
-        bench_cube::<Fx>(&mut group, n, &WCSPH, 5);
-        bench_cube::<f64>(&mut group, n, &WCSPH, 5);
+    for timing in [Timing::Running, Timing::AfterRestore] {
+        bench_cube::<Fx>(&mut group, 20, &DFSPH, 20, timing);
+        bench_cube::<f64>(&mut group, 20, &DFSPH, 20, timing);
     }
+    for n in [20, 40, 64] {
+        bench_cube::<Fx>(&mut group, n, &WCSPH, 5, Timing::Running);
+        bench_cube::<f64>(&mut group, n, &WCSPH, 5, Timing::Running);
+    }
+    bench_cube::<Fx>(&mut group, 20, &WCSPH, 5, Timing::AfterRestore);
+    bench_cube::<f64>(&mut group, 20, &WCSPH, 5, Timing::AfterRestore);
     bench_puddle(&mut group, 2);
     bench_puddle(&mut group, 16);
     group.finish();
