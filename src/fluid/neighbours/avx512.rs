@@ -54,7 +54,7 @@ use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
 use crate::fluid::grid::CellGrid;
 use crate::fluid::kernel::Kernel;
-use crate::fluid::lanes::{bit_length, magnitude_of, mul, product};
+use crate::fluid::lanes::{mul, product, vector_bits};
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::gather3;
 
@@ -209,15 +209,10 @@ fn admit<'a, R: Real>(
             &*(core::ptr::from_ref(points) as *const [Vec3<Fx>]),
         )
     };
-    let coordinates = |set: &[Vec3<Fx>]| {
-        set.iter().fold(0, |bits, p| {
-            bits | magnitude_of(p.x.to_bits())
-                | magnitude_of(p.y.to_bits())
-                | magnitude_of(p.z.to_bits())
-        })
-    };
+    // SAFETY: AVX-512F was detected above.
+    let coordinate_bits = unsafe { vector_bits(queries).max(vector_bits(points)) };
     let within = |value: Fx, bits: u32| 0 < value.to_bits() && value.to_bits() < 1 << bits;
-    if bit_length(coordinates(queries) | coordinates(points)) > 60
+    if coordinate_bits > 60
         || !within(radius, 31)
         || !within(inv_radius, 60)
         || !within(density_scale, 55)

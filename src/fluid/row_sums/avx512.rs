@@ -34,7 +34,9 @@ use core::arch::x86_64::{
 };
 use core::mem::size_of;
 
-use crate::fluid::lanes::{bit_length, load_values, magnitude, magnitude_of, mul, product};
+use crate::fluid::lanes::{
+    bit_length, load_values, magnitude, mul, product, scalar_bits, vector_bits,
+};
 use crate::fluid::neighbours::NeighbourLists;
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::gather3;
@@ -68,7 +70,8 @@ pub(super) fn density_rates<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let velocities = unsafe { &*(core::ptr::from_ref(velocities) as *const [Vec3<Fx>]) };
-    let velocity_bits = vector_bits(velocities);
+    // SAFETY: AVX-512F was detected above.
+    let velocity_bits = unsafe { vector_bits(velocities) };
     // |vᵢ − vⱼ| < 2^(B + 1).
     let difference_bits = velocity_bits + 1;
     // SAFETY: AVX-512F was detected just above.
@@ -101,7 +104,8 @@ pub(super) fn pressure_pushes<R: Real>(
     };
     // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
     let stiffness = unsafe { &*(core::ptr::from_ref(stiffness) as *const [Fx]) };
-    let stiffness_bits = scalar_bits(stiffness);
+    // SAFETY: AVX-512F was detected above.
+    let stiffness_bits = unsafe { scalar_bits(stiffness) };
     // |kᵢ + kⱼ| < 2^(B + 1).
     let sum_bits = stiffness_bits + 1;
     // SAFETY: AVX-512F was detected just above.
@@ -139,8 +143,9 @@ pub(super) fn smoothing_sums<R: Real>(
             &*(core::ptr::from_ref(inv_density) as *const [Fx]),
         )
     };
-    let velocity_bits = vector_bits(velocities);
-    let density_bits = scalar_bits(inv_density);
+    // SAFETY: AVX-512F was detected above.
+    let (velocity_bits, density_bits) =
+        unsafe { (vector_bits(velocities), scalar_bits(inv_density)) };
     let bits = Bits {
         difference: velocity_bits + 1,
         density: density_bits,
@@ -192,24 +197,6 @@ struct Bits {
 fn within_bound(a: u32, b: u32, terms: usize) -> bool {
     let sum_bits = usize::BITS - terms.max(1).saturating_sub(1).leading_zeros();
     a <= MAX_OPERAND_BITS && b <= MAX_OPERAND_BITS && (a + b).saturating_sub(32) + sum_bits <= 61
-}
-
-/// The bit length of the largest magnitude of any component of `vectors`.
-fn vector_bits(vectors: &[Vec3<Fx>]) -> u32 {
-    bit_length(vectors.iter().fold(0, |bits, v| {
-        bits | magnitude_of(v.x.to_bits())
-            | magnitude_of(v.y.to_bits())
-            | magnitude_of(v.z.to_bits())
-    }))
-}
-
-/// The bit length of the largest magnitude in `values`.
-fn scalar_bits(values: &[Fx]) -> u32 {
-    bit_length(
-        values
-            .iter()
-            .fold(0, |bits, v| bits | magnitude_of(v.to_bits())),
-    )
 }
 
 /// The lane mask of entries `first..first + count` (count 1 to 8) of a row, or `None` when
