@@ -425,12 +425,15 @@ impl<R: Real> Run<'_, R> {
     /// backward over the entries from the first one whose running maximum of the upper
     /// bounds reaches `q`, skipping the blocks that all end before it.
     fn probe(&self, q: &Entry<R>, sink: &mut Sink<'_>) {
+        if sink.full() {
+            return;
+        }
         let (lo, hi) = (q.bounds.lo[0], q.bounds.hi[0]);
         let place = self.entries.partition_point(|e| comes_before(e, q));
         let after = &self.entries[place..];
         scan(&after[..window(after, hi)], q, false, sink);
         let mut k = self.prefix_hi[..place].partition_point(|h| *h < lo);
-        while k < place {
+        while k < place && !sink.full() {
             let block = (self.offset + k) / BLOCK;
             let to = place.min((block + 1) * BLOCK - self.offset);
             if self.block_hi[block] >= lo {
@@ -586,6 +589,16 @@ struct Sink<'a> {
     valid: bool,
 }
 
+impl Sink<'_> {
+    /// Whether more than `limit` pairs were found: the call's answer is then known (none),
+    /// and the sweeps stop, so that boxes piled on one spot cost O(`limit`) tests rather
+    /// than one per pair of them.
+    #[inline(always)]
+    fn full(&self) -> bool {
+        self.out.len() > self.limit
+    }
+}
+
 /// Tests the box `q` against `entries` with the full overlap test, less what is known, and
 /// pushes each overlapping pair as (smaller, larger index).
 ///
@@ -650,6 +663,9 @@ fn scan_with<R: Real, const UPPER: bool, const LOWER: bool>(
 /// whose lower bound is within its reach.
 fn self_sweep<R: Real>(entries: &[Entry<R>], sink: &mut Sink<'_>) {
     for (i, q) in entries.iter().enumerate() {
+        if sink.full() {
+            return;
+        }
         let after = &entries[i + 1..];
         scan(&after[..window(after, q.bounds.hi[0])], q, false, sink);
     }
@@ -661,7 +677,7 @@ fn self_sweep<R: Real>(entries: &[Entry<R>], sink: &mut Sink<'_>) {
 /// tested once, by whichever of the two comes first.
 fn cross_sweep<R: Real>(xs: &[Entry<R>], ys: &[Entry<R>], sink: &mut Sink<'_>) {
     let (mut i, mut j) = (0, 0);
-    while i < xs.len() && j < ys.len() {
+    while i < xs.len() && j < ys.len() && !sink.full() {
         if comes_before(&xs[i], &ys[j]) {
             let (q, rest) = (&xs[i], &ys[j..]);
             scan(&rest[..window(rest, q.bounds.hi[0])], q, false, sink);
@@ -749,7 +765,7 @@ impl<R: Real> BroadPhase<R> {
     /// The result depends only on the arguments, not on earlier calls.
     ///
     /// Returns false, with `out` empty, when more than [`MAX_PAIRS`] pairs overlap (boxes
-    /// piled on one spot): the scan stops there, so memory stays bounded. Whether that
+    /// piled on one spot): the scan stops there, so memory and time stay bounded. Whether that
     /// happens depends only on the number of overlapping pairs, not on the order they are
     /// found in, so it is the same on every machine.
     ///
@@ -936,6 +952,9 @@ impl<R: Real> BroadPhase<R> {
         let (awake, resting) = (&self.awake, &self.resting);
         for t in 0..awake.reach.len() {
             let here = awake.all.run(t);
+            if sink.full() {
+                return;
+            }
             if here.entries.is_empty() {
                 continue;
             }
