@@ -9,14 +9,14 @@
 //! Cells are numbered x fastest, then y, then z; [`CellGrid::fill`] lists the points of
 //! each cell in ascending point index (the counting sort is stable), so the order of the
 //! entries is the total order (cell, index), the same on every machine.
+//! [`CellGrid::locate`] finds the points' cells without sorting them, for the substeps that
+//! reuse their candidate lists ([`skin`](super::neighbours::skin)) and need only the order.
 //!
 //! The cell lists cover only the box of cells the points occupy (its [`Window`]), not the
 //! whole grid: a fill costs O(points + cells of that box), so a little water in a large
 //! tank pays for the cells it fills, not for the tank's. Cells outside the box are empty.
 //! The box changes nothing that a search finds or its order: a row of cells is the same
 //! points, clipped to the box.
-//! [`CellGrid::locate`] finds the points' cells without sorting them, for the substeps that
-//! reuse their candidate lists ([`skin`](super::neighbours::skin)) and need only the order.
 
 #[cfg(test)]
 mod tests;
