@@ -49,8 +49,10 @@ fn worst_tick(world: &World<Fx>) -> usize {
 }
 
 /// The cells of the fluid's neighbour grid, cubes of half the kernel support over the tank,
-/// which a rebuild of the grid visits each fluid substep (counted in `f64`: an estimate in
-/// the harness, not a value of the step).
+/// which a rebuild of the grid visited each fluid substep until the grid's fill came to
+/// cover only the box the particles occupy (2026-11-27): since then an over-estimate, kept
+/// as a bound so that the inputs accepted stay those of before (counted in `f64`: an
+/// estimate in the harness, not a value of the step).
 fn grid_cells(fluid: &FluidSystem<Fx>) -> usize {
     let s = fluid.settings();
     let cell = (s.spacing * s.support).to_f64() / 2.0;
