@@ -46,10 +46,9 @@ pub struct CellGrid<R: Real> {
     entries: Vec<u32>,
     /// The cell of each point.
     cell_of: Vec<u32>,
-    /// The cell coordinates of each point, while a fill finds the window (scratch).
+    /// The cell coordinates of each point, while a fill finds the window and sorts the
+    /// points into its cells (scratch).
     coords_of: Vec<[u32; 3]>,
-    /// The window cell of each point, while a fill sorts them (scratch).
-    local_of: Vec<u32>,
 }
 
 /// A box of cells: `dims` cells along each axis from the cell `lower`; no cell when any
@@ -149,7 +148,6 @@ impl<R: Real> CellGrid<R> {
             entries: Vec::new(),
             cell_of: Vec::new(),
             coords_of: Vec::new(),
-            local_of: Vec::new(),
         }
     }
 
@@ -224,13 +222,10 @@ impl<R: Real> CellGrid<R> {
         }
         self.window = Window::around(self.coords_of.iter().copied());
         let window = self.window;
-        self.local_of.clear();
-        self.local_of
-            .extend(self.coords_of.iter().map(|&c| window.local(c)));
         self.start.clear();
         self.start.resize(window.len() + 1, 0);
-        for &cell in &self.local_of {
-            self.start[cell as usize + 1] += 1;
+        for &c in &self.coords_of {
+            self.start[window.local(c) as usize + 1] += 1;
         }
         for c in 1..self.start.len() {
             self.start[c] += self.start[c - 1];
@@ -239,8 +234,8 @@ impl<R: Real> CellGrid<R> {
         self.entries.resize(points.len(), 0);
         // Each cell's next free entry, in the first `start.len() − 1` slots of a cursor run
         // over `start` itself: place, then restore the starts by shifting back.
-        for (index, &cell) in self.local_of.iter().enumerate() {
-            let at = &mut self.start[cell as usize];
+        for (index, &c) in self.coords_of.iter().enumerate() {
+            let at = &mut self.start[window.local(c) as usize];
             self.entries[*at as usize] = index as u32;
             *at += 1;
         }
