@@ -33,8 +33,9 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use fixstep::fluid::{FluidDesc, FluidSolver, FluidSystem, presets};
+use fixstep::fluid::{FluidDesc, FluidSolver, FluidSystem};
 use fixstep::math::{Fx, Real, Vec3};
+use fixstep_scenes::fluid as presets;
 
 /// Steps timed in a row per sample of a running simulation.
 const RUN: u32 = 5;

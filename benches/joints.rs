@@ -1,5 +1,5 @@
 //! Joint solver time on Box2D's joint-grid benchmark in 3D
-//! ([`joint_grid`](fixstep::rigid::joints::presets::joint_grid)): 100 × 100 balls on
+//! ([`joint_grid`](fixstep_scenes::joints::joint_grid)): 100 × 100 balls on
 //! 19,800 ball joints hanging from seven static balls, 60 Hz, one thread, sleeping off,
 //! timed over its first 60 steps from rest (each sample builds the grid afresh). Box2D v3
 //! reports about 3.95 ms per step for its 2D revolute version on a Ryzen 9950X3D, with the
@@ -12,9 +12,9 @@ use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fixstep::math::{Fx, Real};
-use fixstep::rigid::joints::presets::joint_grid;
 use fixstep::scene::Scene;
 use fixstep::world::{TickInput, World};
+use fixstep_scenes::joints::joint_grid;
 
 fn grid<R: Real>(n: u32) -> Scene<R> {
     let (mut rigid, joints) = joint_grid::<R>(n);

@@ -13,8 +13,9 @@ use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fixstep::math::{Fx, Real};
-use fixstep::scene::{Scene, builtin_scene};
+use fixstep::scene::Scene;
 use fixstep::world::{TickInput, World};
+use fixstep_scenes::builtin_scene;
 
 /// The built-in scene `name` in format R, with sleeping on or off.
 fn scene<R: Real>(name: &str, sleeping: bool) -> Scene<R> {

@@ -18,7 +18,7 @@ use fixstep::world::{TickInput, World};
 /// The 64×64 cloth scene in format R, with or without its bending rows.
 fn cloth<R: Real>(bending: bool) -> Scene<R> {
     let mut scene = Scene::empty("cloth64");
-    let mut soft = fixstep::soft::presets::cloth::<R>(64);
+    let mut soft = fixstep_scenes::soft::cloth::<R>(64);
     if !bending
         && let SoftModel::Xpbd {
             bend_compliance, ..

@@ -17,8 +17,9 @@
 
 use std::time::{Duration, Instant};
 
-use fixstep::fluid::{FluidSolver, FluidSystem, presets};
+use fixstep::fluid::{FluidSolver, FluidSystem};
 use fixstep::math::{Fx, Real, Vec3};
+use fixstep_scenes::fluid as presets;
 
 /// The command line's settings.
 struct Run {

@@ -7,9 +7,9 @@
 //! a 100 × 100 grid).
 
 use fixstep::math::Fx;
-use fixstep::rigid::joints::presets::joint_grid;
 use fixstep::scene::Scene;
 use fixstep::world::TickInput;
+use fixstep_scenes::joints::joint_grid;
 
 fn main() {
     let mut args = std::env::args().skip(1);

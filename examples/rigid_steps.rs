@@ -6,8 +6,8 @@
 //! 500).
 
 use fixstep::math::Fx;
-use fixstep::scene::builtin_scene;
 use fixstep::world::TickInput;
+use fixstep_scenes::builtin_scene;
 
 fn main() {
     let name = std::env::args().nth(1).unwrap_or_else(|| "pyramid".into());

@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 cargo build --release --locked
 fixstep=${CARGO_TARGET_DIR:-target}/release/fixstep
 
-FIXSTEP_BLESS=1 cargo test --release --locked --test suite -- \
+FIXSTEP_BLESS=1 cargo test --release --locked --test tools -- \
   --exact cli_scene_files::builtin_scene_files_match_the_builtins
 
 mkdir -p replays

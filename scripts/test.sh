@@ -1,26 +1,27 @@
 #!/usr/bin/env bash
-# The project's test command (README "Testing"): formatting, lints, the documentation (its
-# links checked), every test in the test
-# profile (debug arithmetic checks on) and again in release (each re-simulating every
-# committed replay; the release run leaves out the examples and the doc test), the
-# determinism matrix's i686 row, the lints for i686, and the fuzz smoke run (every seed and
-# kept crash through every fuzz target, then 15 s of fuzzing per target). It ends with one
-# line totalling both test runs: `tests: N passed, N failed`.
+# The project's test command (README "Testing"), over the whole workspace: formatting, lints,
+# the engine crate's dependencies (no tool crate among them), the documentation (its links
+# checked), every test in the test profile (debug arithmetic checks on) and again in release
+# (each re-simulating every committed replay; the release run leaves out the examples and
+# the doc tests), the determinism matrix's i686 row, the lints for i686, and the fuzz smoke
+# run (every seed and kept crash through every fuzz target, then 15 s of fuzzing per
+# target). It ends with one line totalling both test runs: `tests: N passed, N failed`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 cargo fmt --all -- --check
-cargo clippy --all-targets --locked -- -D warnings
+cargo clippy --workspace --all-targets --locked -- -D warnings
+./scripts/check-engine-deps.sh
 # The developers' documentation, every intra-doc link resolved.
-RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps --document-private-items
+RUSTDOCFLAGS="-D warnings" cargo doc --workspace --locked --no-deps --document-private-items
 
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-cargo test --locked 2>&1 | tee "$log"
+cargo test --workspace --locked 2>&1 | tee "$log"
 # Release arithmetic (wrapping where the checked operators would not catch it) matters to
 # the library, the binary and the tests; the examples (built, not run) and the doc test
 # were checked by the run above.
-cargo test --locked --release --lib --bins --tests 2>&1 | tee -a "$log"
+cargo test --workspace --locked --release --lib --bins --tests 2>&1 | tee -a "$log"
 
 # The matrix's host rows would verify the committed replays a third and fourth time: both test
 # runs above already re-simulate every one of them (tests/suite/replay_committed.rs) with exactly
@@ -29,7 +30,7 @@ cargo test --locked --release --lib --bins --tests 2>&1 | tee -a "$log"
 ./scripts/determinism-matrix.sh --targets i686 --strict
 # Lints off x86_64 too (the row above installed the target): code used only by the AVX-512
 # paths must not be dead elsewhere.
-cargo clippy --all-targets --locked --target i686-unknown-linux-gnu \
+cargo clippy --workspace --all-targets --locked --target i686-unknown-linux-gnu \
   --target-dir target/clippy-i686 -- -D warnings
 ./scripts/fuzz.sh smoke 15
 

@@ -11,7 +11,7 @@
 //!
 //! Description and storage: [`desc`] scene types · [`build`] checks and compilation ·
 //! [`system`] the system and its step · [`substeps`] adaptive substeps · [`hashing`] canonical state · [`metrics`]
-//! reporting · [`presets`] the built-in scenes' fluids.
+//! reporting. The built-in scenes' fluids live in the `fixstep-scenes` crate.
 //!
 //! Neighbours: [`kernel`] the Wendland C2 kernel in normalised form · [`grid`] counting
 //! sort into cells · [`neighbours`] neighbour lists with kernel values.
@@ -41,7 +41,6 @@ pub mod kernel;
 mod lanes;
 mod metrics;
 pub mod neighbours;
-pub mod presets;
 mod row_sums;
 mod substeps;
 mod system;

@@ -52,7 +52,8 @@ impl<R: Real> FluidSystem<R> {
 
 #[cfg(test)]
 mod tests {
-    use crate::fluid::{FluidSolver, FluidSystem, presets};
+    use crate::fixstep_scenes::fluid as presets;
+    use crate::fluid::{FluidSolver, FluidSystem};
     use crate::math::{Fx, Real, Vec3};
 
     /// Δt = 5 ms.

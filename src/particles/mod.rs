@@ -35,7 +35,7 @@
 //! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the six schemes ·
 //! `fused_euler` their one-pass semi-implicit Euler for linear fields ·
 //! `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
-//! order · [`presets`] built-in scenes.
+//! order.
 
 mod build;
 mod commands;
@@ -47,7 +47,6 @@ mod fused_euler;
 pub mod hashing;
 pub mod integrators;
 mod metrics;
-pub mod presets;
 mod storage;
 mod system;
 pub mod user_force;

@@ -139,8 +139,8 @@ fn validate_storage<R: Real>(storage: &ParticleStorage<R>) -> Result<(), SceneEr
 
 #[cfg(test)]
 mod tests {
+    use crate::fixstep_scenes::particles::fountain;
     use crate::math::{Fx, Real};
-    use crate::particles::presets::fountain;
     use crate::particles::{ParticleSystem, ParticlesDesc};
 
     /// The fountain's particle system after 400 steps, so that slots are alive and dead.

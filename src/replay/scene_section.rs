@@ -337,7 +337,7 @@ pub enum SceneSectionError {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::builtin_scene;
+    use crate::fixstep_scenes::builtin_scene;
 
     /// The built-in dam break, its fluid's substeps adapting at CFL number 0.2.
     fn adaptive_dam_break() -> Scene<Fx> {

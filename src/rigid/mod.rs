@@ -39,7 +39,6 @@ pub mod mass;
 pub mod material;
 mod metrics;
 pub mod narrowphase;
-pub mod presets;
 mod recycle;
 pub mod shape;
 mod sleep;

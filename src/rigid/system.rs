@@ -178,6 +178,18 @@ impl<R: Real> RigidSystem<R> {
         self.bodies.slot(handle).map(|i| self.bodies.position[i])
     }
 
+    /// Places a live body's centre of mass at `position`, m, as it is: no wake, no contact
+    /// update, no velocity change. For tools that edit a snapshot's state (the network
+    /// peer's deliberate desync); a running game moves bodies with commands. False when
+    /// `handle` names no live body.
+    pub fn set_position(&mut self, handle: Handle, position: Vec3<R>) -> bool {
+        let Some(i) = self.bodies.slot(handle) else {
+            return false;
+        };
+        self.bodies.position[i] = position;
+        true
+    }
+
     /// Orientation of a live body.
     pub fn orientation(&self, handle: Handle) -> Option<crate::math::Quat<R>> {
         self.bodies.slot(handle).map(|i| self.bodies.orientation[i])

@@ -16,8 +16,7 @@
 //! and compilation · `system` storage and the step · `constraints` the XPBD rows
 //! (distance, bending, volume, attachment) · [`xpbd`] the substep loop ·
 //! [`spring_mass`] Hooke springs and the stability bound · `collide` static colliders
-//! with friction · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting ·
-//! [`presets`] built-in scenes.
+//! with friction · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting.
 //!
 //! [`Stage::Soft`]: crate::world::Stage::Soft
 
@@ -30,7 +29,6 @@ pub mod hashing;
 #[cfg(target_arch = "x86_64")]
 pub(crate) mod lanes;
 mod metrics;
-pub mod presets;
 pub mod spring_mass;
 mod system;
 mod topology;

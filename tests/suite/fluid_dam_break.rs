@@ -7,9 +7,10 @@
 //! density error (compression) stays within the solver's bound: 1 % for WCSPH, 0.1 % for
 //! DFSPH.
 
-use fixstep::fluid::{FluidSolver, FluidSystem, presets};
+use fixstep::fluid::{FluidSolver, FluidSystem};
 use fixstep::math::saturation::count_saturations;
 use fixstep::math::{Fx, Real, Vec3};
+use fixstep_scenes::fluid as presets;
 
 const TABLE: &str = include_str!("data/martin_moyce_1952_n2_a2.25in_surge_front.csv");
 

@@ -9,9 +9,10 @@
 //! kernel's curvature) dominates. Without the divergence-free solve the column explodes
 //! within 20 steps (10 m/s, 20 % mean compression).
 
-use fixstep::fluid::{FluidSolver, FluidSystem, presets};
+use fixstep::fluid::{FluidSolver, FluidSystem};
 use fixstep::math::saturation::count_saturations;
 use fixstep::math::{Fx, Real, Vec3};
+use fixstep_scenes::fluid as presets;
 
 const G: f64 = 9.81;
 

@@ -1,10 +1,12 @@
 //! The fluid in a world: bad scene fields are refused with the field named, a snapshot
 //! taken mid-run continues with the same checksums, and a snapshot file round-trips.
 
-use fixstep::fluid::{FluidBlock, FluidBox, FluidSolver, presets};
+use fixstep::fluid::{FluidBlock, FluidBox, FluidSolver};
 use fixstep::math::{Fx, Real, Vec3};
-use fixstep::scene::{Scene, builtin_scene};
+use fixstep::scene::Scene;
 use fixstep::world::{Part, TickInput, decode_snapshot, encode_snapshot};
+use fixstep_scenes::builtin_scene;
+use fixstep_scenes::fluid as presets;
 
 /// A small dam break at 60 Hz: few particles, so the test is quick.
 fn small_scene() -> Scene<Fx> {

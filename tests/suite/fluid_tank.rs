@@ -2,9 +2,10 @@
 //! rest with its density error within the solver's bound, the particle count, the walls
 //! and the range hold, and under WCSPH the pressure grows with depth as ρ₀g.
 
-use fixstep::fluid::{FluidSolver, FluidSystem, presets};
+use fixstep::fluid::{FluidSolver, FluidSystem};
 use fixstep::math::saturation::count_saturations;
 use fixstep::math::{Fx, Real, Vec3};
+use fixstep_scenes::fluid as presets;
 
 const G: f64 = 9.81;
 

@@ -5,12 +5,7 @@
 //! example `cargo test --test suite rigid_scenes::`.
 
 mod property_cases;
-mod replay_support;
 
-mod bench_accuracy;
-mod bench_stability;
-mod cli_commands;
-mod cli_scene_files;
 mod fluid_dam_break;
 mod fluid_dfsph_large_step;
 mod fluid_kernel;
@@ -25,9 +20,6 @@ mod math_scalar;
 mod math_sqrt_exp;
 mod math_state_hash;
 mod math_trig;
-mod net_inputs;
-mod net_peers;
-mod net_sync_test;
 mod particles_commands;
 mod particles_emitters;
 mod particles_forces;
@@ -35,8 +27,6 @@ mod particles_integrators;
 mod particles_kepler;
 mod particles_scene;
 mod replay_committed;
-mod replay_determinism;
-mod replay_malformed;
 mod replay_snapshot;
 mod rigid_broadphase;
 mod rigid_friction;
@@ -47,8 +37,4 @@ mod rigid_narrowphase;
 mod rigid_scenes;
 mod soft_bodies;
 mod soft_snapshot;
-mod viewer_cli;
-mod viewer_render;
 mod world_core;
-mod world_hardening;
-mod world_snapshot_files;

@@ -5,8 +5,9 @@ use fixstep::math::rng::Pcg32;
 use fixstep::math::state_hash::StateHasher;
 use fixstep::math::{Fx, Real, Vec3};
 use fixstep::particles::{
-    EmitterDesc, Integrator, Interval, ParticleDesc, ParticleSystem, ParticlesDesc, Spread, presets,
+    EmitterDesc, Integrator, Interval, ParticleDesc, ParticleSystem, ParticlesDesc, Spread,
 };
+use fixstep_scenes::particles as presets;
 
 fn hash(system: &ParticleSystem<Fx>) -> u64 {
     let mut h = StateHasher::new();

@@ -6,11 +6,12 @@ use fixstep::math::state_hash::StateHasher;
 use fixstep::math::{Fx, Real, Vec3};
 use fixstep::particles::{
     EmitterDesc, ForceDesc, Integrator, Interval, ParticleDesc, ParticleForce, ParticleSystem,
-    ParticleTemplate, ParticleView, ParticlesDesc, Spread, SpringDesc, presets,
+    ParticleTemplate, ParticleView, ParticlesDesc, Spread, SpringDesc,
 };
 use fixstep::scene::Scene;
 use fixstep::world::Handle;
 use fixstep::world::input::Target;
+use fixstep_scenes::particles as presets;
 
 fn hash(system: &ParticleSystem<Fx>) -> u64 {
     let mut h = StateHasher::new();

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use fixstep::math::Fx;
 use fixstep::replay::{Replay, VerifyOutcome, verify};
-use fixstep::scene::{BUILTIN_SCENES, builtin_scene};
+use fixstep_scenes::{BUILTIN_SCENES, builtin_scene};
 
 fn replays_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("replays")

@@ -5,10 +5,11 @@
 use fixstep::codec;
 use fixstep::math::{Fx, Real, Vec3};
 use fixstep::replay::{InputFeed, Replay, VerifyOutcome, record, verify};
-use fixstep::scene::{BUILTIN_SCENES, Scene, builtin_scene};
+use fixstep::scene::Scene;
 use fixstep::world::{
     Checksum, Command, Handle, PlayerInput, Target, TickInput, World, WorldState,
 };
+use fixstep_scenes::{BUILTIN_SCENES, builtin_scene};
 use proptest::prelude::*;
 
 /// Ticks per property case: long enough for emitters and orbits to matter, short enough

@@ -21,7 +21,7 @@ fn cube_on_ground(sideways: f64, spin: f64) -> (World<Fx>, Handle) {
         friction: Fx::from_f64(MU),
         restitution: Fx::ZERO,
     };
-    let mut ground = fixstep::rigid::presets::ground::<Fx>();
+    let mut ground = fixstep_scenes::rigid::ground::<Fx>();
     ground.material = material;
     let mut cube = BodyDesc::new(
         Shape::Box {

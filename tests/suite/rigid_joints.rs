@@ -3,13 +3,14 @@
 //! from the issue, never from this engine's output.
 
 use fixstep::math::{Fx, Quat, Real, Vec3};
-use fixstep::rigid::joints::presets::{chain_link, chain_link_length};
 use fixstep::rigid::{
     BodyDesc, JointDesc, JointKind, JointsDesc, Limits, Motor, RigidDesc, RigidSystem, Shape,
     SolverSettings, Spring,
 };
-use fixstep::scene::{Scene, builtin_scene};
+use fixstep::scene::Scene;
 use fixstep::world::{Command, Handle, PlayerInput, Target, TickInput, World};
+use fixstep_scenes::builtin_scene;
+use fixstep_scenes::joints::{chain_link, chain_link_length};
 
 fn fx(x: f64) -> Fx {
     Fx::from_f64(x)
@@ -916,7 +917,7 @@ fn a_snapshot_with_joints_continues_exactly() {
 /// not come apart (every joint within 1 cm after a second of folding).
 #[test]
 fn the_joint_grid_hangs_together() {
-    let (rigid_desc, joints) = fixstep::rigid::joints::presets::joint_grid::<Fx>(12);
+    let (rigid_desc, joints) = fixstep_scenes::joints::joint_grid::<Fx>(12);
     let mut s = Scene::empty("grid");
     s.rigid = Some(rigid_desc);
     s.joints = Some(joints);

@@ -3,10 +3,11 @@
 //! issue's acceptance list), not from this engine's output.
 
 use fixstep::math::{Fx, Real, Vec3};
-use fixstep::rigid::presets::{incline_angle, spinner_half_extents};
 use fixstep::rigid::{BodyDesc, Material, RigidDesc, RigidSystem, Shape, SolverSettings};
-use fixstep::scene::{Scene, builtin_scene};
+use fixstep::scene::Scene;
 use fixstep::world::{Handle, TickInput, World};
+use fixstep_scenes::builtin_scene;
+use fixstep_scenes::rigid::{incline_angle, spinner_half_extents};
 
 fn world_of(scene: &Scene<Fx>) -> World<Fx> {
     scene.build().expect("the scene builds")
@@ -125,7 +126,7 @@ fn bounces_never_rise_above_the_drop_height() {
         );
         ball.material.restitution = Fx::from_f64(e);
         let desc = RigidDesc {
-            bodies: vec![fixstep::rigid::presets::ground(), ball],
+            bodies: vec![fixstep_scenes::rigid::ground(), ball],
             solver: SolverSettings {
                 sleeping: false,
                 ..SolverSettings::default()
@@ -515,7 +516,7 @@ fn snapshots_carry_contacts_and_sleep() {
 /// A ball dropped onto the sleeping stack wakes it (an island wakes on contact).
 #[test]
 fn a_falling_ball_wakes_a_sleeping_stack() {
-    let mut desc = fixstep::rigid::presets::stack::<Fx>(5);
+    let mut desc = fixstep_scenes::rigid::stack::<Fx>(5);
     desc.bodies.push(BodyDesc::new(
         Shape::Sphere { radius: Fx::HALF },
         Vec3::new(Fx::ZERO, Fx::from_int(40), Fx::ZERO),
@@ -582,7 +583,7 @@ fn compounds_and_capsules_rest_on_the_ground() {
     );
     capsule.orientation = Quat::from_axis_angle(Vec3::Z, Fx::FRAC_PI_2);
     let desc = RigidDesc {
-        bodies: vec![fixstep::rigid::presets::ground(), dumbbell, capsule],
+        bodies: vec![fixstep_scenes::rigid::ground(), dumbbell, capsule],
         solver: SolverSettings::default(),
     };
     let mut world = world_of(&scene_with(

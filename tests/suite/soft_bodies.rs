@@ -3,9 +3,10 @@
 
 use fixstep::math::{Fx, Pcg32, Real, Vec3};
 use fixstep::particles::Integrator;
-use fixstep::scene::{Scene, builtin_scene};
+use fixstep::scene::Scene;
 use fixstep::soft::{SoftBodyDesc, SoftDesc, SoftModel, SoftShape, XpbdSettings};
 use fixstep::world::{TickInput, World};
+use fixstep_scenes::builtin_scene;
 
 fn idle(tick: u64) -> TickInput<Fx> {
     TickInput {
@@ -24,7 +25,7 @@ fn run(world: &mut World<Fx>, ticks: u64) {
 /// A body of one link from a pinned vertex at the origin straight down `length` m, the
 /// free vertex weighing `vertex_mass` kg.
 fn pendulum(model: SoftModel<Fx>, length: Fx, vertex_mass: Fx) -> SoftBodyDesc<Fx> {
-    let mut body = fixstep::soft::presets::body(
+    let mut body = fixstep_scenes::soft::body(
         SoftShape::Rope {
             start: Vec3::ZERO,
             end: Vec3::new(Fx::ZERO, -length, Fx::ZERO),
@@ -334,7 +335,7 @@ fn drop_on(
     along: Vec3<Fx>,
     seconds: u64,
 ) -> Vec<Vec3<Fx>> {
-    let body = fixstep::soft::presets::body(
+    let body = fixstep_scenes::soft::body(
         SoftShape::Rope {
             start,
             end: start + along * Fx::from_ratio(1, 100),
@@ -499,7 +500,7 @@ fn lattice_volume(x: &[Vec3<Fx>], n: usize) -> f64 {
 fn volume_constraints_keep_a_soft_jelly_incompressible() {
     let n = 4;
     let volume_after = |volume_compliance: Option<Fx>| {
-        let mut cube = fixstep::soft::presets::body(
+        let mut cube = fixstep_scenes::soft::body(
             SoftShape::Lattice {
                 origin: Vec3::new(Fx::ZERO, Fx::from_ratio(1, 100), Fx::ZERO),
                 spacing: Fx::from_ratio(1, 10),

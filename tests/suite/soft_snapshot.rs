@@ -3,8 +3,8 @@
 
 use fixstep::math::Fx;
 use fixstep::replay::InputFeed;
-use fixstep::scene::builtin_scene;
 use fixstep::world::{World, decode_snapshot, encode_snapshot};
+use fixstep_scenes::builtin_scene;
 
 /// Steps `world` from its tick to `end` with the scene's script.
 fn run_to(world: &mut World<Fx>, feed: &mut InputFeed<'_>, end: u64) {

@@ -3,10 +3,10 @@
 use core::time::Duration;
 
 use fixstep::math::{Fx, Real, Vec3};
-use fixstep::scene::builtin_scene;
 use fixstep::world::{
     Command, FixedTimestep, Handle, Part, PlayerInput, Target, TickInput, World, first_difference,
 };
+use fixstep_scenes::builtin_scene;
 
 fn orbits() -> World<Fx> {
     builtin_scene::<Fx>("orbits").unwrap().build().unwrap()

@@ -6,7 +6,7 @@ use crate::time_steps;
 use fixstep::fluid::{FluidBlock, FluidBox, FluidDesc, FluidSolver, FluidSystem};
 use fixstep::math::{Fx, Real, Vec3};
 use fixstep::rigid::{BodyKind, RigidSystem};
-use fixstep::scene::builtin_scene;
+use fixstep_scenes::builtin_scene;
 use fixstep::world::TickInput;
 
 fn to_f64<R: Real>(v: Vec3<R>) -> [f64; 3] {

@@ -16,13 +16,11 @@
 //! # Files
 //!
 //! [`desc`] scene types · [`build`] checks and compilation · [`storage`] slots and state ·
-//! [`breaking`] break thresholds and events · [`queries`] what the API reports ·
-//! [`presets`] the built-in joint scenes.
+//! [`breaking`] break thresholds and events · [`queries`] what the API reports.
 
 pub(crate) mod breaking;
 mod build;
 pub mod desc;
-pub mod presets;
 mod queries;
 pub(crate) mod storage;
 

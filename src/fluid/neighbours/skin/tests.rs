@@ -2,8 +2,9 @@
 //! fresh search's, and no result depends on the scratch (a clone starts without
 //! candidates, a restore keeps candidates anchored elsewhere).
 
+use crate::fixstep_scenes::fluid as presets;
 use crate::fluid::neighbours::NeighbourLists;
-use crate::fluid::{FluidSolver, FluidSystem, presets};
+use crate::fluid::{FluidSolver, FluidSystem};
 use crate::math::{Fx, Real, Vec3};
 
 /// The benchmark's cube at 8³ particles, DFSPH at Δt = 5 ms in 3 substeps.

@@ -741,7 +741,7 @@ fn tangents_that_saturate_match_the_lanes() {
 /// `ticks` ticks lane by lane and with each backend the processor has.
 #[test]
 fn scenes_match_the_lanes_with_every_backend() {
-    use crate::scene::builtin_scene;
+    use crate::fixstep_scenes::builtin_scene;
     use crate::world::TickInput;
     for (name, ticks) in [
         ("pyramid", 40),

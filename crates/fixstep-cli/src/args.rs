@@ -1,0 +1,257 @@
+//! The command line, as clap sees it. This interface is a contract: scripts and tests use it.
+
+#[cfg(feature = "net")]
+use std::net::SocketAddr;
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+
+use fixstep_viewer::View;
+
+/// Deterministic fixed-point physics: run scenes, record and verify replays.
+///
+/// With no command, runs the showcase scene.
+#[derive(Debug, Parser)]
+#[command(name = "fixstep", version)]
+pub struct Cli {
+    /// What to do (default: `run showcase`).
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// List the built-in scenes.
+    Scenes,
+    /// Run a scene, print stage timings and the final checksum.
+    Run(RunArgs),
+    /// Simulate replays again and compare every checkpoint (exit 1 on a desync, 2 on a bad
+    /// file).
+    Verify {
+        /// Replay files.
+        #[arg(required = true, value_name = "FILE.replay")]
+        files: Vec<PathBuf>,
+    },
+    /// Describe a replay: header, scene, ticks, checkpoints.
+    Info {
+        /// A replay file.
+        #[arg(value_name = "FILE.replay")]
+        file: PathBuf,
+    },
+    /// Record replays again with this build (after a deliberate change to the physics).
+    Rerecord {
+        /// Replay files, rewritten in place.
+        #[arg(required = true, value_name = "FILE.replay")]
+        files: Vec<PathBuf>,
+    },
+    /// Draw a replay or a scene: PNG frames, an animated GIF and an interactive
+    /// DIR/index.html player.
+    Render(RenderArgs),
+    /// Play a scene with other peers over UDP (GGRS), headless, with bot or scripted inputs:
+    /// prints `checksum: <hex>` last on success, exits 1 on a desync.
+    #[cfg(feature = "net")]
+    Peer(PeerArgs),
+    /// Measure the integrators: accuracy against exact solutions, and stability limits.
+    Bench {
+        /// Which benchmark.
+        #[command(subcommand)]
+        benchmark: BenchCommand,
+    },
+}
+
+/// The benchmarks of `fixstep bench`.
+#[derive(Debug, Subcommand)]
+pub enum BenchCommand {
+    /// Error and time of five problems × six integrators × four formats × a step sweep:
+    /// writes DIR/accuracy.csv and DIR/work-precision.svg, prints the measured orders.
+    Accuracy {
+        /// Output directory (created if missing).
+        #[arg(long, value_name = "DIR", default_value = "bench-out")]
+        out: PathBuf,
+        /// Fewer halvings of the step and one run per point (seconds instead of a minute).
+        #[arg(long)]
+        quick: bool,
+    },
+    /// Largest stable ωh of each integrator on the undamped and damped spring, against
+    /// theory: writes DIR/stability.csv and prints the table.
+    Stability {
+        /// Output directory (created if missing).
+        #[arg(long, value_name = "DIR", default_value = "bench-out")]
+        out: PathBuf,
+    },
+}
+
+/// Arguments of `fixstep run`.
+#[derive(Debug, Args)]
+pub struct RunArgs {
+    /// A built-in scene name (see `fixstep scenes`) or a RON scene file.
+    #[arg(value_name = "SCENE|FILE.ron", default_value = "showcase")]
+    pub scene: String,
+    /// Ticks to run (default: the scene's `ticks`).
+    #[arg(long, value_name = "N")]
+    pub ticks: Option<u64>,
+    /// Seed of the world's generator, decimal or 0x-prefixed hex (default: the scene's).
+    #[arg(long, value_name = "S", value_parser = parse_seed)]
+    pub seed: Option<u64>,
+    /// Write a replay of the run to this file.
+    #[arg(long, value_name = "OUT.replay")]
+    pub record: Option<PathBuf>,
+    /// Write metrics as CSV to this file.
+    #[arg(long, value_name = "OUT.csv")]
+    pub metrics: Option<PathBuf>,
+    /// Write a metrics row every K ticks (and after the last tick).
+    #[arg(long, value_name = "K", default_value_t = 1,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// Save the world's final state as a snapshot file.
+    #[arg(long, value_name = "OUT.snapshot")]
+    pub snapshot: Option<PathBuf>,
+    /// Continue from a snapshot of this scene instead of its first tick: the scene supplies
+    /// the script (from the snapshot's tick on) and user forces, the snapshot the state.
+    #[arg(long, value_name = "IN.snapshot", conflicts_with = "record")]
+    pub from_snapshot: Option<PathBuf>,
+}
+
+impl Default for RunArgs {
+    /// `fixstep run showcase`.
+    fn default() -> Self {
+        Self {
+            scene: "showcase".to_owned(),
+            ticks: None,
+            seed: None,
+            record: None,
+            metrics: None,
+            every: 1,
+            snapshot: None,
+            from_snapshot: None,
+        }
+    }
+}
+
+/// Arguments of `fixstep render`.
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    /// A replay file (re-simulated with its inputs), a built-in scene name or a RON scene
+    /// file (run with its script).
+    #[arg(value_name = "REPLAY|SCENE")]
+    pub input: String,
+    /// Ticks to simulate (default: the replay's ticks, or the scene's `ticks`).
+    #[arg(long, value_name = "N")]
+    pub ticks: Option<u64>,
+    /// Output directory (created if missing).
+    #[arg(long, value_name = "DIR", default_value = "render-out")]
+    pub out: PathBuf,
+    /// Draw a frame every K ticks (and after the last tick).
+    #[arg(long, value_name = "K", default_value_t = 1,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
+    /// The view of the pictures and the GIF, and the player's first view.
+    #[arg(long, value_name = "iso|front|top", default_value = "iso", value_parser = parse_view)]
+    pub view: View,
+    /// Picture size in pixels, WIDTHxHEIGHT (each 16 to 4096).
+    #[arg(long, value_name = "WxH", default_value = "640x480", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// One flat colour per body, no shading, outlines or anti-aliasing (to count bodies).
+    #[arg(long)]
+    pub flat: bool,
+}
+
+/// A view name.
+fn parse_view(text: &str) -> Result<View, String> {
+    View::from_name(text).ok_or_else(|| format!("`{text}` is not a view: use iso, front or top"))
+}
+
+/// Smallest and largest picture side, px.
+const SIDE: core::ops::RangeInclusive<u32> = 16..=4096;
+
+/// A picture size `WxH`.
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = |why: &str| format!("`{text}` is not a picture size WIDTHxHEIGHT: {why}");
+    let (w, h) = text
+        .split_once(['x', 'X'])
+        .ok_or_else(|| bad("no `x` between width and height"))?;
+    let side = |part: &str, name: &str| -> Result<u32, String> {
+        let value: u32 = part
+            .trim()
+            .parse()
+            .map_err(|e| bad(&format!("the {name} `{part}` is not a whole number ({e})")))?;
+        if SIDE.contains(&value) {
+            Ok(value)
+        } else {
+            Err(bad(&format!(
+                "the {name} {value} is outside {} to {} pixels",
+                SIDE.start(),
+                SIDE.end()
+            )))
+        }
+    };
+    Ok((side(w, "width")?, side(h, "height")?))
+}
+
+/// Arguments of `fixstep peer`.
+#[cfg(feature = "net")]
+#[derive(Debug, Args)]
+pub struct PeerArgs {
+    /// Local UDP port (0: any free port).
+    #[arg(long, value_name = "P")]
+    pub local_port: u16,
+    /// A remote peer, HOST:PORT; give one per other player, in ascending player index.
+    #[arg(long = "remote", value_name = "ADDR", required = true, value_parser = parse_address)]
+    pub remotes: Vec<SocketAddr>,
+    /// This peer's player index (the remotes take the other indices, in order).
+    #[arg(long, value_name = "I", default_value_t = 0)]
+    pub player_index: usize,
+    /// A built-in scene name or a RON scene file; every peer must run the same.
+    #[arg(long, value_name = "S", default_value = "showcase")]
+    pub scene: String,
+    /// Ticks to run (default: the scene's `ticks`).
+    #[arg(long, value_name = "T")]
+    pub ticks: Option<u64>,
+    /// Lockstep: every tick waits for every peer's input (the default).
+    #[arg(long, conflicts_with = "rollback")]
+    pub lockstep: bool,
+    /// Rollback: run ahead on predicted inputs, roll back on a misprediction.
+    #[arg(long)]
+    pub rollback: bool,
+    /// Write the replay of the session (its confirmed inputs) to this file.
+    #[arg(long, value_name = "OUT.replay")]
+    pub record: Option<PathBuf>,
+    /// Seed of the deterministic bot that plays for this peer (default: the player index).
+    #[arg(long, value_name = "SEED", value_parser = parse_seed)]
+    pub bot: Option<u64>,
+    /// Play the inputs of this RON file instead of the bot: a list of
+    /// `(tick: T, input: (action: ImpulseBody, target: 3, impulse: (0, 160, 0)))`.
+    #[arg(long, value_name = "FILE.ron", conflicts_with = "bot")]
+    pub inputs: Option<PathBuf>,
+    /// Ticks between two desync checks.
+    #[arg(long, value_name = "N", default_value_t = 10,
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub desync_every: u32,
+    /// Give up after this many seconds (synchronisation included).
+    #[arg(long, value_name = "SECONDS", default_value_t = 60,
+          value_parser = clap::value_parser!(u64).range(1..=86_400))]
+    pub timeout: u64,
+    /// Testing desync detection: once this peer has run TICK ticks, move a body by one ulp.
+    #[arg(long, value_name = "TICK", hide = true)]
+    pub nudge_at: Option<u64>,
+}
+
+/// A peer address: `HOST:PORT`, resolved (the first address the name resolves to).
+#[cfg(feature = "net")]
+fn parse_address(text: &str) -> Result<SocketAddr, String> {
+    use std::net::ToSocketAddrs;
+    text.to_socket_addrs()
+        .map_err(|e| format!("`{text}` is not a HOST:PORT address: {e}"))?
+        .next()
+        .ok_or_else(|| format!("`{text}` resolves to no address"))
+}
+
+/// A seed: decimal, or hexadecimal after `0x`.
+fn parse_seed(text: &str) -> Result<u64, String> {
+    let parsed = match text.strip_prefix("0x").or_else(|| text.strip_prefix("0X")) {
+        Some(hex) => u64::from_str_radix(hex, 16),
+        None => text.parse(),
+    };
+    parsed.map_err(|e| format!("`{text}` is not a 64-bit seed: {e}"))
+}

@@ -1,0 +1,233 @@
+//! `fixstep info`: what a replay holds, without simulating it.
+
+use std::path::Path;
+
+use super::output::print_line;
+use super::status::Status;
+use fixstep::fluid::FluidDesc;
+use fixstep::math::{Fx, Real};
+use fixstep::particles::{ForceDesc, ParticlesDesc};
+use fixstep::replay::format::FORMAT_VERSION;
+use fixstep::replay::{Replay, StateVersionCheck};
+use fixstep::rigid::JointsDesc;
+use fixstep::soft::{SoftDesc, SoftModel, SoftShape};
+use fixstep::world::STATE_VERSION;
+use fixstep::world::checksum::hex;
+
+/// Prints the header fields, a scene summary and the checkpoints of a replay.
+pub fn info(path: &Path) -> Result<Status, String> {
+    let replay =
+        Replay::read_with(path, StateVersionCheck::CurrentOrOlder).map_err(|e| e.to_string())?;
+    let header = replay
+        .header()
+        .map_err(|e| format!("{}: cannot encode the replay: {e}", path.display()))?;
+    let scene = replay.scene();
+    let gravity = scene.gravity;
+    let mut lines = vec![
+        format!("file: {}", path.display()),
+        format!("format version: {FORMAT_VERSION}"),
+        format!(
+            "state version: {} (this build: {STATE_VERSION})",
+            header.state_version
+        ),
+        format!("scalar: {}", header.scalar),
+        format!("scene: {}", scene.name),
+        format!("description: {}", scene.description),
+        format!("tick rate: {} Hz", scene.tick_rate),
+        format!("substeps: {}", scene.substeps),
+        format!("seed: {:#x}", scene.seed),
+        format!(
+            "gravity: ({}, {}, {}) m/s²",
+            gravity.x, gravity.y, gravity.z
+        ),
+        format!("particles: {}", particles_summary(scene.particles.as_ref())),
+        format!(
+            "rigid bodies: {}",
+            scene
+                .rigid
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), |r| r.body_count().to_string())
+        ),
+        format!(
+            "joints: {}",
+            scene
+                .joints
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), joints_summary)
+        ),
+        format!(
+            "soft bodies: {}",
+            scene
+                .soft
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), soft_summary)
+        ),
+        format!(
+            "fluid: {}",
+            scene
+                .fluid
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), fluid_summary)
+        ),
+        format!("ticks: {}", replay.ticks()),
+        format!("input ticks: {}", replay.inputs().len()),
+        format!(
+            "checkpoints: {} (every {} ticks)",
+            replay.checkpoints().len(),
+            replay.checksum_every()
+        ),
+        format!(
+            "sections: scene {} bytes (hash {}), inputs {} bytes (hash {})",
+            header.scene_len,
+            hex(header.scene_hash),
+            header.inputs_len,
+            hex(header.inputs_hash)
+        ),
+        format!("final checksum: {}", hex(replay.final_checksum())),
+    ];
+    if header.state_version != STATE_VERSION {
+        lines.push(format!(
+            "note: recorded with state version {}; `fixstep rerecord` records it again",
+            header.state_version
+        ));
+    }
+    for line in lines {
+        print_line(&line)?;
+    }
+    Ok(Status::Ok)
+}
+
+/// Joint count (lattice copies counted) and the count of each kind, in declaration order.
+fn joints_summary(desc: &JointsDesc<Fx>) -> String {
+    const KINDS: [&str; 8] = [
+        "ball",
+        "cone-twist",
+        "hinge",
+        "slider",
+        "fixed",
+        "rod",
+        "rope",
+        "spring",
+    ];
+    let mut counts = [0u64; 8];
+    for joint in &desc.list {
+        let count = &mut counts[usize::from(joint.kind.code())];
+        *count = count.saturating_add(copies(joint.grid.map(|g| g.count)));
+    }
+    let total = counts.iter().fold(0u64, |sum, &n| sum.saturating_add(n));
+    let kinds: Vec<String> = KINDS
+        .iter()
+        .zip(counts)
+        .filter(|&(_, n)| n > 0)
+        .map(|(kind, n)| format!("{n} {kind}"))
+        .collect();
+    format!("{total} ({})", kinds.join(", "))
+}
+
+/// Body count, each body's shape and model, vertex and collider counts, and the XPBD
+/// solver's substeps and iterations (when a body uses it) of the scene's soft bodies.
+fn soft_summary(desc: &SoftDesc<Fx>) -> String {
+    let mut vertices = 0u64;
+    let bodies: Vec<String> = desc
+        .bodies
+        .iter()
+        .map(|body| {
+            let (shape, count) = match &body.shape {
+                SoftShape::Cloth { columns, rows, .. } => (
+                    format!("{columns}x{rows} cloth"),
+                    u64::from(*columns) * u64::from(*rows),
+                ),
+                SoftShape::Rope { links, .. } => {
+                    (format!("{links}-link rope"), u64::from(*links) + 1)
+                }
+                SoftShape::Lattice {
+                    count: (x, y, z), ..
+                } => (format!("{x}x{y}x{z} lattice"), copies(Some((*x, *y, *z)))),
+            };
+            vertices = vertices.saturating_add(count);
+            let model = match body.model {
+                SoftModel::Xpbd { .. } => "XPBD",
+                SoftModel::SpringMass { .. } => "spring-mass",
+            };
+            format!("{shape}, {model}")
+        })
+        .collect();
+    let xpbd = desc
+        .bodies
+        .iter()
+        .any(|body| matches!(body.model, SoftModel::Xpbd { .. }));
+    let solver = if xpbd {
+        format!(
+            ", XPBD {} substeps of {} iterations",
+            desc.solver.substeps, desc.solver.iterations
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "{} ({}), {vertices} vertices, {} colliders{solver}",
+        desc.bodies.len(),
+        bodies.join("; "),
+        desc.colliders.len(),
+    )
+}
+
+/// Solver, spacing, blocks, emitters and substeps of the scene's fluid.
+fn fluid_summary(desc: &FluidDesc<Fx>) -> String {
+    let substeps = if desc.cfl == Fx::ZERO {
+        format!("{} substeps", desc.substeps)
+    } else {
+        format!(
+            "adaptive substeps (CFL {}), at most {}",
+            desc.cfl, desc.substeps
+        )
+    };
+    format!(
+        "{:?}, spacing {} m, {} blocks, {} emitters, {substeps}",
+        desc.solver,
+        desc.spacing,
+        desc.blocks.len(),
+        desc.emitters.len()
+    )
+}
+
+/// Particle count, templates, emitters and forces of the scene's particle section.
+fn particles_summary(particles: Option<&ParticlesDesc<Fx>>) -> String {
+    let Some(desc) = particles else {
+        return "none".to_owned();
+    };
+    let forces: Vec<&str> = desc.forces.iter().map(force_name).collect();
+    format!(
+        "{} initial, {} templates, {} emitters, {} forces ({}), {:?} integrator, capacity {}",
+        desc.particles.len(),
+        desc.templates.len(),
+        desc.emitters.len(),
+        desc.forces.len(),
+        forces.join(", "),
+        desc.integrator,
+        desc.capacity
+    )
+}
+
+/// A force generator's kind, for the summary.
+fn force_name(force: &ForceDesc<Fx>) -> &'static str {
+    match force {
+        ForceDesc::Gravity { .. } => "gravity",
+        ForceDesc::LinearDrag { .. } => "linear drag",
+        ForceDesc::QuadraticDrag { .. } => "quadratic drag",
+        ForceDesc::Damping { .. } => "damping",
+        ForceDesc::AnchoredSpring { .. } => "anchored spring",
+        ForceDesc::Spring { .. } => "spring",
+        ForceDesc::PointGravity { .. } => "point gravity",
+        ForceDesc::User { .. } => "user",
+    }
+}
+
+/// How many copies a lattice of `count` makes (1 without a lattice), saturating.
+fn copies(count: Option<(u32, u32, u32)>) -> u64 {
+    count.map_or(1, |(nx, ny, nz)| {
+        u64::from(nx)
+            .saturating_mul(u64::from(ny))
+            .saturating_mul(u64::from(nz))
+    })
+}

@@ -1,0 +1,97 @@
+//! The `fixstep` command line (one file per subcommand).
+//!
+//! ```text
+//! fixstep                      same as `fixstep run showcase`
+//! fixstep scenes               built-in scenes, `NAME  description` per line
+//! fixstep run SCENE|FILE.ron [--ticks N] [--seed S] [--record OUT.replay]
+//!                            [--metrics OUT.csv] [--every K]
+//! fixstep verify FILE.replay...
+//! fixstep info FILE.replay
+//! fixstep rerecord FILE.replay...
+//! fixstep render REPLAY|SCENE [--ticks N] [--out DIR] [--every K]
+//!                            [--view iso|front|top] [--size WxH] [--flat]
+//! fixstep peer --local-port P --remote ADDR [--remote ADDR...] [--player-index I]
+//!              [--scene S] [--ticks T] [--lockstep | --rollback] [--record OUT.replay]
+//!              [--bot SEED | --inputs FILE.ron] [--desync-every N] [--timeout SECONDS]
+//! fixstep bench accuracy [--out DIR] [--quick]
+//! fixstep bench stability [--out DIR]
+//! ```
+//!
+//! Exit status: 0 success; 1 a replay or a peer desynchronised; 2 a bad argument, an unreadable or
+//! invalid input, or a failed write. Errors are one line on standard error starting with
+//! `error: `.
+
+mod args;
+mod bench;
+mod info;
+mod metrics_csv;
+mod output;
+#[cfg(feature = "net")]
+mod peer;
+mod progress;
+mod render;
+mod rerecord;
+mod run;
+mod scene_arg;
+mod scenes;
+mod status;
+mod timing_table;
+mod verify;
+
+use std::ffi::OsString;
+
+use clap::Parser;
+
+#[cfg(feature = "net")]
+pub use args::PeerArgs;
+pub use args::{BenchCommand, Cli, Command, RenderArgs, RunArgs};
+pub use status::Status;
+
+/// Runs the command line of this process; returns the exit code.
+///
+/// A panic would be a bug in fixstep; it is reported as one `error:` line (and the process
+/// exits with Rust's panic status, 101), without the default multi-line report.
+pub fn main() -> i32 {
+    std::panic::set_hook(Box::new(|info| {
+        let report = info.to_string().replace('\n', " ");
+        output::eprint_line(&format!(
+            "error: internal error (a bug in fixstep): {report}"
+        ));
+    }));
+    main_with_args(std::env::args_os())
+}
+
+/// Runs a command line (`args` starts with the program name); returns the exit code.
+pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone>) -> i32 {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(error) => {
+            // Usage errors exit 2; --help and --version exit 0.
+            let _ = error.print();
+            return error.exit_code();
+        }
+    };
+    if let Err(message) = fixstep::math::cpu::cap_from_env() {
+        output::eprint_line(&format!("error: {message}"));
+        return Status::Invalid.code();
+    }
+    let result = match cli.command {
+        None => run::run(&RunArgs::default()),
+        Some(Command::Scenes) => scenes::scenes(),
+        Some(Command::Run(args)) => run::run(&args),
+        Some(Command::Verify { files }) => verify::verify_files(&files),
+        Some(Command::Info { file }) => info::info(&file),
+        Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
+        Some(Command::Render(args)) => render::render(&args),
+        #[cfg(feature = "net")]
+        Some(Command::Peer(args)) => peer::peer(&args),
+        Some(Command::Bench { benchmark }) => bench::bench(&benchmark),
+    };
+    match result {
+        Ok(status) => status.code(),
+        Err(message) => {
+            output::eprint_line(&format!("error: {message}"));
+            Status::Invalid.code()
+        }
+    }
+}

@@ -1,0 +1,5 @@
+//! The `fixstep` binary: see [`fixstep_cli`].
+
+fn main() {
+    std::process::exit(fixstep_cli::main())
+}

@@ -1,0 +1,209 @@
+//! fixstep's built-in scenes, addressable by name: the samples a new user runs first, kept
+//! apart from the engine as Box2D keeps its samples apart from its library.
+//!
+//! [`builtin_scene`] builds one by name; [`BUILTIN_SCENES`] lists them. The modules hold the
+//! pieces the scenes are made of, per subsystem, for tests and benchmarks to reuse.
+
+pub mod fluid;
+pub mod joints;
+pub mod particles;
+pub mod rigid;
+pub mod soft;
+
+use fixstep::fluid::FluidSolver;
+use fixstep::math::Real;
+use fixstep::scene::Scene;
+
+/// Name and one-line description of every built-in scene, in listing order.
+pub const BUILTIN_SCENES: [(&str, &str); 21] = [
+    (
+        "showcase",
+        "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
+    ),
+    (
+        "fountain",
+        "emitters spraying particles up against gravity and quadratic drag",
+    ),
+    (
+        "orbits",
+        "bodies on Kepler-like orbits around a softened point mass",
+    ),
+    (
+        "pyramid",
+        "210 unit boxes in a pyramid of base 20 on the ground, standing and falling asleep",
+    ),
+    ("stack", "10 unit boxes stacked on the ground"),
+    (
+        "balls",
+        "4096 balls dropped in a 16x16x16 lattice into an open box of 5 static boxes",
+    ),
+    (
+        "falling",
+        "1000 balls falling freely, with nothing to hit: the cost of integration alone",
+    ),
+    (
+        "cradle",
+        "Newton's cradle: a ball strikes a row of five elastic balls and the last one leaves",
+    ),
+    (
+        "incline",
+        "blocks on 30 degree slopes: one slides at mu = 0.3, one sticks at mu = 0.6",
+    ),
+    (
+        "spinner",
+        "a box spun about its intermediate axis flips over and over (Dzhanibekov effect)",
+    ),
+    (
+        "chain",
+        "a chain of 20 capsule links on ball joints, hung from a fixed point and released horizontal",
+    ),
+    (
+        "bridge",
+        "a bridge of 20 hinged planks between two pillars, with six boxes dropped on it",
+    ),
+    (
+        "ragdolls",
+        "four ragdolls (capsules on cone-twist and hinge joints with limits) tumbling down stairs",
+    ),
+    (
+        "falling_hinges",
+        "Box2D's determinism scene in 3D: 4 towers of 30 boxes on limited, sprung hinges falling over",
+    ),
+    (
+        "dam_break",
+        "Martin & Moyce's collapsing water column (a = 57 mm, height 2a), 5 particles across a, in a thin 3D slab, DFSPH",
+    ),
+    (
+        "tank",
+        "125 particles of water at rest in a 10 cm cube, DFSPH",
+    ),
+    (
+        "pour",
+        "a jet of 216 water particles poured into an empty box, DFSPH",
+    ),
+    (
+        "cloth",
+        "a 32x32 inextensible XPBD cloth pinned at two corners, falling and swinging",
+    ),
+    (
+        "curtain",
+        "a 32x32 cloth blown by wind, its top edge slid to and fro on a rail by inputs",
+    ),
+    ("rope", "a 20-link XPBD rope pendulum released horizontal"),
+    (
+        "jelly",
+        "a 6x6x6 spring-mass cube dropped on the ground, wobbling",
+    ),
+];
+
+/// The built-in scene called `name`.
+pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
+    let (name, description) = BUILTIN_SCENES.iter().find(|(n, _)| *n == name)?;
+    let mut scene = Scene::empty(name);
+    scene.description = (*description).to_owned();
+    scene.seed = 0x5eed;
+    match *name {
+        "showcase" => {
+            scene.particles = Some(particles::showcase_particles());
+            let mut bodies = rigid::showcase();
+            let (jointed, showcase_joints) = joints::showcase(bodies.body_count());
+            bodies.bodies.extend(jointed);
+            scene.rigid = Some(bodies);
+            scene.joints = Some(showcase_joints);
+            scene.soft = Some(soft::showcase());
+            scene.fluid = Some(fluid::showcase());
+            scene.ticks = 600;
+        }
+        "fountain" => {
+            scene.particles = Some(particles::fountain());
+            scene.ticks = 600;
+        }
+        "orbits" => {
+            scene.gravity = fixstep::math::Vec3::ZERO;
+            scene.particles = Some(particles::orbits());
+            scene.ticks = 1200;
+        }
+        "pyramid" => {
+            scene.rigid = Some(rigid::pyramid(20));
+            scene.ticks = 1000;
+        }
+        "stack" => {
+            scene.rigid = Some(rigid::stack(10));
+            scene.ticks = 420;
+        }
+        "balls" => {
+            scene.rigid = Some(rigid::balls(16));
+            scene.ticks = 500;
+        }
+        "falling" => {
+            scene.rigid = Some(rigid::falling(1000));
+            scene.ticks = 1000;
+        }
+        "cradle" => {
+            scene.gravity = fixstep::math::Vec3::ZERO;
+            scene.rigid = Some(rigid::cradle());
+            scene.ticks = 180;
+        }
+        "incline" => {
+            scene.rigid = Some(rigid::incline());
+            scene.ticks = 180;
+        }
+        "spinner" => {
+            scene.gravity = fixstep::math::Vec3::ZERO;
+            scene.rigid = Some(rigid::spinner());
+            scene.ticks = 600;
+        }
+        "chain" => {
+            let (bodies, chain) = joints::chain(20, R::from_int(22));
+            (scene.rigid, scene.joints) = (Some(bodies), Some(chain));
+            scene.ticks = 600;
+        }
+        "bridge" => {
+            let (bodies, bridge) = joints::bridge(20);
+            (scene.rigid, scene.joints) = (Some(bodies), Some(bridge));
+            scene.ticks = 600;
+        }
+        "ragdolls" => {
+            let (bodies, dolls) = joints::ragdolls(4);
+            (scene.rigid, scene.joints) = (Some(bodies), Some(dolls));
+            scene.ticks = 600;
+        }
+        "falling_hinges" => {
+            let (bodies, hinges) = joints::falling_hinges(4, 30);
+            (scene.rigid, scene.joints) = (Some(bodies), Some(hinges));
+            scene.ticks = 600;
+        }
+        "dam_break" => {
+            scene.fluid = Some(fluid::dam_break(5, 2, FluidSolver::Dfsph));
+            scene.ticks = 12;
+        }
+        "tank" => {
+            scene.fluid = Some(fluid::tank(5, FluidSolver::Dfsph));
+            scene.ticks = 30;
+        }
+        "pour" => {
+            scene.fluid = Some(fluid::pour(216));
+            scene.ticks = 60;
+        }
+        "cloth" => {
+            scene.soft = Some(soft::cloth(32));
+            scene.ticks = 600;
+        }
+        "curtain" => {
+            scene.soft = Some(soft::curtain());
+            scene.script = soft::curtain_script();
+            scene.ticks = 600;
+        }
+        "rope" => {
+            scene.soft = Some(soft::rope(20));
+            scene.ticks = 600;
+        }
+        "jelly" => {
+            scene.soft = Some(soft::jelly());
+            scene.substeps = 10;
+            scene.ticks = 300;
+        }
+        _ => return None,
+    }
+    Some(scene)
+}

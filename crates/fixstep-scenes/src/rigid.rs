@@ -1,0 +1,299 @@
+//! Rigid-body sections of the built-in scenes. Every constant is an exact ratio or an
+//! integer, so the presets are the same bits on every machine.
+
+use fixstep::math::{Quat, Real, Vec3};
+use fixstep::rigid::Material;
+use fixstep::rigid::Shape;
+use fixstep::rigid::{BodyDesc, BodyKind, Grid, RigidDesc, SolverSettings};
+
+/// `num/den` in the scalar format.
+fn ratio<R: Real>(num: i64, den: i64) -> R {
+    R::from_ratio(num, den)
+}
+
+/// The static ground: the half-space y ≤ 0.
+pub fn ground<R: Real>() -> BodyDesc<R> {
+    BodyDesc::new(
+        Shape::Plane {
+            normal: Vec3::Y,
+            offset: R::ZERO,
+        },
+        Vec3::ZERO,
+    )
+    .fixed()
+}
+
+/// A unit cube (half extents ½ m) of density 1000 kg/m³ (1000 kg).
+fn unit_box<R: Real>(position: Vec3<R>) -> BodyDesc<R> {
+    BodyDesc::new(
+        Shape::Box {
+            half_extents: Vec3::splat(R::HALF),
+        },
+        position,
+    )
+}
+
+/// A 2D pyramid of unit cubes on the ground, `base` cubes in the bottom row and one fewer
+/// in each row above (base 20: 210 cubes), the cubes of a row 1 m apart, resting exactly on
+/// each other.
+pub fn pyramid<R: Real>(base: u32) -> RigidDesc<R> {
+    let mut bodies = vec![ground()];
+    for row in 0..base {
+        let count = base - row;
+        let mut body = unit_box(Vec3::new(
+            R::from_ratio(-(i64::from(count) - 1), 2),
+            R::HALF + R::from_int(row as i32),
+            R::ZERO,
+        ));
+        body.grid = Some(Grid {
+            count: (count, 1, 1),
+            spacing: Vec3::new(R::ONE, R::ZERO, R::ZERO),
+        });
+        bodies.push(body);
+    }
+    RigidDesc {
+        bodies,
+        solver: SolverSettings::default(),
+    }
+}
+
+/// `height` unit cubes stacked on the ground, each resting exactly on the one below.
+pub fn stack<R: Real>(height: u32) -> RigidDesc<R> {
+    let mut body = unit_box(Vec3::new(R::ZERO, R::HALF, R::ZERO));
+    body.grid = Some(Grid {
+        count: (1, height, 1),
+        spacing: Vec3::Y,
+    });
+    RigidDesc {
+        bodies: vec![ground(), body],
+        solver: SolverSettings::default(),
+    }
+}
+
+/// `n`³ balls of radius ½ m on a lattice 1.1 m apart, dropped into an open box: a floor and
+/// four walls (static boxes 1 m thick) enclosing 20 m × 20 m, 20 m high. Sleeping off, as in
+/// the benchmark this scene reproduces.
+pub fn balls<R: Real>(n: u32) -> RigidDesc<R> {
+    let wall = |centre: Vec3<R>, half: Vec3<R>| {
+        BodyDesc::new(Shape::Box { half_extents: half }, centre).fixed()
+    };
+    let ten = R::from_int(10);
+    let half_height = R::from_int(10);
+    let mut bodies = vec![
+        wall(
+            Vec3::new(R::ZERO, -R::HALF, R::ZERO),
+            Vec3::new(R::from_int(11), R::HALF, R::from_int(11)),
+        ),
+        wall(
+            Vec3::new(-ten - R::HALF, half_height, R::ZERO),
+            Vec3::new(R::HALF, half_height, R::from_int(11)),
+        ),
+        wall(
+            Vec3::new(ten + R::HALF, half_height, R::ZERO),
+            Vec3::new(R::HALF, half_height, R::from_int(11)),
+        ),
+        wall(
+            Vec3::new(R::ZERO, half_height, -ten - R::HALF),
+            Vec3::new(ten, half_height, R::HALF),
+        ),
+        wall(
+            Vec3::new(R::ZERO, half_height, ten + R::HALF),
+            Vec3::new(ten, half_height, R::HALF),
+        ),
+    ];
+    let spacing = ratio::<R>(11, 10);
+    let start = -(spacing * R::from_int(n as i32 - 1)) * R::HALF;
+    let mut ball = BodyDesc::new(
+        Shape::Sphere { radius: R::HALF },
+        Vec3::new(start, R::from_int(1), start),
+    );
+    ball.grid = Some(Grid {
+        count: (n, n, n),
+        spacing: Vec3::splat(spacing),
+    });
+    bodies.push(ball);
+    RigidDesc {
+        bodies,
+        solver: SolverSettings {
+            sleeping: false,
+            ..SolverSettings::default()
+        },
+    }
+}
+
+/// `count` balls falling freely from a lattice (no ground, no contacts): the cost of a
+/// body that only integrates.
+pub fn falling<R: Real>(count: u32) -> RigidDesc<R> {
+    let mut ball = BodyDesc::new(Shape::Sphere { radius: R::HALF }, Vec3::ZERO);
+    ball.grid = Some(Grid {
+        count: (count, 1, 1),
+        spacing: Vec3::new(R::TWO, R::ZERO, R::ZERO),
+    });
+    RigidDesc {
+        bodies: vec![ball],
+        solver: SolverSettings {
+            sleeping: false,
+            ..SolverSettings::default()
+        },
+    }
+}
+
+/// Newton's cradle without strings, in zero gravity: five frictionless, perfectly elastic
+/// balls of radius ½ m in a row along x with 0.1 m between neighbours, and a sixth
+/// approaching the row from the left at 2 m/s. The gaps make each collision a two-body one,
+/// as the small gaps of a real cradle do; balls pressed together would share the impulse.
+pub fn cradle<R: Real>() -> RigidDesc<R> {
+    let elastic = Material {
+        friction: R::ZERO,
+        restitution: R::ONE,
+    };
+    let mut row = BodyDesc::new(Shape::Sphere { radius: R::HALF }, Vec3::ZERO);
+    row.material = elastic;
+    row.grid = Some(Grid {
+        count: (5, 1, 1),
+        spacing: Vec3::new(ratio(11, 10), R::ZERO, R::ZERO),
+    });
+    let mut striker = BodyDesc::new(
+        Shape::Sphere { radius: R::HALF },
+        Vec3::new(-R::from_int(2), R::ZERO, R::ZERO),
+    );
+    striker.material = elastic;
+    striker.velocity = Vec3::new(R::TWO, R::ZERO, R::ZERO);
+    RigidDesc {
+        bodies: vec![striker, row],
+        solver: SolverSettings::default(),
+    }
+}
+
+/// The slope of the incline scene: 30° (sin 30° = ½ exactly, cos 30° = √3/2).
+pub fn incline_angle<R: Real>() -> R {
+    R::PI / R::from_int(6)
+}
+
+/// Two 30° slopes (static boxes rotated about z) side by side along z, and on each a unit
+/// cube at rest: on the first both surfaces have μ = 0.3 (the cube slides at
+/// g(sin θ − μ cos θ) ≈ 2.36 m/s²), on the second μ = 0.6 > tan 30° (it sticks).
+pub fn incline<R: Real>() -> RigidDesc<R> {
+    let angle = incline_angle::<R>();
+    let tilt = Quat::from_axis_angle(Vec3::Z, angle);
+    let (sin, cos) = angle.sin_cos();
+    let mut bodies = Vec::new();
+    for (k, friction) in [ratio::<R>(3, 10), ratio::<R>(6, 10)]
+        .into_iter()
+        .enumerate()
+    {
+        let z = R::from_int(3 * k as i32);
+        let material = Material {
+            friction,
+            restitution: R::ZERO,
+        };
+        // The slope: 40 m long, 1 m thick, its top face through the origin.
+        let normal = Vec3::new(-sin, cos, R::ZERO);
+        let mut slope = BodyDesc::new(
+            Shape::Box {
+                half_extents: Vec3::new(R::from_int(20), R::HALF, R::ONE),
+            },
+            Vec3::new(R::ZERO, R::ZERO, z) - normal * R::HALF,
+        )
+        .fixed();
+        slope.orientation = tilt;
+        slope.material = material;
+        // The cube resting on the top face, 5 m up the slope.
+        let along = Vec3::new(cos, sin, R::ZERO);
+        let mut cube =
+            unit_box(Vec3::new(R::ZERO, R::ZERO, z) + along * R::from_int(5) + normal * R::HALF);
+        cube.orientation = tilt;
+        cube.material = material;
+        bodies.push(slope);
+        bodies.push(cube);
+    }
+    RigidDesc {
+        bodies,
+        solver: SolverSettings::default(),
+    }
+}
+
+/// Half extents of the spinner's box: its principal moments are distinct, with the middle
+/// one about y.
+pub fn spinner_half_extents<R: Real>() -> Vec3<R> {
+    Vec3::new(ratio(1, 10), ratio(3, 10), ratio(5, 10))
+}
+
+/// A box spinning in zero gravity at 10 rad/s about its intermediate axis (y), perturbed by
+/// 0.01 rad/s about x: it flips periodically (the Dzhanibekov effect).
+pub fn spinner<R: Real>() -> RigidDesc<R> {
+    let mut body = BodyDesc::new(
+        Shape::Box {
+            half_extents: spinner_half_extents(),
+        },
+        Vec3::ZERO,
+    );
+    body.angular_velocity = Vec3::new(ratio(1, 100), R::from_int(10), R::ZERO);
+    body.kind = BodyKind::Dynamic;
+    RigidDesc {
+        bodies: vec![body],
+        solver: SolverSettings {
+            sleeping: false,
+            ..SolverSettings::default()
+        },
+    }
+}
+
+/// The rigid part of the showcase, 10 m behind the particles (z = −10): a stack of four unit
+/// cubes, three bouncy balls (e = 0.6) dropped on and beside it, a capsule tumbling down
+/// from above, and a dumbbell (a compound of two balls on a bar) landing on one end, all on
+/// the ground plane y ≤ 0.
+pub fn showcase<R: Real>() -> RigidDesc<R> {
+    use fixstep::rigid::Part;
+    let z = -R::from_int(10);
+    let mut stack = unit_box(Vec3::new(R::ZERO, R::HALF, z));
+    stack.grid = Some(Grid {
+        count: (1, 4, 1),
+        spacing: Vec3::Y,
+    });
+    let mut balls = BodyDesc::new(
+        Shape::Sphere {
+            radius: ratio(3, 10),
+        },
+        Vec3::new(-R::ONE, R::from_int(6), z),
+    );
+    balls.material.restitution = ratio(6, 10);
+    balls.grid = Some(Grid {
+        count: (3, 1, 1),
+        spacing: Vec3::new(R::ONE, R::ONE, R::ZERO),
+    });
+    let mut capsule = BodyDesc::new(
+        Shape::Capsule {
+            radius: ratio(1, 4),
+            half_height: ratio(1, 2),
+        },
+        Vec3::new(R::TWO, R::from_int(3), z),
+    );
+    capsule.orientation = Quat::from_axis_angle(Vec3::new(R::ONE, R::ZERO, R::ONE), R::ONE);
+    capsule.angular_velocity = Vec3::new(R::ZERO, R::ZERO, R::from_int(3));
+    let ball = |x: i32| Part {
+        rotation: Quat::IDENTITY,
+        translation: Vec3::new(R::from_ratio(i64::from(x), 2), R::ZERO, R::ZERO),
+        shape: Shape::Sphere {
+            radius: ratio(1, 4),
+        },
+    };
+    let bar = Part {
+        rotation: Quat::IDENTITY,
+        translation: Vec3::ZERO,
+        shape: Shape::Box {
+            half_extents: Vec3::new(R::HALF, ratio(1, 20), ratio(1, 20)),
+        },
+    };
+    let mut dumbbell = BodyDesc::new(
+        Shape::Compound {
+            parts: vec![ball(-1), bar, ball(1)],
+        },
+        Vec3::new(-R::from_int(3), R::TWO, z),
+    );
+    dumbbell.orientation = Quat::from_axis_angle(Vec3::Z, ratio(1, 2));
+    RigidDesc {
+        bodies: vec![ground(), stack, balls, capsule, dumbbell],
+        solver: SolverSettings::default(),
+    }
+}

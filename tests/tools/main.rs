@@ -1,0 +1,20 @@
+//! The tools' integration tests: the `fixstep` binary, the viewer, the network peer and the
+//! benchmark harness, in one test binary of the `fixstep-cli` package (the binary is built
+//! for them). The engine's own tests are `tests/suite`. Run one file's tests with
+//! `cargo test -p fixstep-cli --test tools FILE::`.
+
+mod replay_support;
+
+mod bench_accuracy;
+mod bench_stability;
+mod cli_commands;
+mod cli_scene_files;
+mod net_inputs;
+mod net_peers;
+mod net_sync_test;
+mod replay_determinism;
+mod replay_malformed;
+mod viewer_cli;
+mod viewer_render;
+mod world_hardening;
+mod world_snapshot_files;
