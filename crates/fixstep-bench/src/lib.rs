@@ -1,3 +1,6 @@
+// The modules' documentation is for developers and links to private items (read it with
+// `cargo doc --document-private-items`, as the test command builds it).
+#![allow(rustdoc::private_intra_doc_links)]
 // ok-det: the benchmark module (reporting code); f64 appears only in reference solutions, errors, timings and plots, never in a tick.
 //! Benchmarks of the integrators: accuracy against exact solutions and stability limits.
 //!

@@ -21,6 +21,10 @@
 //! invalid input, or a failed write. Errors are one line on standard error starting with
 //! `error: `.
 
+// The modules' documentation is for developers and links to private items (read it with
+// `cargo doc --document-private-items`, as the test command builds it).
+#![allow(rustdoc::private_intra_doc_links)]
+
 mod args;
 mod bench;
 mod info;

@@ -9,6 +9,10 @@
 //! [`sync_test`](fn@sync_test) runs GGRS's determinism test on a scene; [`run_peer`] runs one peer of a
 //! networked session (`fixstep peer`).
 
+// The modules' documentation is for developers and links to private items (read it with
+// `cargo doc --document-private-items`, as the test command builds it).
+#![allow(rustdoc::private_intra_doc_links)]
+
 mod bot;
 mod checksum;
 mod config;

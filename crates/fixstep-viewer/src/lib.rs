@@ -16,6 +16,10 @@
 //! Output is deterministic: the same replay gives the same PNG, GIF and HTML bytes (no
 //! timestamps; sorting by layer, depth and list order).
 
+// The modules' documentation is for developers and links to private items (read it with
+// `cargo doc --document-private-items`, as the test command builds it).
+#![allow(rustdoc::private_intra_doc_links)]
+
 pub mod colour;
 pub mod draw_fluid;
 pub mod draw_joints;
