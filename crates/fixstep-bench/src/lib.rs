@@ -1,7 +1,3 @@
-// The modules' documentation is for developers and links to private items (read it with
-// `cargo doc --document-private-items`, as the test command builds it).
-#![allow(rustdoc::private_intra_doc_links)]
-// ok-det: the benchmark module (reporting code); f64 appears only in reference solutions, errors, timings and plots, never in a tick.
 //! Benchmarks of the integrators: accuracy against exact solutions and stability limits.
 //!
 //! This is reporting code, run by `fixstep bench accuracy` and `fixstep bench stability`.
@@ -18,6 +14,11 @@
 //! [`sweep`] the timed accuracy sweep · [`order`] measured orders of convergence · `plot`
 //! the work-precision SVG · [`stability`] stability limits · `report` CSV files and printed
 //! tables.
+
+// ok-det: the benchmark module (reporting code); f64 appears only in reference solutions, errors, timings and plots, never in a tick.
+// The modules' documentation is for developers and links to private items (read it with
+// `cargo doc --document-private-items`, as the test command builds it).
+#![allow(rustdoc::private_intra_doc_links)]
 
 pub mod elliptic;
 pub mod exact;
