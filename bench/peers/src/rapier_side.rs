@@ -1,4 +1,4 @@
-//! Rapier's side: the same scenes as fixstep's built-in ones (`src/rigid/presets.rs`),
+//! Rapier's side: the same scenes as fixstep's built-in ones (`crates/fixstep-scenes/src/rigid.rs`),
 //! bodies for bodies, with Rapier's defaults otherwise (friction 0.5, restitution 0).
 
 use crate::scenes::{RigidRun, Scene};

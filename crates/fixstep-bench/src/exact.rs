@@ -2,7 +2,7 @@
 //! Closed-form solutions of the benchmark problems that have one, in f64.
 //!
 //! They match the tables in the project's reference folder (checked in
-//! `tests/suite/bench_accuracy.rs`): `damped_oscillator_reference.csv` and
+//! `tests/tools/bench_accuracy.rs`): `damped_oscillator_reference.csv` and
 //! `projectile_linear_drag_reference.csv`, both computed with mpmath from the same formulas.
 
 /// Displacement of the harmonic oscillator x'' = −ω² x released from rest at x₀ (m):

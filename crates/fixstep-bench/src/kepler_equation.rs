@@ -5,7 +5,7 @@
 //! motion is n = √(μ/a³) = 1 rad/s and the period 2π s), eccentricity e, starting at
 //! periapsis q₀ = (1 − e, 0), p₀ = (0, √((1 + e)/(1 − e))) — the convention of
 //! Hairer, Lubich & Wanner, *Geometric Numerical Integration*, §I.2.3, and of
-//! `kepler_e0.5_reference.csv` (checked in `tests/suite/bench_accuracy.rs`).
+//! `kepler_e0.5_reference.csv` (checked in `tests/tools/bench_accuracy.rs`).
 
 /// The eccentric anomaly E (rad) solving Kepler's equation E − e sin E = M for the mean
 /// anomaly M (rad) and eccentricity 0 ≤ e < 1, by Newton's method from E = M + e sin M,
