@@ -10,8 +10,8 @@ use crate::particles::{ForceDesc, ParticlesDesc};
 use crate::replay::format::FORMAT_VERSION;
 use crate::replay::{Replay, StateVersionCheck};
 use crate::rigid::JointsDesc;
-use crate::rigid::build::copies;
 use crate::soft::{SoftDesc, SoftModel, SoftShape};
+use crate::types::lattice_copies as copies;
 use crate::world::STATE_VERSION;
 use crate::world::checksum::hex;
 

@@ -44,6 +44,7 @@ pub mod neighbours;
 pub mod presets;
 mod row_sums;
 mod substeps;
+mod subsystem;
 mod system;
 mod wcsph;
 mod xsph;

@@ -17,8 +17,8 @@ use super::storage::{NewParticle, ParticleStorage};
 use super::system::ParticleSystem;
 use super::user_force::UserForceRegistry;
 use crate::math::{Real, Vec3};
-use crate::scene::SceneError;
-use crate::world::Handle;
+use crate::types::Handle;
+use crate::types::SceneError;
 
 /// `Ok` when `ok`, otherwise the error about `field`.
 fn ensure(

@@ -12,8 +12,8 @@ use serde::{Deserialize, Serialize};
 use super::storage::NewParticle;
 use super::system::ParticleSystem;
 use crate::math::{Real, Vec3};
-use crate::world::Handle;
-use crate::world::input::{Command, Target};
+use crate::types::Handle;
+use crate::types::{Command, Target};
 
 /// A compiled particle template: what `spawn` creates.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -34,7 +34,7 @@ pub const MAX_CAPACITY: u32 = 1 << 20;
 pub const MAX_EMISSION_RATE: i32 = 1_000_000;
 
 /// A particle system: its integrator, its capacity, the particles present at tick 0, the
-/// templates that [`Command::Spawn`](crate::world::Command::Spawn) creates from, the
+/// templates that [`Command::Spawn`](crate::types::Command::Spawn) creates from, the
 /// emitters and the force generators.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "", deny_unknown_fields)]

@@ -17,7 +17,7 @@ use super::desc::SpringDesc;
 use super::storage::Attributes;
 use super::user_force::{ParticleView, UserForceRegistry};
 use crate::math::{Fraction, Real, Vec3};
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// The compiled force list of a system, split by how each entry acts.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]

@@ -49,6 +49,7 @@ pub mod integrators;
 mod metrics;
 pub mod presets;
 mod storage;
+mod subsystem;
 mod system;
 pub mod user_force;
 mod validate;

@@ -10,8 +10,8 @@ use super::storage::ParticleStorage;
 use super::user_force::{ParticleForce, UserForceRegistry};
 use crate::math::rng::Pcg32;
 use crate::math::{Fx, Real, Vec3};
-use crate::scene::SceneError;
-use crate::world::Handle;
+use crate::types::Handle;
+use crate::types::SceneError;
 
 /// A deterministic particle system: point masses in structure-of-arrays storage, emitters,
 /// force generators and one of six integrators.

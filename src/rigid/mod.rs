@@ -45,6 +45,7 @@ pub mod shape;
 mod sleep;
 mod solve;
 pub(crate) mod solver;
+mod subsystem;
 mod system;
 pub mod transform;
 

@@ -2,11 +2,9 @@
 
 pub mod builtin;
 mod description;
-pub mod error;
 mod load;
 
+pub use crate::types::{MAX_SUBSTEPS, MAX_TICK_RATE, SceneError};
 pub use builtin::{BUILTIN_SCENES, builtin_scene};
-pub(crate) use description::check_rates;
-pub use description::{MAX_SUBSTEPS, MAX_TICK_RATE, Scene};
-pub use error::SceneError;
+pub use description::Scene;
 pub use load::{load_scene_file, parse_scene};

@@ -10,8 +10,7 @@ use super::system::{Body, Model, Scratch, SoftSystem, Vertices};
 use super::topology::{self, Topology};
 use crate::math::{Real, Vec3};
 use crate::rigid::Shape;
-use crate::rigid::build::copies;
-use crate::scene::SceneError;
+use crate::types::{SceneError, lattice_copies};
 
 /// The largest coordinate, size or speed a scene may use (m, m/s).
 const MAX_MAGNITUDE: i32 = 100_000;
@@ -677,7 +676,7 @@ fn check_shape<R: Real>(shape: &SoftShape<R>) -> Result<u64, SceneError> {
                     format!("must be above 0, the block within {MAX_MAGNITUDE} m"),
                 ));
             }
-            Ok(copies(Some(count)))
+            Ok(lattice_copies(Some(count)))
         }
     }
     .and_then(|count| {

@@ -19,7 +19,7 @@
 //! with friction · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting ·
 //! [`presets`] built-in scenes.
 //!
-//! [`Stage::Soft`]: crate::world::Stage::Soft
+//! [`Stage::Soft`]: crate::types::Stage::Soft
 
 mod build;
 mod collide;
@@ -32,6 +32,7 @@ pub(crate) mod lanes;
 mod metrics;
 pub mod presets;
 pub mod spring_mass;
+mod subsystem;
 mod system;
 mod topology;
 pub mod xpbd;
