@@ -9,7 +9,8 @@ use super::desc::{
 use super::emitter::EmitterState;
 use super::grid::CellGrid;
 use super::kernel::{Kernel, lattice_reach};
-use super::system::{FluidSettings, FluidSystem, Scratch};
+use super::settings::FluidSettings;
+use super::system::{FluidSystem, Scratch};
 use crate::math::{Real, Vec3};
 use crate::types::SceneError;
 
