@@ -4,7 +4,6 @@
 //! Errors name the field relative to the particle description (`emitters[2].rate`); the
 //! scene prefixes `particles.`.
 
-use super::commands::SpawnTemplate;
 use super::damping::Damping;
 use super::desc::{
     EmitterDesc, ForceDesc, Interval, MAX_CAPACITY, MAX_EMISSION_RATE, ParticlesDesc, Spread,
@@ -15,6 +14,7 @@ use super::forces::{AccelerationField, ForceGenerator, ForceSet};
 use super::integrators::Scratch;
 use super::storage::{NewParticle, ParticleStorage};
 use super::system::ParticleSystem;
+use super::template::SpawnTemplate;
 use super::user_force::UserForceRegistry;
 use crate::math::{Real, Vec3};
 use crate::types::Handle;

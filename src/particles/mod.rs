@@ -44,6 +44,7 @@ pub mod desc;
 pub mod emitter;
 pub(crate) mod forces;
 mod fused_euler;
+mod groups;
 pub mod hashing;
 pub mod integrators;
 mod metrics;
@@ -51,6 +52,7 @@ pub mod presets;
 mod storage;
 mod subsystem;
 mod system;
+mod template;
 pub mod user_force;
 mod validate;
 

@@ -2,11 +2,11 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::commands::SpawnTemplate;
 use super::emitter::Emitter;
 use super::forces::{ForceField, ForceGenerator, ForceSet};
 use super::integrators::{self, Integrator, Scratch, StepContext};
 use super::storage::ParticleStorage;
+use super::template::SpawnTemplate;
 use super::user_force::{ParticleForce, UserForceRegistry};
 use crate::math::rng::Pcg32;
 use crate::math::{Fx, Real, Vec3};

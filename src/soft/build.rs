@@ -8,6 +8,7 @@ use super::desc::{
 use super::spring_mass::{stability_measure, supports};
 use super::system::{Body, Model, Scratch, SoftSystem, Vertices};
 use super::topology::{self, Topology};
+use crate::math::integration::Integrator;
 use crate::math::{Real, Vec3};
 use crate::rigid::Shape;
 use crate::types::{SceneError, lattice_copies};
@@ -394,7 +395,7 @@ impl<R: Real> SoftSystem<R> {
             dt,
         );
         match integrator {
-            crate::particles::Integrator::ExplicitEuler => Some(
+            Integrator::ExplicitEuler => Some(
                 "explicit Euler adds energy to every spring mode at any step; the network will diverge (use SemiImplicitEuler)".to_owned(),
             ),
             _ if measure >= 4.0 => Some(format!(

@@ -23,8 +23,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::math::integration::Integrator;
 use crate::math::{Fx, Quat, Real, Vec3};
-use crate::particles::Integrator;
 use crate::rigid::Shape;
 
 /// The most vertices a scene may create, over all soft bodies.
