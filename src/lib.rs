@@ -3,7 +3,8 @@
 //! Every simulated quantity is fixed point ([`math::Fx`], I32F32 by default), iteration order
 //! is deterministic, and the same scene with the same inputs gives the same bits on every
 //! machine. Data flows one way: [`scene`] → [`world`] → stages → state → checksum and
-//! [`replay`].
+//! [`replay`]. Modules depend downward only: [`math`] → [`types`] → the subsystems
+//! ([`particles`], [`rigid`], [`soft`], [`fluid`]) → [`world`] → [`scene`], [`replay`] → tools.
 
 // The modules' documentation describes the engine's internals for its developers and links
 // to private modules and items; read it with `cargo doc --document-private-items`, where
@@ -18,6 +19,7 @@ pub mod replay;
 pub mod rigid;
 pub mod scene;
 pub mod soft;
+pub mod types;
 pub mod world;
 
 // The engine's unit tests build the built-in scenes from the `fixstep-scenes` crate's own

@@ -12,7 +12,7 @@
 //! a quarter spacing to the floor or a wall is put back at that distance, its velocity
 //! into the wall removed. So no particle ever leaves the tank except upward, however fast.
 
-use super::system::{FluidSettings, FluidSystem};
+use super::settings::FluidSettings;
 use crate::math::{Real, Vec3};
 
 /// The lattice sites `lo + (i + ½)·spacing` below `hi`, as coordinates.
@@ -88,22 +88,24 @@ pub(crate) fn boundary_count<R: Real>(settings: &FluidSettings<R>, cap: u64) -> 
     layers * (outer_x * outer_z + 2 * inner_y * outer_z + 2 * inner_y * inner_x)
 }
 
-impl<R: Real> FluidSystem<R> {
-    /// Stage 5: x ← x + Δt v (m), then the hard limit of the floor and walls: a coordinate
-    /// closer than ¼ spacing to a wall is set to that distance and the velocity component
-    /// into the wall is removed.
-    pub(crate) fn advect(&mut self, dt: R) {
-        let s = &self.settings;
-        let gap = s.spacing * R::from_ratio(1, 4);
-        let lo = Vec3::new(s.tank.min.x + gap, s.tank.min.y + gap, s.tank.min.z + gap);
-        let hi = Vec3::new(s.tank.max.x - gap, R::MAX, s.tank.max.z - gap);
-        for (x, v) in self.positions.iter_mut().zip(&mut self.velocities) {
-            let mut p = x.add_scaled(*v, dt);
-            limit(&mut p.x, &mut v.x, lo.x, hi.x);
-            limit(&mut p.y, &mut v.y, lo.y, hi.y);
-            limit(&mut p.z, &mut v.z, lo.z, hi.z);
-            *x = p;
-        }
+/// Stage 5: x ← x + Δt v (m) for each fluid particle (`positions`, `velocities` in step),
+/// then the hard limit of the floor and walls: a coordinate closer than ¼ spacing to a wall
+/// is set to that distance and the velocity component into the wall is removed.
+pub(crate) fn advect<R: Real>(
+    s: &FluidSettings<R>,
+    positions: &mut [Vec3<R>],
+    velocities: &mut [Vec3<R>],
+    dt: R,
+) {
+    let gap = s.spacing * R::from_ratio(1, 4);
+    let lo = Vec3::new(s.tank.min.x + gap, s.tank.min.y + gap, s.tank.min.z + gap);
+    let hi = Vec3::new(s.tank.max.x - gap, R::MAX, s.tank.max.z - gap);
+    for (x, v) in positions.iter_mut().zip(velocities) {
+        let mut p = x.add_scaled(*v, dt);
+        limit(&mut p.x, &mut v.x, lo.x, hi.x);
+        limit(&mut p.y, &mut v.y, lo.y, hi.y);
+        limit(&mut p.z, &mut v.z, lo.z, hi.z);
+        *x = p;
     }
 }
 

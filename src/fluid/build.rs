@@ -9,9 +9,10 @@ use super::desc::{
 use super::emitter::EmitterState;
 use super::grid::CellGrid;
 use super::kernel::{Kernel, lattice_reach};
-use super::system::{FluidSettings, FluidSystem, Scratch};
+use super::settings::FluidSettings;
+use super::system::{FluidSystem, Scratch};
 use crate::math::{Real, Vec3};
-use crate::scene::SceneError;
+use crate::types::SceneError;
 
 /// The most lattice sites along one axis of the tank.
 const MAX_SITES_PER_AXIS: u64 = 1 << 16;

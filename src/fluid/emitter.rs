@@ -2,7 +2,6 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::system::FluidSystem;
 use crate::math::{Fx, Real, Vec3};
 
 /// The state of one nozzle.
@@ -25,37 +24,41 @@ pub struct EmitterState<R: Real = Fx> {
     pub travelled: R,
 }
 
-impl<R: Real> FluidSystem<R> {
-    /// Stage 1: each nozzle, in scene order, tracks how far its last layer has moved
-    /// (`travelled += |v| Δt`, m) and adds a new square layer each time that reaches one
-    /// spacing, placed where the fluid would be had it left the nozzle on time:
+impl<R: Real> EmitterState<R> {
+    /// Stage 1, for this nozzle (the fluid runs its nozzles in scene order): tracks how far
+    /// its last layer has moved (`travelled += |v| Δt`, m) and adds a new square layer of
+    /// `spacing` (m) to `positions` and `velocities` each time that reaches one spacing,
+    /// placed where the fluid would be had it left the nozzle on time:
     /// `position + offset + direction·(travelled − spacing)`. Particles within a layer are
     /// added with the horizontal offset's x fastest, then z.
-    pub(crate) fn emit(&mut self, dt: R) {
-        let dx = self.settings.spacing;
-        for e in &mut self.emitters {
-            if e.remaining == 0 {
-                continue;
-            }
-            e.travelled = e.travelled.add_product(e.speed, dt);
-            while e.travelled >= dx && e.remaining > 0 {
-                e.travelled -= dx;
-                let centre = e.position.add_scaled(e.direction, e.travelled);
-                let half = R::from_ratio(i64::from(e.width) - 1, 2);
-                for b in 0..e.width {
-                    for a in 0..e.width {
-                        if e.remaining == 0 {
-                            break;
-                        }
-                        let offset = Vec3::new(
-                            (R::from_int(a as i32) - half) * dx,
-                            R::ZERO,
-                            (R::from_int(b as i32) - half) * dx,
-                        );
-                        self.positions.push(centre + offset);
-                        self.velocities.push(e.velocity);
-                        e.remaining -= 1;
+    pub(crate) fn emit(
+        &mut self,
+        dt: R,
+        spacing: R,
+        positions: &mut Vec<Vec3<R>>,
+        velocities: &mut Vec<Vec3<R>>,
+    ) {
+        if self.remaining == 0 {
+            return;
+        }
+        self.travelled = self.travelled.add_product(self.speed, dt);
+        while self.travelled >= spacing && self.remaining > 0 {
+            self.travelled -= spacing;
+            let centre = self.position.add_scaled(self.direction, self.travelled);
+            let half = R::from_ratio(i64::from(self.width) - 1, 2);
+            for b in 0..self.width {
+                for a in 0..self.width {
+                    if self.remaining == 0 {
+                        break;
                     }
+                    let offset = Vec3::new(
+                        (R::from_int(a as i32) - half) * spacing,
+                        R::ZERO,
+                        (R::from_int(b as i32) - half) * spacing,
+                    );
+                    positions.push(centre + offset);
+                    velocities.push(self.velocity);
+                    self.remaining -= 1;
                 }
             }
         }

@@ -17,7 +17,7 @@
 
 use super::system::FluidSystem;
 use crate::math::{Real, StateHasher};
-use crate::world::Handle;
+use crate::types::Handle;
 
 impl<R: Real> FluidSystem<R> {
     /// Writes the complete simulation state into `h` in the canonical order documented in

@@ -2,50 +2,16 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::boundary::sample_walls;
-use super::desc::{FluidBox, FluidSolver};
+use super::boundary::{advect, sample_walls};
+use super::desc::FluidSolver;
 use super::emitter::EmitterState;
 use super::grid::CellGrid;
-use super::kernel::{Kernel, lattice_reach};
+use super::kernel::lattice_reach;
 use super::neighbours::NeighbourLists;
 use super::neighbours::skin::{Reach, SkinLists};
 use super::row_sums::GradientBits;
+use super::settings::FluidSettings;
 use crate::math::{Fx, Real, Vec3};
-
-/// The compiled settings of a fluid: the description's values and the constants derived
-/// from them once.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(bound = "")]
-pub struct FluidSettings<R: Real = Fx> {
-    /// The pressure solver.
-    pub solver: FluidSolver,
-    /// Particle spacing at rest, m.
-    pub spacing: R,
-    /// Kernel support in spacings.
-    pub support: R,
-    /// Rest density ρ₀, kg/m³ (used only to report pressures; the solvers work in ρ/ρ₀).
-    pub rest_density: R,
-    /// WCSPH speed of sound c, m/s.
-    pub speed_of_sound: R,
-    /// WCSPH artificial viscosity α.
-    pub viscosity: R,
-    /// XSPH smoothing ε.
-    pub xsph: R,
-    /// Fluid substeps per world substep; with a CFL number, the most.
-    pub substeps: u32,
-    /// The CFL number C of adaptive substeps, in kernel supports; 0 for a fixed count.
-    pub cfl: R,
-    /// DFSPH tolerance on the mean predicted compression.
-    pub max_density_error: R,
-    /// DFSPH iteration cap.
-    pub max_iterations: u32,
-    /// The tank.
-    pub tank: FluidBox<R>,
-    /// The kernel constants.
-    pub kernel: Kernel<R>,
-    /// Tait stiffness over rest density, B/ρ₀ = c²/7, m²/s².
-    pub stiffness: R,
-}
 
 /// The fluid of a world: particle positions and velocities, in creation order (a
 /// particle's index is its id; particles are never removed), and the emitters.
@@ -196,7 +162,10 @@ impl<R: Real> FluidSystem<R> {
         self.scratch.last_substeps = substeps;
         let h = dt * R::from_ratio(1, i64::from(substeps));
         for _ in 0..substeps {
-            self.emit(h);
+            for emitter in &mut self.emitters {
+                let spacing = self.settings.spacing;
+                emitter.emit(h, spacing, &mut self.positions, &mut self.velocities);
+            }
             if self.positions.is_empty() {
                 continue;
             }
@@ -206,7 +175,7 @@ impl<R: Real> FluidSystem<R> {
                 FluidSolver::Wcsph => self.wcsph_velocities(h, gravity),
                 FluidSolver::Dfsph => self.dfsph_velocities(h, gravity),
             }
-            self.advect(h);
+            advect(&self.settings, &mut self.positions, &mut self.velocities, h);
         }
     }
 
@@ -296,7 +265,7 @@ impl<R: Real> FluidSystem<R> {
 /// particles left whose travel then reaches the `spacing` (m), as [`emit`] finds it. The
 /// particle count changes, so no candidate list outlives that.
 ///
-/// [`emit`]: FluidSystem::emit
+/// [`emit`]: EmitterState::emit
 fn adds_particles<R: Real>(emitters: &[EmitterState<R>], spacing: R, h: R) -> bool {
     emitters
         .iter()

@@ -10,8 +10,7 @@
 //! input (including `i64::MIN` and `i64::MAX`) overflows or panics, and the results are
 //! bit-identical on every target.
 
-use crate::math::fixed_scalar::saturate_i128;
-use crate::math::saturation::record_saturation;
+use crate::math::saturation::{record_saturation, saturate_i128};
 use crate::math::sqrt::leading_zeros_positive;
 
 /// ln 2 · 2^120, rounded to nearest: `nint(log(2) · 2^120)` with mpmath at 120 digits.

@@ -30,7 +30,7 @@ use serde::{Deserialize, Serialize, Serializer};
 
 use super::guarded::{Fraction, Guard};
 use super::real::{ParseRealError, Real};
-use super::saturation::record_saturation;
+use super::saturation::{record_saturation, saturate_i128};
 use super::{exp, sqrt, trig};
 
 /// The fractional-bit count of a [`Fixed`] type: a `typenum` unsigned from the `fixed`
@@ -55,26 +55,6 @@ pub type FxI40F24 = Fixed<U24>;
 
 /// π·2⁶¹, correctly rounded: the source of π for every fractional width.
 const PI_Q61: i64 = 7_244_019_458_077_122_842;
-
-/// Narrows an `i128` to `i64`, saturating and counting when it does not fit. The common
-/// case costs one comparison (the high half against the sign of the low half).
-#[inline(always)]
-pub(crate) fn saturate_i128(value: i128) -> i64 {
-    let narrow = value as i64;
-    if narrow as i128 == value {
-        narrow
-    } else {
-        saturate_out_of_range(value)
-    }
-}
-
-/// The saturated value of an `i128` outside the `i64` range, counted.
-#[cold]
-#[inline(never)]
-fn saturate_out_of_range(value: i128) -> i64 {
-    record_saturation();
-    if value > 0 { i64::MAX } else { i64::MIN }
-}
 
 /// Product of two raw values with `frac` fractional bits: `(a·b + 2^(frac−1)) >> frac`,
 /// i.e. rounded to nearest with ties toward +∞, saturated and counted.

@@ -36,3 +36,23 @@ pub fn count_saturations<T>(f: impl FnOnce() -> T) -> (T, u64) {
     let value = f();
     (value, saturation_count().wrapping_sub(before))
 }
+
+/// Narrows an `i128` to `i64`, saturating and counting when it does not fit. The common
+/// case costs one comparison (the high half against the sign of the low half).
+#[inline(always)]
+pub(crate) fn saturate_i128(value: i128) -> i64 {
+    let narrow = value as i64;
+    if narrow as i128 == value {
+        narrow
+    } else {
+        saturate_out_of_range(value)
+    }
+}
+
+/// The saturated value of an `i128` outside the `i64` range, counted.
+#[cold]
+#[inline(never)]
+fn saturate_out_of_range(value: i128) -> i64 {
+    record_saturation();
+    if value > 0 { i64::MAX } else { i64::MIN }
+}

@@ -4,7 +4,6 @@
 //! Errors name the field relative to the particle description (`emitters[2].rate`); the
 //! scene prefixes `particles.`.
 
-use super::commands::SpawnTemplate;
 use super::damping::Damping;
 use super::desc::{
     EmitterDesc, ForceDesc, Interval, MAX_CAPACITY, MAX_EMISSION_RATE, ParticlesDesc, Spread,
@@ -15,10 +14,11 @@ use super::forces::{AccelerationField, ForceGenerator, ForceSet};
 use super::integrators::Scratch;
 use super::storage::{NewParticle, ParticleStorage};
 use super::system::ParticleSystem;
+use super::template::SpawnTemplate;
 use super::user_force::UserForceRegistry;
 use crate::math::{Real, Vec3};
-use crate::scene::SceneError;
-use crate::world::Handle;
+use crate::types::Handle;
+use crate::types::SceneError;
 
 /// `Ok` when `ok`, otherwise the error about `field`.
 fn ensure(

@@ -7,26 +7,11 @@
 //! Verlet) stale, and a velocity change or a new external force restarts Störmer–Verlet from
 //! (x, v).
 
-use serde::{Deserialize, Serialize};
-
 use super::storage::NewParticle;
 use super::system::ParticleSystem;
 use crate::math::{Real, Vec3};
-use crate::world::Handle;
-use crate::world::input::{Command, Target};
-
-/// A compiled particle template: what `spawn` creates.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(bound = "")]
-pub(crate) struct SpawnTemplate<R: Real> {
-    /// kg; 0 pins.
-    pub mass: R,
-    /// 1/mass, or 0 when pinned.
-    pub inv_mass: R,
-    pub group: u16,
-    /// s; 0 for immortal.
-    pub lifetime: R,
-}
+use crate::types::Handle;
+use crate::types::{Command, Target};
 
 impl<R: Real> ParticleSystem<R> {
     /// Applies a world command aimed at particles; false when its target does not exist

@@ -7,7 +7,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::forces::applies_to;
+use super::groups::applies_to;
 use super::storage::{Attributes, Kinematics};
 use crate::math::Real;
 

@@ -23,7 +23,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::integrators::Integrator;
+pub use crate::math::integration::Integrator;
+pub use crate::math::spring::SpringDesc;
 use crate::math::{Fx, Real, Vec3};
 
 /// Capacity of a particle system whose scene does not give one.
@@ -34,7 +35,7 @@ pub const MAX_CAPACITY: u32 = 1 << 20;
 pub const MAX_EMISSION_RATE: i32 = 1_000_000;
 
 /// A particle system: its integrator, its capacity, the particles present at tick 0, the
-/// templates that [`Command::Spawn`](crate::world::Command::Spawn) creates from, the
+/// templates that [`Command::Spawn`](crate::types::Command::Spawn) creates from, the
 /// emitters and the force generators.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "", deny_unknown_fields)]
@@ -282,21 +283,6 @@ pub enum ForceDesc<R: Real = Fx> {
         /// The registered name.
         name: String,
     },
-}
-
-/// A damped spring: F = −(k (ℓ − ℓ₀) + c (v_rel · û)) û on the first end and the opposite
-/// force on the second, where ℓ is the length, û the unit vector from the second end to the
-/// first and v_rel the first end's velocity minus the second's.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(bound = "", deny_unknown_fields)]
-pub struct SpringDesc<R: Real = Fx> {
-    /// k, N/m (≥ 0).
-    pub stiffness: R,
-    /// c, N·s/m (≥ 0). Default 0.
-    #[serde(default)]
-    pub damping: R,
-    /// ℓ₀, m (≥ 0).
-    pub rest_length: R,
 }
 
 fn default_capacity() -> u32 {

@@ -13,11 +13,12 @@
 use serde::{Deserialize, Serialize};
 
 use super::damping::Damping;
-use super::desc::SpringDesc;
+use super::groups::applies_to;
 use super::storage::Attributes;
 use super::user_force::{ParticleView, UserForceRegistry};
+use crate::math::spring::{SpringDesc, spring_force};
 use crate::math::{Fraction, Real, Vec3};
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// The compiled force list of a system, split by how each entry acts.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -69,33 +70,6 @@ pub(crate) enum ForceGenerator<R: Real> {
     /// A registered [`ParticleForce`](super::ParticleForce); `scene_index` is its position in
     /// the scene's force list, for error messages.
     User { name: String, scene_index: u32 },
-}
-
-/// True when a generator restricted to `restriction` acts on a particle of `group`.
-#[inline(always)]
-pub(crate) fn applies_to(restriction: Option<u16>, group: u16) -> bool {
-    restriction.is_none_or(|g| g == group)
-}
-
-/// Force on the first end of a damped spring, N:
-/// F = −(k (ℓ − ℓ₀) + c (v_rel · û)) û, with `offset` d = x₁ − x₂ (m), ℓ = |d|, û = d/ℓ and
-/// `relative_velocity` v_rel = v₁ − v₂ (m/s). The second end feels −F. Zero when the ends
-/// coincide, since the spring then has no axis.
-#[inline]
-pub(crate) fn spring_force<R: Real>(
-    spring: &SpringDesc<R>,
-    offset: Vec3<R>,
-    relative_velocity: Vec3<R>,
-) -> Vec3<R> {
-    let length_squared = offset.length_squared();
-    if length_squared == R::ZERO {
-        return Vec3::ZERO;
-    }
-    let length = length_squared.sqrt();
-    let axis = offset * length.recip();
-    let tension = spring.stiffness * (length - spring.rest_length)
-        + spring.damping * relative_velocity.dot(axis);
-    axis * -tension
 }
 
 /// Softened point-gravity acceleration, m/s²: a = −GM r (|r|² + ε²)^{−3/2}, with `offset`

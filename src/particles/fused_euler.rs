@@ -51,9 +51,10 @@
 //! general path's in every case; other processors, targets and formats never take this
 //! path.
 
-use super::forces::{LinearField, add_linear_drag, applies_to, forces_to_accelerations};
-use super::integrators::kick_then_drift;
+use super::forces::{LinearField, add_linear_drag, forces_to_accelerations};
+use super::groups::applies_to;
 use super::storage::{Attributes, Kinematics};
+use crate::math::integration::kick_then_drift;
 use crate::math::{Fraction, Guard, Real, Vec3};
 
 /// Slots per block: the two block buffers (3 KiB for I32F32) stay in L1.

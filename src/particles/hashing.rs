@@ -40,7 +40,7 @@ use super::forces::{AccelerationField, ForceGenerator};
 use super::system::ParticleSystem;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Real, Vec3};
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// Everything that describes one live slot.
 #[derive(Clone, Copy, PartialEq)]

@@ -1,7 +1,8 @@
 //! Figures of the current state for reports and conservation tests: energies, momenta,
 //! speed. They read the state and never change it; sums run in ascending slot order.
 
-use super::forces::{AccelerationField, ForceGenerator, applies_to};
+use super::forces::{AccelerationField, ForceGenerator};
+use super::groups::applies_to;
 use super::system::ParticleSystem;
 use crate::math::{Real, Vec3};
 

@@ -44,11 +44,14 @@ pub mod desc;
 pub mod emitter;
 pub(crate) mod forces;
 mod fused_euler;
+mod groups;
 pub mod hashing;
 pub mod integrators;
 mod metrics;
 mod storage;
+mod subsystem;
 mod system;
+mod template;
 pub mod user_force;
 mod validate;
 

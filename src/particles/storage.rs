@@ -17,8 +17,8 @@
 use serde::{Deserialize, Serialize};
 
 use crate::math::{Real, Vec3};
-use crate::world::Handle;
-use crate::world::input::Target;
+use crate::types::Handle;
+use crate::types::Target;
 
 /// The attributes integrators change: positions, velocities and their history.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]

@@ -2,16 +2,16 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::commands::SpawnTemplate;
 use super::emitter::Emitter;
 use super::forces::{ForceField, ForceGenerator, ForceSet};
 use super::integrators::{self, Integrator, Scratch, StepContext};
 use super::storage::ParticleStorage;
+use super::template::SpawnTemplate;
 use super::user_force::{ParticleForce, UserForceRegistry};
 use crate::math::rng::Pcg32;
 use crate::math::{Fx, Real, Vec3};
-use crate::scene::SceneError;
-use crate::world::Handle;
+use crate::types::Handle;
+use crate::types::SceneError;
 
 /// A deterministic particle system: point masses in structure-of-arrays storage, emitters,
 /// force generators and one of six integrators.

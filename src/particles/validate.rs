@@ -12,7 +12,7 @@ use super::desc::{MAX_CAPACITY, MAX_EMISSION_RATE};
 use super::storage::ParticleStorage;
 use super::system::ParticleSystem;
 use crate::math::{Real, Vec3};
-use crate::scene::SceneError;
+use crate::types::SceneError;
 
 impl<R: Real> ParticleSystem<R> {
     /// Checks the invariants the step relies on; the error names the offending field, as a

@@ -17,7 +17,7 @@ use super::desc::BodyKind;
 use super::material::Material;
 use super::shape::Shape;
 use crate::math::{Mat3, Quat, Real, Vec3};
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// What a new body is made of, already checked and with its mass properties computed.
 #[derive(Clone)]

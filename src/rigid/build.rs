@@ -7,7 +7,7 @@ use super::mass::MassProperties;
 use super::shape::{Part, Shape};
 use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
-use crate::scene::SceneError;
+use crate::types::{SceneError, lattice_copies};
 
 /// The largest coordinate, size or speed a scene may use (m, m/s): far inside the range of
 /// every fixed-point format, so that products such as a speed times a size cannot
@@ -111,16 +111,6 @@ impl<R: Real> RigidSystem<R> {
     }
 }
 
-/// How many copies a lattice of `count` makes (1 without a lattice), at most `u64::MAX`
-/// (three counts of 2³² − 1 would overflow).
-pub(crate) fn copies(count: Option<(u32, u32, u32)>) -> u64 {
-    count.map_or(1, |(nx, ny, nz)| {
-        u64::from(nx)
-            .saturating_mul(u64::from(ny))
-            .saturating_mul(u64::from(nz))
-    })
-}
-
 /// Checks that the entries, each one or a lattice of `count` copies, make at most `max`
 /// `what` ("bodies", "joints") in all; the error names `field`.
 pub(crate) fn check_total(
@@ -130,7 +120,7 @@ pub(crate) fn check_total(
     what: &str,
 ) -> Result<(), SceneError> {
     let total = counts.try_fold(0u64, |sum, count| {
-        let sum = sum.saturating_add(copies(count));
+        let sum = sum.saturating_add(lattice_copies(count));
         (sum <= u64::from(max)).then_some(sum)
     });
     match total {

@@ -8,7 +8,7 @@ use super::desc::BodyKind;
 use super::joints::desc::{JointKind, Motor};
 use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
-use crate::world::input::{Command, Target};
+use crate::types::{Command, Target};
 
 impl<R: Real> RigidSystem<R> {
     /// Applies a world command aimed at a rigid body or a joint; false when its target does
@@ -45,7 +45,7 @@ impl<R: Real> RigidSystem<R> {
 
     /// A command aimed at joint `handle`: `Remove` removes it, `SetMotor` sets the motor of
     /// a hinge or slider; false for a stale handle or another command or kind.
-    fn apply_joint_command(&mut self, handle: crate::world::Handle, command: &Command<R>) -> bool {
+    fn apply_joint_command(&mut self, handle: crate::types::Handle, command: &Command<R>) -> bool {
         let Some(i) = self.joints.slot(handle) else {
             return false;
         };

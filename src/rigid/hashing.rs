@@ -24,7 +24,7 @@
 use super::joints::desc::{JointKind, Limits, Motor, Spring};
 use super::system::RigidSystem;
 use crate::math::{Mat3, Quat, Real, StateHasher};
-use crate::world::Handle;
+use crate::types::Handle;
 
 fn write_flag(h: &mut StateHasher, flag: bool) {
     h.write_u8(u8::from(flag));

@@ -44,6 +44,7 @@ pub mod shape;
 mod sleep;
 mod solve;
 pub(crate) mod solver;
+mod subsystem;
 mod system;
 pub mod transform;
 

@@ -14,7 +14,7 @@ use super::recycle::PairFrame;
 use super::solver::Solver;
 use super::transform::Transform;
 use crate::math::{Fx, Real, Vec3};
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// Rigid bodies and their contacts.
 ///

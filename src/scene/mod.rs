@@ -2,12 +2,10 @@
 //! `ron` feature). The built-in scenes live in the `fixstep-scenes` crate.
 
 mod description;
-pub mod error;
 #[cfg(feature = "ron")]
 mod load;
 
-pub(crate) use description::check_rates;
-pub use description::{MAX_SUBSTEPS, MAX_TICK_RATE, Scene};
-pub use error::SceneError;
+pub use crate::types::{MAX_SUBSTEPS, MAX_TICK_RATE, SceneError};
+pub use description::Scene;
 #[cfg(feature = "ron")]
 pub use load::{load_scene_file, parse_scene};

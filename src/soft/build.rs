@@ -8,10 +8,10 @@ use super::desc::{
 use super::spring_mass::{stability_measure, supports};
 use super::system::{Body, Model, Scratch, SoftSystem, Vertices};
 use super::topology::{self, Topology};
+use crate::math::integration::Integrator;
 use crate::math::{Real, Vec3};
 use crate::rigid::Shape;
-use crate::rigid::build::copies;
-use crate::scene::SceneError;
+use crate::types::{SceneError, lattice_copies};
 
 /// The largest coordinate, size or speed a scene may use (m, m/s).
 const MAX_MAGNITUDE: i32 = 100_000;
@@ -395,7 +395,7 @@ impl<R: Real> SoftSystem<R> {
             dt,
         );
         match integrator {
-            crate::particles::Integrator::ExplicitEuler => Some(
+            Integrator::ExplicitEuler => Some(
                 "explicit Euler adds energy to every spring mode at any step; the network will diverge (use SemiImplicitEuler)".to_owned(),
             ),
             _ if measure >= 4.0 => Some(format!(
@@ -677,7 +677,7 @@ fn check_shape<R: Real>(shape: &SoftShape<R>) -> Result<u64, SceneError> {
                     format!("must be above 0, the block within {MAX_MAGNITUDE} m"),
                 ));
             }
-            Ok(copies(Some(count)))
+            Ok(lattice_copies(Some(count)))
         }
     }
     .and_then(|count| {

@@ -2,7 +2,7 @@
 
 use super::system::SoftSystem;
 use crate::math::Real;
-use crate::world::{Command, Target};
+use crate::types::{Command, Target};
 
 impl<R: Real> SoftSystem<R> {
     /// Applies `command` if it is for this system; false when it names no target here.

@@ -23,8 +23,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::math::integration::Integrator;
 use crate::math::{Fx, Quat, Real, Vec3};
-use crate::particles::Integrator;
 use crate::rigid::Shape;
 
 /// The most vertices a scene may create, over all soft bodies.
@@ -188,7 +188,7 @@ pub enum SoftModel<R: Real = Fx> {
 }
 
 /// A group of vertices held by one kinematic target that inputs move
-/// ([`Target::SoftAttachment`](crate::world::Target::SoftAttachment)).
+/// ([`Target::SoftAttachment`](crate::types::Target::SoftAttachment)).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "", deny_unknown_fields)]
 pub struct AttachmentDesc<R: Real = Fx> {

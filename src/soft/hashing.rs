@@ -17,7 +17,7 @@
 
 use super::system::SoftSystem;
 use crate::math::{Real, StateHasher};
-use crate::world::Handle;
+use crate::types::Handle;
 
 impl<R: Real> SoftSystem<R> {
     /// Writes the complete simulation state into `h` in the canonical order documented in

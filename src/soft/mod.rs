@@ -18,7 +18,7 @@
 //! [`spring_mass`] Hooke springs and the stability bound · `collide` static colliders
 //! with friction · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting.
 //!
-//! [`Stage::Soft`]: crate::world::Stage::Soft
+//! [`Stage::Soft`]: crate::types::Stage::Soft
 
 mod build;
 mod collide;
@@ -30,6 +30,7 @@ pub mod hashing;
 pub(crate) mod lanes;
 mod metrics;
 pub mod spring_mass;
+mod subsystem;
 mod system;
 mod topology;
 pub mod xpbd;

@@ -28,9 +28,9 @@ use serde::{Deserialize, Serialize};
 
 use super::collide::project_velocities;
 use super::system::{Model, SoftSystem};
+use crate::math::integration::{Integrator, kick_then_drift};
+use crate::math::spring::{SpringDesc, spring_force};
 use crate::math::{Real, Vec3};
-use crate::particles::integrators::kick_then_drift;
-use crate::particles::{Integrator, SpringDesc};
 
 /// Spring rows of every spring-mass body.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -178,7 +178,7 @@ impl<R: Real> SoftSystem<R> {
                 damping,
                 rest_length: s.rest[k],
             };
-            let f = crate::particles::forces::spring_force(&spring, x[i] - x[j], v[i] - v[j]);
+            let f = spring_force(&spring, x[i] - x[j], v[i] - v[j]);
             force[i] += f;
             force[j] -= f;
         }

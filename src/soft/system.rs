@@ -7,8 +7,8 @@ use super::collide::Collider;
 use super::constraints::{Attachments, DistanceFactors, Distances, Hinges, Tethers, Tetrahedra};
 use super::desc::XpbdSettings;
 use super::spring_mass::Springs;
+use crate::math::integration::Integrator;
 use crate::math::{Fx, Real, Vec3};
-use crate::particles::Integrator;
 
 /// The vertices of every soft body, body after body.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]

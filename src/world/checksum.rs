@@ -9,54 +9,9 @@
 //! The core part hashes, in order: the tick (`u64`), gravity (x, y, z), tick rate (`u32`),
 //! substeps (`u32`), the RNG state, and the payload digest (`u64`).
 
-use core::fmt;
-
 use serde::{Deserialize, Serialize};
 
-/// A part of the world state with its own sub-checksum.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
-pub enum Part {
-    /// Tick, settings, RNG and game payload digest.
-    Core,
-    /// The particle system.
-    Particles,
-    /// The rigid bodies and their contacts.
-    Rigid,
-    /// The soft bodies.
-    Soft,
-    /// The fluid particles and emitters.
-    Fluid,
-}
-
-impl Part {
-    /// The byte that stands for the part in the world checksum.
-    pub const fn code(self) -> u8 {
-        match self {
-            Part::Core => 0,
-            Part::Particles => 1,
-            Part::Rigid => 2,
-            Part::Soft => 3,
-            Part::Fluid => 4,
-        }
-    }
-
-    /// The part's name in reports.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Part::Core => "core",
-            Part::Particles => "particles",
-            Part::Rigid => "rigid",
-            Part::Soft => "soft",
-            Part::Fluid => "fluid",
-        }
-    }
-}
-
-impl fmt::Display for Part {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
+use crate::types::Part;
 
 /// The checksum of a world at one tick: the total and one sub-checksum per present part.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]

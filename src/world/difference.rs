@@ -2,10 +2,10 @@
 
 use core::fmt;
 
-use super::checksum::Part;
-use super::handle::Handle;
 use super::pipeline::WorldState;
 use crate::math::Real;
+use crate::types::Handle;
+use crate::types::Part;
 
 /// The first difference between two states, in [`Part`] order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

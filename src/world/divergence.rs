@@ -20,7 +20,7 @@
 //!
 //! [`World::enable_divergence_check`]: super::World::enable_divergence_check
 
-use super::metrics::Metrics;
+use crate::types::Metrics;
 
 /// The growth of ε over ε₀ that counts as divergence: 10⁴ in energy, 10² in speed.
 pub const GROWTH_LIMIT: f64 = 1e4; // ok-det: reporting

@@ -2,12 +2,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::checksum::{Checksum, Part};
+use super::checksum::Checksum;
 use super::divergence::{Divergence, DivergenceMonitor};
-use super::handle::Handle;
-use super::input::{Command, PlayerInput, Target, TickInput};
-use super::metrics::Metrics;
-use super::stage::{Stage, StageTimings};
+use super::stage::StageTimings;
 use crate::fluid::FluidSystem;
 use crate::math::rng::Pcg32;
 use crate::math::saturation::count_saturations;
@@ -15,9 +12,11 @@ use crate::math::state_hash::StateHasher;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticleSystem;
 use crate::rigid::RigidSystem;
-use crate::scene::SceneError;
-use crate::scene::check_rates;
 use crate::soft::SoftSystem;
+use crate::types::{
+    Command, Handle, Metrics, Part, PlayerInput, SceneError, Stage, StepContext, Subsystem, Target,
+    TickInput, check_rates,
+};
 
 /// The version of the simulated state. It names the physics as much as the layout: bump it
 /// whenever a change alters any committed checksum, then re-record `replays/`.
@@ -85,21 +84,63 @@ impl<R: Real> WorldState<R> {
     pub fn validate(&self) -> Result<(), SceneError> {
         check_rates(self.settings.tick_rate, self.settings.substeps)
             .map_err(|e| e.within("settings"))?;
-        if let Some(particles) = &self.particles {
-            particles.validate().map_err(|e| e.within("particles"))?;
-        }
-        if let Some(rigid) = &self.rigid {
-            rigid.validate().map_err(|e| e.within("rigid"))?;
-        }
-        if let Some(soft) = &self.soft {
-            soft.validate().map_err(|e| e.within("soft"))?;
-        }
-        if let Some(fluid) = &self.fluid {
-            fluid.validate().map_err(|e| e.within("fluid"))?;
+        for subsystem in self.subsystems().into_iter().flatten() {
+            subsystem
+                .validate()
+                .map_err(|e| e.within(subsystem.part().name()))?;
         }
         Ok(())
     }
+
+    /// The subsystems, in [`Stage`] order, `None` where the scene has none. With
+    /// [`WorldState::split_mut`] and [`WorldState::keep_unsimulated`], the place that lists
+    /// the subsystem fields: a new subsystem is added there.
+    pub fn subsystems(&self) -> [Option<&dyn Subsystem<R>>; 4] {
+        [
+            self.particles.as_ref().map(|s| s as &dyn Subsystem<R>),
+            self.rigid.as_ref().map(|s| s as &dyn Subsystem<R>),
+            self.soft.as_ref().map(|s| s as &dyn Subsystem<R>),
+            self.fluid.as_ref().map(|s| s as &dyn Subsystem<R>),
+        ]
+    }
+
+    /// The settings and the generator beside the mutable subsystems in [`Stage`] order
+    /// (`None` where absent), borrowed apart so that a stage can step with both.
+    fn split_mut(&mut self) -> (&Settings<R>, &mut Pcg32, SubsystemsMut<'_, R>) {
+        let subsystems = [
+            self.particles.as_mut().map(|s| s as &mut dyn Subsystem<R>),
+            self.rigid.as_mut().map(|s| s as &mut dyn Subsystem<R>),
+            self.soft.as_mut().map(|s| s as &mut dyn Subsystem<R>),
+            self.fluid.as_mut().map(|s| s as &mut dyn Subsystem<R>),
+        ];
+        (&self.settings, &mut self.rng, subsystems)
+    }
+
+    /// Gives each subsystem present in both `self` (restored from a snapshot) and `current`
+    /// what `current` keeps outside the simulated state ([`Subsystem::restore_from`]),
+    /// taking `current`'s subsystems.
+    fn keep_unsimulated(&mut self, current: &mut Self) {
+        keep_unsimulated(&mut self.particles, current.particles.take());
+        keep_unsimulated(&mut self.rigid, current.rigid.take());
+        keep_unsimulated(&mut self.soft, current.soft.take());
+        keep_unsimulated(&mut self.fluid, current.fluid.take());
+    }
 }
+
+/// `restored`, rebuilt on `current` so that it keeps `current`'s registered user forces,
+/// scratch memory and warnings, when both are present.
+fn keep_unsimulated<R: Real, S: Subsystem<R>>(restored: &mut Option<S>, current: Option<S>) {
+    *restored = match (current, restored.take()) {
+        (Some(mut current), Some(state)) => {
+            current.restore_from(state);
+            Some(current)
+        }
+        (_, state) => state,
+    };
+}
+
+/// The mutable subsystems of a state in [`Stage`] order, `None` where absent.
+type SubsystemsMut<'a, R> = [Option<&'a mut dyn Subsystem<R>>; 4];
 
 /// Per-part lists of (object handle, 32-bit state digest), in [`Part`] order.
 pub type ObjectDigests = Vec<(Part, Vec<(Handle, u32)>)>;
@@ -283,21 +324,17 @@ impl<R: Real> World<R> {
     pub fn step(&mut self, input: &TickInput<R>) -> TickReport {
         let (ignored_commands, saturations) = count_saturations(|| {
             let mut timings = self.timings.take();
-            let ignored =
-                self.run_stage(&mut timings, Stage::ApplyInputs, |w| w.apply_inputs(input));
-            if self.state.particles.is_some() {
-                self.run_stage(&mut timings, Stage::Particles, Self::step_particles);
+            let ignored = timed(&mut timings, Stage::ApplyInputs, || {
+                self.apply_inputs(input)
+            });
+            let substep_dt = self.substep_dt;
+            let (settings, rng, subsystems) = self.state.split_mut();
+            for subsystem in subsystems.into_iter().flatten() {
+                timed(&mut timings, subsystem.stage(), || {
+                    step_subsystem(subsystem, settings, rng, substep_dt);
+                });
             }
-            if self.state.rigid.is_some() {
-                self.run_stage(&mut timings, Stage::Rigid, Self::step_rigid);
-            }
-            if self.state.soft.is_some() {
-                self.run_stage(&mut timings, Stage::Soft, Self::step_soft);
-            }
-            if self.state.fluid.is_some() {
-                self.run_stage(&mut timings, Stage::Fluid, Self::step_fluid);
-            }
-            self.run_stage(&mut timings, Stage::EndTick, Self::end_tick);
+            timed(&mut timings, Stage::EndTick, || self.end_tick());
             self.timings = timings;
             ignored
         });
@@ -319,20 +356,6 @@ impl<R: Real> World<R> {
             ignored_commands,
             saturations,
             broken_joints,
-        }
-    }
-
-    /// Runs one stage, timing it when timing is enabled.
-    #[inline]
-    fn run_stage<T>(
-        &mut self,
-        timings: &mut Option<Box<StageTimings>>,
-        stage: Stage,
-        f: impl FnOnce(&mut Self) -> T,
-    ) -> T {
-        match timings {
-            Some(t) => t.time(stage, || f(self)),
-            None => f(self),
         }
     }
 
@@ -452,66 +475,11 @@ impl<R: Real> World<R> {
         }
     }
 
-    /// Stage 2: the particle system, once per substep.
-    fn step_particles(&mut self) {
-        let WorldState {
-            settings,
-            rng,
-            particles,
-            ..
-        } = &mut self.state;
-        if let Some(particles) = particles {
-            for _ in 0..settings.substeps {
-                particles.step(self.substep_dt, settings.gravity, rng);
-            }
-        }
-    }
-
-    /// Stage 3: the rigid bodies, once per substep.
-    fn step_rigid(&mut self) {
-        let WorldState {
-            settings, rigid, ..
-        } = &mut self.state;
-        if let Some(rigid) = rigid {
-            rigid.clear_joint_events();
-            for _ in 0..settings.substeps {
-                rigid.step(self.substep_dt, settings.gravity);
-            }
-        }
-    }
-
-    /// Stage 4: the soft bodies, once per substep.
-    fn step_soft(&mut self) {
-        let WorldState { settings, soft, .. } = &mut self.state;
-        if let Some(soft) = soft {
-            for s in 0..settings.substeps {
-                soft.step(self.substep_dt, settings.gravity, s, settings.substeps);
-            }
-        }
-    }
-
-    /// Stage 5: the fluid, once per substep.
-    fn step_fluid(&mut self) {
-        let WorldState {
-            settings, fluid, ..
-        } = &mut self.state;
-        if let Some(fluid) = fluid {
-            for _ in 0..settings.substeps {
-                fluid.step(self.substep_dt, settings.gravity);
-            }
-        }
-    }
-
     /// Stage 6: clears per-tick accumulators and advances the tick counter.
     fn end_tick(&mut self) {
-        if let Some(soft) = &mut self.state.soft {
-            soft.end_tick();
-        }
-        if let Some(particles) = &mut self.state.particles {
-            particles.end_tick();
-        }
-        if let Some(rigid) = &mut self.state.rigid {
-            rigid.end_tick();
+        let (_, _, subsystems) = self.state.split_mut();
+        for subsystem in subsystems.into_iter().flatten() {
+            subsystem.end_tick();
         }
         self.state.tick += 1;
     }
@@ -520,25 +488,10 @@ impl<R: Real> World<R> {
     pub fn checksum(&self) -> Checksum {
         let mut parts = Vec::with_capacity(4);
         parts.push((Part::Core, self.core_checksum()));
-        if let Some(particles) = &self.state.particles {
+        for subsystem in self.state.subsystems().into_iter().flatten() {
             let mut h = StateHasher::new();
-            particles.hash_state(&mut h);
-            parts.push((Part::Particles, h.finish()));
-        }
-        if let Some(rigid) = &self.state.rigid {
-            let mut h = StateHasher::new();
-            rigid.hash_state(&mut h);
-            parts.push((Part::Rigid, h.finish()));
-        }
-        if let Some(soft) = &self.state.soft {
-            let mut h = StateHasher::new();
-            soft.hash_state(&mut h);
-            parts.push((Part::Soft, h.finish()));
-        }
-        if let Some(fluid) = &self.state.fluid {
-            let mut h = StateHasher::new();
-            fluid.hash_state(&mut h);
-            parts.push((Part::Fluid, h.finish()));
+            subsystem.hash_state(&mut h);
+            parts.push((subsystem.part(), h.finish()));
         }
         let mut h = StateHasher::new();
         h.write_u32(STATE_VERSION);
@@ -558,20 +511,12 @@ impl<R: Real> World<R> {
     /// [`ParticleSystem::slot_digests`]). Used to name the first differing object when
     /// only a recording, not the other state, is at hand.
     pub fn object_digests(&self) -> ObjectDigests {
-        let mut digests = Vec::new();
-        if let Some(particles) = &self.state.particles {
-            digests.push((Part::Particles, particles.slot_digests()));
-        }
-        if let Some(rigid) = &self.state.rigid {
-            digests.push((Part::Rigid, rigid.slot_digests()));
-        }
-        if let Some(soft) = &self.state.soft {
-            digests.push((Part::Soft, soft.slot_digests()));
-        }
-        if let Some(fluid) = &self.state.fluid {
-            digests.push((Part::Fluid, fluid.slot_digests()));
-        }
-        digests
+        self.state
+            .subsystems()
+            .into_iter()
+            .flatten()
+            .map(|subsystem| (subsystem.part(), subsystem.slot_digests()))
+            .collect()
     }
 
     fn core_checksum(&self) -> u64 {
@@ -595,55 +540,8 @@ impl<R: Real> World<R> {
             diverged: self.divergence().is_some(),
             ..Metrics::default()
         };
-        if let Some(p) = &self.state.particles {
-            m.kinetic_energy += p.kinetic_energy().to_f64();
-            m.potential_energy += p.potential_energy(self.state.settings.gravity).to_f64();
-            let momentum = p.momentum().to_f64();
-            for (total, part) in m.momentum.iter_mut().zip(momentum) {
-                *total += part;
-            }
-            m.max_speed = m.max_speed.max(p.max_speed().to_f64());
-            m.particles = u64::from(p.live_count());
-        }
-        if let Some(r) = &self.state.rigid {
-            let rm = r.metrics(self.state.settings.gravity);
-            m.kinetic_energy += rm.kinetic_energy;
-            m.potential_energy += rm.potential_energy;
-            for (total, part) in m.momentum.iter_mut().zip(rm.momentum) {
-                *total += part;
-            }
-            m.max_speed = m.max_speed.max(rm.max_speed);
-            m.max_penetration = rm.max_penetration;
-            m.awake_bodies = rm.awake_bodies;
-            m.sleeping_bodies = rm.sleeping_bodies;
-            m.joints = rm.joints;
-            m.max_joint_error = rm.max_joint_error;
-        }
-        if let Some(s) = &self.state.soft {
-            let sm = s.metrics(self.state.settings.gravity);
-            m.kinetic_energy += sm.kinetic_energy;
-            m.potential_energy += sm.potential_energy;
-            for (total, part) in m.momentum.iter_mut().zip(sm.momentum) {
-                *total += part;
-            }
-            m.max_speed = m.max_speed.max(sm.max_speed);
-            m.max_stretch = sm.max_stretch;
-            m.mean_stretch = sm.mean_stretch;
-            m.soft_vertices = sm.vertices;
-        }
-        if let Some(f) = &self.state.fluid {
-            let fm = f.metrics(self.state.settings.gravity);
-            m.kinetic_energy += fm.kinetic_energy;
-            m.potential_energy += fm.potential_energy;
-            for (total, part) in m.momentum.iter_mut().zip(fm.momentum) {
-                *total += part;
-            }
-            m.max_speed = m.max_speed.max(fm.max_speed);
-            m.particles += fm.particles;
-            m.density_error_avg = fm.density_error_avg;
-            m.density_error_max = fm.density_error_max;
-            m.front_x = fm.front_x;
-            m.fluid_substeps = fm.substeps;
+        for subsystem in self.state.subsystems().into_iter().flatten() {
+            subsystem.add_metrics(self.state.settings.gravity, &mut m);
         }
         m
     }
@@ -656,36 +554,40 @@ impl<R: Real> World<R> {
     /// Puts the world back in the snapshotted state. Registered user forces are kept.
     pub fn restore(&mut self, snapshot: &WorldState<R>) {
         let mut state = snapshot.clone();
-        state.particles = match (self.state.particles.take(), state.particles.take()) {
-            (Some(mut current), Some(restored)) => {
-                current.restore_from(restored);
-                Some(current)
-            }
-            (_, restored) => restored,
-        };
-        state.rigid = match (self.state.rigid.take(), state.rigid.take()) {
-            (Some(mut current), Some(restored)) => {
-                current.restore_from(restored);
-                Some(current)
-            }
-            (_, restored) => restored,
-        };
-        state.soft = match (self.state.soft.take(), state.soft.take()) {
-            (Some(mut current), Some(restored)) => {
-                current.restore_from(restored);
-                Some(current)
-            }
-            (_, restored) => restored,
-        };
-        state.fluid = match (self.state.fluid.take(), state.fluid.take()) {
-            (Some(mut current), Some(restored)) => {
-                current.restore_from(restored);
-                Some(current)
-            }
-            (_, restored) => restored,
-        };
+        state.keep_unsimulated(&mut self.state);
         self.substep_dt = substep_dt(&state.settings);
         self.state = state;
+    }
+}
+
+/// Runs `f`, adding its wall-clock time to `stage` when timing is enabled.
+#[inline]
+fn timed<T>(timings: &mut Option<Box<StageTimings>>, stage: Stage, f: impl FnOnce() -> T) -> T {
+    match timings {
+        Some(t) => t.time(stage, f),
+        None => f(),
+    }
+}
+
+/// One tick of one subsystem: [`Subsystem::begin_tick`], then
+/// [`Subsystem::step`] once per substep of `substep_dt` seconds.
+fn step_subsystem<R: Real>(
+    subsystem: &mut dyn Subsystem<R>,
+    settings: &Settings<R>,
+    rng: &mut Pcg32,
+    substep_dt: R,
+) {
+    subsystem.begin_tick();
+    let mut context = StepContext {
+        dt: substep_dt,
+        gravity: settings.gravity,
+        rng,
+        substep: 0,
+        substeps: settings.substeps,
+    };
+    for substep in 0..settings.substeps {
+        context.substep = substep;
+        subsystem.step(&mut context);
     }
 }
 

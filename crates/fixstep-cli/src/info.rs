@@ -11,6 +11,7 @@ use fixstep::replay::format::FORMAT_VERSION;
 use fixstep::replay::{Replay, StateVersionCheck};
 use fixstep::rigid::JointsDesc;
 use fixstep::soft::{SoftDesc, SoftModel, SoftShape};
+use fixstep::types::lattice_copies as copies;
 use fixstep::world::STATE_VERSION;
 use fixstep::world::checksum::hex;
 
@@ -221,13 +222,4 @@ fn force_name(force: &ForceDesc<Fx>) -> &'static str {
         ForceDesc::PointGravity { .. } => "point gravity",
         ForceDesc::User { .. } => "user",
     }
-}
-
-/// How many copies a lattice of `count` makes (1 without a lattice), saturating.
-fn copies(count: Option<(u32, u32, u32)>) -> u64 {
-    count.map_or(1, |(nx, ny, nz)| {
-        u64::from(nx)
-            .saturating_mul(u64::from(ny))
-            .saturating_mul(u64::from(nz))
-    })
 }

@@ -15,7 +15,7 @@ use crate::particles::forces::{AccelerationField, ForceField, ForceGenerator, Fo
 use crate::particles::integrators::{self, Integrator, Scratch, StepContext};
 use crate::particles::storage::{Attributes, Kinematics};
 use crate::particles::user_force::UserForceRegistry;
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// A random raw value: physical (|x| < 2⁸ in I32F32), or, when `wild`, also large, near
 /// the range limits, or anything.

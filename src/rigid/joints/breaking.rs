@@ -3,7 +3,7 @@
 
 use crate::math::Real;
 use crate::rigid::system::RigidSystem;
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// A joint that broke during the last tick.
 #[derive(Clone, Copy, Debug, PartialEq)]

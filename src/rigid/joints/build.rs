@@ -8,7 +8,7 @@ use crate::math::{Mat3, Quat, Real, Vec3};
 use crate::rigid::build::{MAX_MAGNITUDE, check_lattice, check_total};
 use crate::rigid::desc::BodyKind;
 use crate::rigid::system::RigidSystem;
-use crate::scene::SceneError;
+use crate::types::SceneError;
 
 /// The shortest rod or rope, m: below it the direction between the anchors is lost in the
 /// rounding of I32F32 products.

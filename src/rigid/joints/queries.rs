@@ -5,7 +5,7 @@ use super::desc::JointKind;
 use crate::math::{Real, Vec3};
 use crate::rigid::solver::{JointPose, twist_angle};
 use crate::rigid::system::RigidSystem;
-use crate::world::Handle;
+use crate::types::Handle;
 
 impl<R: Real> RigidSystem<R> {
     /// Number of live joints.

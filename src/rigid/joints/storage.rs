@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use super::desc::JointKind;
 use crate::math::{Quat, Real, Vec3};
-use crate::world::Handle;
+use crate::types::Handle;
 
 /// The most scalar impulses a joint accumulates: a hinge's three point rows, two angular
 /// locks, two limits, a motor and a spring.

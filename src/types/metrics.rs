@@ -1,4 +1,6 @@
 //! Reporting figures for a world at one tick, as `f64`. Never fed back into the simulation.
+//!
+//! Each subsystem adds its own figures ([`Subsystem::add_metrics`](super::Subsystem::add_metrics)).
 
 /// One metrics row (`fixstep run --metrics`).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -36,7 +38,7 @@ pub struct Metrics {
     /// scene's count; 0 without a fluid or before its first step).
     pub fluid_substeps: u32,
     /// Whether the divergence check has seen the energy blow up (see
-    /// [`divergence`](super::divergence)); false when the check is off.
+    /// [`divergence`](crate::world::divergence)); false when the check is off.
     pub diverged: bool,
     /// The largest edge stretch max(0, ℓ/ℓ₀ − 1) of the soft bodies.
     pub max_stretch: f64, // ok-det: reporting

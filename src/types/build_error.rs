@@ -1,4 +1,4 @@
-//! Scene errors: which field is wrong, and how.
+//! Build errors: which field of a scene (or of a snapshot's state) is wrong, and how.
 
 use core::fmt;
 

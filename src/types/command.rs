@@ -1,15 +1,15 @@
 //! Inputs: typed commands, per player, per tick.
 //!
 //! The world applies a tick's inputs once, at the start of the tick (stage
-//! [`Stage::ApplyInputs`](super::Stage::ApplyInputs)), in ascending player index and, within
+//! [`Stage::ApplyInputs`](crate::world::Stage::ApplyInputs)), in ascending player index and, within
 //! a player, in the order the commands were given. A command whose target does not exist
 //! (a stale handle, a subsystem absent from the scene, an emitter index out of range) is
-//! skipped and counted in [`TickReport::ignored_commands`](super::TickReport); it never
+//! skipped and counted in [`TickReport::ignored_commands`](crate::world::TickReport); it never
 //! fails the tick.
 
 use serde::{Deserialize, Serialize};
 
-use super::handle::Handle;
+use super::Handle;
 use crate::math::{Fx, Real, Vec3};
 
 /// What a command acts on.
