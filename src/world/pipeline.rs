@@ -19,7 +19,8 @@ use crate::types::{
 };
 
 /// The version of the simulated state. It names the physics as much as the layout: bump it
-/// whenever a change alters any committed checksum, then re-record `replays/`.
+/// whenever a change alters any committed checksum, re-record `replays/`
+/// (`scripts/rerecord.sh`) and say why in `CHANGELOG.md`, which lists every version.
 ///
 /// 2: the rigid solver visits its contacts in batches of eight that share no moving body
 /// (so that a batch can be solved side by side) rather than one by one in contact order.
