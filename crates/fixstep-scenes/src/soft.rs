@@ -59,9 +59,16 @@ fn cloth_model<R: Real>() -> SoftModel<R> {
 /// pinned at its two corners on the x axis, falling and swinging under gravity, with a
 /// velocity damping of ½ /s (the air) that lets it come to rest within seconds.
 pub fn cloth<R: Real>(n: u32) -> SoftDesc<R> {
+    pinned_cloth(Vec3::new(-R::HALF, R::TWO, R::ZERO), n, Vec::new())
+}
+
+/// A horizontal square cloth of `n` × `n` vertices, 1 m a side along x and z from
+/// `origin`, 0.1 kg, pinned at its two corners on the x edge, with a velocity damping of
+/// ½ /s, among `colliders`.
+fn pinned_cloth<R: Real>(origin: Vec3<R>, n: u32, colliders: Vec<ColliderDesc<R>>) -> SoftDesc<R> {
     let mut sheet = body(
         SoftShape::Cloth {
-            origin: Vec3::new(-R::HALF, R::TWO, R::ZERO),
+            origin,
             u: Vec3::X,
             v: Vec3::Z,
             columns: n,
@@ -74,7 +81,7 @@ pub fn cloth<R: Real>(n: u32) -> SoftDesc<R> {
     sheet.damping = R::HALF;
     SoftDesc {
         bodies: vec![sheet],
-        colliders: Vec::new(),
+        colliders,
         solver: XpbdSettings::default(),
     }
 }
@@ -196,23 +203,6 @@ pub fn jelly<R: Real>() -> SoftDesc<R> {
 /// x = −4.5 and −3.5 m, 3 m up, falling and swinging beside the rigid bodies, damped like
 /// [`cloth`].
 pub fn showcase<R: Real>() -> SoftDesc<R> {
-    let n = 12;
-    let mut sheet = body(
-        SoftShape::Cloth {
-            origin: Vec3::new(-ratio::<R>(9, 2), R::from_int(3), R::ZERO),
-            u: Vec3::X,
-            v: Vec3::Z,
-            columns: n,
-            rows: n,
-        },
-        cloth_model(),
-        ratio(1, 10),
-    );
-    sheet.pins = vec![0, n - 1];
-    sheet.damping = R::HALF;
-    SoftDesc {
-        bodies: vec![sheet],
-        colliders: vec![ground()],
-        solver: XpbdSettings::default(),
-    }
+    let origin = Vec3::new(-ratio::<R>(9, 2), R::from_int(3), R::ZERO);
+    pinned_cloth(origin, 12, vec![ground()])
 }
