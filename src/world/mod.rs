@@ -17,5 +17,4 @@ pub use stage::StageTimings;
 pub use timestep::FixedTimestep;
 
 // The shared types, published here where the world's users first found them.
-pub use crate::types::command as input;
 pub use crate::types::{Command, Handle, Metrics, Part, PlayerInput, Stage, Target, TickInput};

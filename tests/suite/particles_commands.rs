@@ -7,7 +7,7 @@ use fixstep::particles::{
     Integrator, ParticleDesc, ParticleSystem, ParticleTemplate, ParticlesDesc,
 };
 use fixstep::world::Handle;
-use fixstep::world::input::Target;
+use fixstep::world::Target;
 
 fn particle(x: i32, mass: Fx, group: u16) -> ParticleDesc<Fx> {
     ParticleDesc {

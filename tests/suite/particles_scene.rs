@@ -10,7 +10,7 @@ use fixstep::particles::{
 };
 use fixstep::scene::Scene;
 use fixstep::world::Handle;
-use fixstep::world::input::Target;
+use fixstep::world::Target;
 use fixstep_scenes::particles as presets;
 
 fn hash(system: &ParticleSystem<Fx>) -> u64 {
