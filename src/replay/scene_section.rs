@@ -17,6 +17,11 @@
 //! contact recycle distance), and a scene that recycles contacts adds
 //! [`Addition::RigidRecycle`] with its distance, which is never 0 and never without rigid
 //! bodies: a file written before recycling existed reads as a scene without it.
+//!
+//! Bodies are written as state version 5 wrote them ([`BodyFields`]: all but the collision
+//! filter and the sensor flag); the bodies whose filter or sensor flag is not the default
+//! are listed, by index in ascending order, in [`Addition::RigidBodyFlags`], which is never
+//! empty and never names a body that does not exist.
 
 use serde::{Deserialize, Serialize};
 
@@ -24,7 +29,10 @@ use crate::codec::{self, CodecError};
 use crate::fluid::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
-use crate::rigid::{BodyDesc, JointsDesc, RigidDesc, SolverSettings};
+use crate::rigid::{
+    BodyDesc, BodyKind, CollisionFilter, Grid, JointsDesc, Material, RigidDesc, Shape,
+    SolverSettings,
+};
 use crate::scene::Scene;
 use crate::soft::SoftDesc;
 use crate::world::TickInput;
@@ -73,6 +81,83 @@ enum Addition<R: Real> {
     /// The rigid bodies' contact recycle distance
     /// ([`SolverSettings::contact_recycle_distance`]), when not 0.
     RigidRecycle(R),
+    /// The bodies with a filter or a sensor flag other than the default.
+    RigidBodyFlags(Vec<BodyFlags>),
+}
+
+/// The collision filter and sensor flag of body description `body`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+struct BodyFlags {
+    body: u32,
+    filter: CollisionFilter,
+    sensor: bool,
+}
+
+impl BodyFlags {
+    /// The flags of the descriptions that do not have the default ones, in order.
+    fn of<R: Real>(bodies: &[BodyDesc<R>]) -> Vec<Self> {
+        bodies
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| b.filter != CollisionFilter::ALL || b.sensor)
+            .map(|(k, b)| Self {
+                body: k as u32,
+                filter: b.filter,
+                sensor: b.sensor,
+            })
+            .collect()
+    }
+}
+
+/// [`BodyDesc`]'s fields as state version 5 wrote them, in that order: all but the
+/// collision filter and the sensor flag.
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct BodyFields<R: Real> {
+    kind: BodyKind,
+    shape: Shape<R>,
+    position: Vec3<R>,
+    orientation: crate::math::Quat<R>,
+    velocity: Vec3<R>,
+    angular_velocity: Vec3<R>,
+    density: R,
+    material: Material<R>,
+    linear_damping: R,
+    angular_damping: R,
+    grid: Option<Grid<R>>,
+}
+
+impl<R: Real> BodyFields<R> {
+    fn of(b: &BodyDesc<R>) -> Self {
+        Self {
+            kind: b.kind,
+            shape: b.shape.clone(),
+            position: b.position,
+            orientation: b.orientation,
+            velocity: b.velocity,
+            angular_velocity: b.angular_velocity,
+            density: b.density,
+            material: b.material,
+            linear_damping: b.linear_damping,
+            angular_damping: b.angular_damping,
+            grid: b.grid,
+        }
+    }
+
+    /// The description with the default filter, not a sensor.
+    fn into_desc(self) -> BodyDesc<R> {
+        let mut desc = BodyDesc::new(self.shape, self.position);
+        desc.kind = self.kind;
+        desc.orientation = self.orientation;
+        desc.velocity = self.velocity;
+        desc.angular_velocity = self.angular_velocity;
+        desc.density = self.density;
+        desc.material = self.material;
+        desc.linear_damping = self.linear_damping;
+        desc.angular_damping = self.angular_damping;
+        desc.grid = self.grid;
+        desc
+    }
 }
 
 impl<R: Real> Addition<R> {
@@ -84,6 +169,7 @@ impl<R: Real> Addition<R> {
             Self::Joints(_) => 3,
             Self::FluidCfl(_) => 4,
             Self::RigidRecycle(_) => 5,
+            Self::RigidBodyFlags(_) => 6,
         }
     }
 }
@@ -149,7 +235,7 @@ impl<R: Real> FluidFields<R> {
 #[derive(Serialize, Deserialize)]
 #[serde(bound = "")]
 struct RigidFields<R: Real> {
-    bodies: Vec<BodyDesc<R>>,
+    bodies: Vec<BodyFields<R>>,
     substeps: u32,
     contact_hertz: R,
     contact_damping_ratio: R,
@@ -167,7 +253,7 @@ impl<R: Real> RigidFields<R> {
     fn of(desc: &RigidDesc<R>) -> Self {
         let s = &desc.solver;
         Self {
-            bodies: desc.bodies.clone(),
+            bodies: desc.bodies.iter().map(BodyFields::of).collect(),
             substeps: s.substeps,
             contact_hertz: s.contact_hertz,
             contact_damping_ratio: s.contact_damping_ratio,
@@ -184,7 +270,7 @@ impl<R: Real> RigidFields<R> {
     /// The description without contact recycling (distance 0).
     fn into_desc(self) -> RigidDesc<R> {
         RigidDesc {
-            bodies: self.bodies,
+            bodies: self.bodies.into_iter().map(BodyFields::into_desc).collect(),
             solver: SolverSettings {
                 substeps: self.substeps,
                 contact_hertz: self.contact_hertz,
@@ -239,6 +325,12 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
         additions.push(Addition::RigidRecycle(
             rigid.solver.contact_recycle_distance,
         ));
+    }
+    if let Some(rigid) = &scene.rigid {
+        let flags = BodyFlags::of(&rigid.bodies);
+        if !flags.is_empty() {
+            additions.push(Addition::RigidBodyFlags(flags));
+        }
     }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
@@ -317,6 +409,28 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                     );
                 }
                 rigid.solver.contact_recycle_distance = distance;
+            }
+            Addition::RigidBodyFlags(flags) => {
+                let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
+                let Some(rigid) = &mut scene.rigid else {
+                    return not_canonical("body flags without rigid bodies");
+                };
+                if flags.is_empty() {
+                    return not_canonical("an empty list of body flags");
+                }
+                if !flags.windows(2).all(|w| w[0].body < w[1].body) {
+                    return not_canonical("body flags out of order or repeated");
+                }
+                for f in flags {
+                    let Some(body) = rigid.bodies.get_mut(f.body as usize) else {
+                        return not_canonical("body flags for a body that does not exist");
+                    };
+                    if f.filter == CollisionFilter::ALL && !f.sensor {
+                        return not_canonical("default body flags (written by leaving them out)");
+                    }
+                    body.filter = f.filter;
+                    body.sensor = f.sensor;
+                }
             }
         }
     }

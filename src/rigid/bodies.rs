@@ -14,6 +14,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::desc::BodyKind;
+use super::filter::CollisionFilter;
 use super::material::Material;
 use super::shape::Shape;
 use crate::math::{Mat3, Quat, Real, Vec3};
@@ -33,6 +34,8 @@ pub(crate) struct NewBody<R: Real> {
     pub angular_velocity: Vec3<R>,
     pub linear_damping: R,
     pub angular_damping: R,
+    pub filter: CollisionFilter,
+    pub sensor: bool,
 }
 
 /// Every body attribute, one array each, indexed by slot.
@@ -76,6 +79,10 @@ pub(crate) struct Bodies<R: Real> {
     pub linear_damping: Vec<R>,
     /// Angular damping, 1/s.
     pub angular_damping: Vec<R>,
+    /// Layers the body is on and interacts with.
+    pub filter: Vec<CollisionFilter>,
+    /// Whether the body is a sensor (detects overlaps, exerts and feels no contact force).
+    pub sensor: Vec<bool>,
 
     // Sleep.
     /// Seconds the body has been slower than the sleep speeds.
@@ -179,6 +186,8 @@ impl<R: Real> Bodies<R> {
         self.isotropic[i] = isotropic;
         self.linear_damping[i] = body.linear_damping;
         self.angular_damping[i] = body.angular_damping;
+        self.filter[i] = body.filter;
+        self.sensor[i] = body.sensor;
         self.sleep_time[i] = R::ZERO;
         self.asleep[i] = false;
         self.island[i] = i as u32;
@@ -219,6 +228,8 @@ impl<R: Real> Bodies<R> {
         self.isotropic.push(true);
         self.linear_damping.push(R::ZERO);
         self.angular_damping.push(R::ZERO);
+        self.filter.push(CollisionFilter::ALL);
+        self.sensor.push(false);
         self.sleep_time.push(R::ZERO);
         self.asleep.push(false);
         self.island.push(self.alive.len() as u32);

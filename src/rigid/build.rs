@@ -57,6 +57,8 @@ impl<R: Real> RigidSystem<R> {
             b.isotropic.len(),
             b.linear_damping.len(),
             b.angular_damping.len(),
+            b.filter.len(),
+            b.sensor.len(),
             b.sleep_time.len(),
             b.asleep.len(),
             b.island.len(),
@@ -280,6 +282,8 @@ fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, SceneError> {
         },
         linear_damping: body.linear_damping,
         angular_damping: body.angular_damping,
+        filter: body.filter,
+        sensor: body.sensor,
     })
 }
 

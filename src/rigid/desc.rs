@@ -18,6 +18,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::filter::CollisionFilter;
 use super::material::Material;
 use super::shape::Shape;
 use crate::math::{Fx, Quat, Real, Vec3};
@@ -99,6 +100,13 @@ pub struct BodyDesc<R: Real = Fx> {
     /// Copies of the body on a lattice; absent means one body.
     #[serde(default)]
     pub grid: Option<Grid<R>>,
+    /// The layers the body is on and interacts with ([`CollisionFilter`]). Default all ones.
+    #[serde(default)]
+    pub filter: CollisionFilter,
+    /// A sensor detects the bodies it overlaps (events `sensor_enter` and `sensor_exit`) but
+    /// exerts no contact force and feels none. Default false.
+    #[serde(default)]
+    pub sensor: bool,
 }
 
 fn identity<R: Real>() -> Quat<R> {
@@ -125,6 +133,8 @@ impl<R: Real> BodyDesc<R> {
             linear_damping: R::ZERO,
             angular_damping: R::ZERO,
             grid: None,
+            filter: CollisionFilter::ALL,
+            sensor: false,
         }
     }
 
