@@ -31,6 +31,7 @@ mod collide;
 mod commands;
 pub(crate) mod contact;
 pub mod desc;
+pub mod events;
 pub mod filter;
 pub mod gyroscopic;
 mod hashing;
@@ -51,6 +52,7 @@ pub mod transform;
 
 pub use aabb::Aabb;
 pub use desc::{BodyDesc, BodyKind, Grid, RigidDesc, SolverSettings};
+pub use events::{Event, EventKind};
 pub use filter::{CollisionFilter, QueryFilter};
 pub use joints::{JointDesc, JointEvent, JointGrid, JointKind, JointsDesc, Limits, Motor, Spring};
 pub use manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
