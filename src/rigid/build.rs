@@ -109,6 +109,18 @@ impl<R: Real> RigidSystem<R> {
             }
             previous = Some(c.key);
         }
+        let ordered = self.sensor_overlaps.windows(2).all(|w| w[0] < w[1]);
+        let live = |s: u32| (s as usize) < n && b.alive[s as usize];
+        if !ordered
+            || !self.sensor_overlaps.iter().all(|&(s, t)| {
+                s < t && live(s) && live(t) && b.sensor[s as usize] != b.sensor[t as usize]
+            })
+        {
+            return Err(SceneError::new(
+                "sensor_overlaps",
+                "must be ascending pairs A < B of a live sensor and a live body that is not one",
+            ));
+        }
         self.validate_joints()
     }
 }

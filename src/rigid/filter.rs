@@ -129,8 +129,19 @@ mod tests {
         let f = QueryFilter::new();
         assert!(f.accepts(CollisionFilter::ALL, false, h));
         assert!(!f.accepts(CollisionFilter::ALL, true, h));
-        assert!(f.clone().with_sensors().accepts(CollisionFilter::ALL, true, h));
-        assert!(!f.clone().excluding(h).accepts(CollisionFilter::ALL, false, h));
-        assert!(!f.with_mask(2).accepts(CollisionFilter::new(1, u32::MAX), false, h));
+        assert!(
+            f.clone()
+                .with_sensors()
+                .accepts(CollisionFilter::ALL, true, h)
+        );
+        assert!(
+            !f.clone()
+                .excluding(h)
+                .accepts(CollisionFilter::ALL, false, h)
+        );
+        assert!(
+            !f.with_mask(2)
+                .accepts(CollisionFilter::new(1, u32::MAX), false, h)
+        );
     }
 }

@@ -42,6 +42,7 @@ pub mod material;
 mod metrics;
 pub mod narrowphase;
 mod recycle;
+mod sensors;
 pub mod shape;
 mod sleep;
 mod solve;

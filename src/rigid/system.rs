@@ -8,6 +8,7 @@ use super::bodies::{Bodies, NewBody};
 use super::broadphase::BroadPhase;
 use super::contact::Contact;
 use super::desc::{BodyKind, SolverSettings};
+use super::events::Event;
 use super::joints::JointEvent;
 use super::joints::storage::Joints;
 use super::recycle::PairFrame;
@@ -42,6 +43,9 @@ pub struct RigidSystem<R: Real = Fx> {
     pub(crate) frames: Vec<PairFrame<R>>,
     /// Joints between the bodies.
     pub(crate) joints: Joints<R>,
+    /// Sensor and visitor slots (lower, higher) that overlap, ascending
+    /// ([`super::sensors`]).
+    pub(crate) sensor_overlaps: Vec<(u32, u32)>,
     #[serde(skip)]
     pub(crate) scratch: Scratch<R>,
 }
@@ -82,6 +86,15 @@ pub(crate) struct Scratch<R: Real> {
     pub joint_filter: Vec<(u32, u32)>,
     /// The joints that broke during the current tick.
     pub joint_events: Vec<JointEvent<R>>,
+    /// The events of the current tick ([`super::events`]).
+    pub events: Vec<Event>,
+    /// The tick the events belong to.
+    pub event_tick: u64,
+    /// Whether some live body is a sensor or has a filter other than the default: only
+    /// then does the collide stage filter pairs. Computed with the bounds cache.
+    pub filtered: bool,
+    /// This step's broadphase pairs with one sensor, which make no contact.
+    pub sensor_pairs: Vec<(u32, u32)>,
 }
 
 impl<R: Real> Clone for Scratch<R> {
@@ -105,6 +118,7 @@ impl<R: Real> RigidSystem<R> {
             contacts: Vec::new(),
             frames: Vec::new(),
             joints: Joints::default(),
+            sensor_overlaps: Vec::new(),
             scratch: Scratch::default(),
         }
     }
