@@ -1,16 +1,11 @@
 //! `fixstep render`: draw a replay or a scene to PNG frames, a GIF and a player page.
 
-use std::path::Path;
 use std::time::Instant;
 
 use super::args::RenderArgs;
 use super::output::print_line;
-use super::scene_arg::resolve_scene;
+use super::scene_arg::resolve_source;
 use super::status::Status;
-use fixstep::math::Fx;
-use fixstep::replay::Replay;
-use fixstep::scene::Scene;
-use fixstep::world::TickInput;
 use fixstep::world::checksum::hex;
 use fixstep_viewer::{BodyColours, Film, GIF_NAME, PAGE_NAME, PageSettings, write_outputs};
 
@@ -22,35 +17,10 @@ const MAX_FRAMES: u64 = 20_000;
 /// of memory and a few hundred MB of `index.html`.
 const MAX_FIGURES: usize = 10_000_000;
 
-/// What to simulate: a scene, its inputs and how many ticks by default.
-struct Source {
-    scene: Scene<Fx>,
-    inputs: Vec<TickInput<Fx>>,
-    ticks: u64,
-}
-
-/// The replay file or scene `input` names. A name ending in `.replay` is a replay.
-fn source(input: &str) -> Result<Source, String> {
-    if input.ends_with(".replay") {
-        let replay = Replay::read(Path::new(input)).map_err(|e| e.to_string())?;
-        return Ok(Source {
-            scene: replay.scene().clone(),
-            inputs: replay.inputs().to_vec(),
-            ticks: replay.ticks(),
-        });
-    }
-    let scene = resolve_scene(input)?;
-    Ok(Source {
-        inputs: scene.script.clone(),
-        ticks: scene.ticks,
-        scene,
-    })
-}
-
 /// Renders the input. The last line printed is `checksum: <16 hex digits>` of the last
 /// frame.
 pub fn render(args: &RenderArgs) -> Result<Status, String> {
-    let source = source(&args.input)?;
+    let source = resolve_source(&args.input)?;
     let ticks = args.ticks.unwrap_or(source.ticks);
     let frames = ticks / args.every + 1 + u64::from(!ticks.is_multiple_of(args.every));
     if frames > MAX_FRAMES {
@@ -62,16 +32,7 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
     }
     std::fs::create_dir_all(&args.out)
         .map_err(|e| format!("{}: cannot create the directory: {e}", args.out.display()))?;
-    let world = source
-        .scene
-        .build()
-        .and_then(|world| {
-            if let Some(particles) = world.particles() {
-                particles.check_user_forces()?;
-            }
-            Ok(world)
-        })
-        .map_err(|e| format!("{}: {e}", args.input))?;
+    let world = source.build_world(&args.input)?;
     let colours = if args.flat {
         BodyColours::PerBody
     } else {
