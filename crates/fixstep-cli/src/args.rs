@@ -100,7 +100,18 @@ pub struct RunArgs {
     /// Write metrics as CSV to this file.
     #[arg(long, value_name = "OUT.csv")]
     pub metrics: Option<PathBuf>,
-    /// Write a metrics row every K ticks (and after the last tick).
+    /// Write the rigid bodies' state as CSV to this file:
+    /// `tick,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz`, one row per live body in slot order
+    /// (centre of mass in m, orientation, velocities in the world frame).
+    #[arg(long, value_name = "OUT.csv")]
+    pub bodies: Option<PathBuf>,
+    /// Write every event of every tick as CSV to this file: `tick,event,a,b`
+    /// (contact_begin, contact_end, sensor_enter, sensor_exit, joint_break; b is empty for
+    /// joint_break, whose a is the joint).
+    #[arg(long, value_name = "OUT.csv")]
+    pub events: Option<PathBuf>,
+    /// Write the --metrics and --bodies rows every K ticks (from tick 0, and after the last
+    /// tick).
     #[arg(long, value_name = "K", default_value_t = 1,
           value_parser = clap::value_parser!(u64).range(1..))]
     pub every: u64,
@@ -122,6 +133,8 @@ impl Default for RunArgs {
             seed: None,
             record: None,
             metrics: None,
+            bodies: None,
+            events: None,
             every: 1,
             snapshot: None,
             from_snapshot: None,

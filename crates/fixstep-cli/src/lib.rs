@@ -4,7 +4,9 @@
 //! fixstep                      same as `fixstep run showcase`
 //! fixstep scenes               built-in scenes, `NAME  description` per line
 //! fixstep run SCENE|FILE.ron [--ticks N] [--seed S] [--record OUT.replay]
-//!                            [--metrics OUT.csv] [--every K]
+//!                            [--metrics OUT.csv] [--bodies OUT.csv] [--events OUT.csv]
+//!                            [--every K] [--snapshot OUT.snapshot]
+//!                            [--from-snapshot IN.snapshot]
 //! fixstep verify FILE.replay...
 //! fixstep info FILE.replay
 //! fixstep rerecord FILE.replay...
@@ -27,6 +29,9 @@
 
 mod args;
 mod bench;
+mod bodies_csv;
+mod csv_file;
+mod events_csv;
 mod info;
 mod metrics_csv;
 mod output;

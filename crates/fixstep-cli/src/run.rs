@@ -5,6 +5,8 @@ use std::path::Path;
 use std::time::Instant;
 
 use super::args::RunArgs;
+use super::bodies_csv::BodiesCsv;
+use super::events_csv::EventsCsv;
 use super::metrics_csv::MetricsCsv;
 use super::output::{eprint_line, print_line, write_error};
 use super::progress::Progress;
@@ -15,7 +17,7 @@ use fixstep::math::{Fx, Real};
 use fixstep::replay::{AtomicFile, DEFAULT_CHECKSUM_EVERY, InputFeed, Recorder};
 use fixstep::scene::Scene;
 use fixstep::world::checksum::hex;
-use fixstep::world::{TickInput, World, decode_snapshot, encode_snapshot};
+use fixstep::world::{TickInput, TickReport, World, decode_snapshot, encode_snapshot};
 
 /// Ticks between two divergence checks of `fixstep run` (an O(particles) energy sum each).
 const DIVERGENCE_CHECK_EVERY: u64 = 10;
@@ -35,14 +37,10 @@ impl Runner {
         }
     }
 
-    fn step(&mut self, input: &TickInput<Fx>) {
+    fn step(&mut self, input: &TickInput<Fx>) -> TickReport {
         match self {
-            Self::Recording(recorder) => {
-                recorder.step(input);
-            }
-            Self::Resumed(world) => {
-                world.step(input);
-            }
+            Self::Recording(recorder) => recorder.step(input),
+            Self::Resumed(world) => world.step(input),
         }
     }
 }
@@ -103,6 +101,8 @@ fn distinct_outputs(args: &RunArgs) -> Result<(), String> {
     let outputs = [
         ("--record", &args.record),
         ("--metrics", &args.metrics),
+        ("--bodies", &args.bodies),
+        ("--events", &args.events),
         ("--snapshot", &args.snapshot),
     ];
     for (i, (first, a)) in outputs.iter().enumerate() {
@@ -137,6 +137,12 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
         .as_deref()
         .map(|path| MetricsCsv::create(path, args.every))
         .transpose()?;
+    let mut bodies = args
+        .bodies
+        .as_deref()
+        .map(|path| BodiesCsv::create(path, args.every))
+        .transpose()?;
+    let mut events = args.events.as_deref().map(EventsCsv::create).transpose()?;
 
     let mut runner = match &args.from_snapshot {
         Some(path) => Runner::Resumed(Box::new(resume(&scene, path)?)),
@@ -152,15 +158,24 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     if let Some(metrics) = &mut metrics {
         metrics.tick(runner.world())?;
     }
+    if let Some(bodies) = &mut bodies {
+        bodies.tick(runner.world())?;
+    }
     let mut feed = InputFeed::new(&scene.script);
     let mut progress = Progress::new(ticks);
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
     for done in 1..=ticks {
         let tick = runner.world().tick();
-        runner.step(feed.at(tick));
+        let report = runner.step(feed.at(tick));
         report_broken_joints(runner.world());
         if let Some(metrics) = &mut metrics {
             metrics.tick(runner.world())?;
+        }
+        if let Some(bodies) = &mut bodies {
+            bodies.tick(runner.world())?;
+        }
+        if let Some(events) = &mut events {
+            events.events(&report.events)?;
         }
         progress.update(done);
     }
@@ -186,6 +201,12 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     let checksum = world.checksum().total;
     if let Some(metrics) = metrics {
         metrics.finish(world)?;
+    }
+    if let Some(bodies) = bodies {
+        bodies.finish(world)?;
+    }
+    if let Some(events) = events {
+        events.finish()?;
     }
     if let Some(file) = snapshot_file {
         commit_output(file, "snapshot", encode_snapshot(&world.snapshot()))?;
