@@ -48,6 +48,14 @@ pub enum Command {
     /// Draw a replay or a scene: PNG frames, an animated GIF and an interactive
     /// DIR/index.html player.
     Render(RenderArgs),
+    /// Simulate a scene or a replay to a tick and ask the world a question: the first body
+    /// a ray or a moving shape hits, or the bodies a shape overlaps; one JSON object a line.
+    ///
+    /// A hit is `{"body":"3v0","distance":D,"point":[X,Y,Z],"normal":[X,Y,Z]}` (m, the
+    /// normal out of the body hit), a miss `{"hit":false}`. SHAPE is `sphere:R`,
+    /// `box:HX,HY,HZ` (half extents) or `capsule:R,H` (H the half height of its segment,
+    /// along y), axis-aligned, in m.
+    Query(QueryArgs),
     /// Play a scene with other peers over UDP (GGRS), headless, with bot or scripted inputs:
     /// prints `checksum: <hex>` last on success, exits 1 on a desync.
     #[cfg(feature = "net")]
@@ -168,6 +176,50 @@ pub struct RenderArgs {
     /// One flat colour per body, no shading, outlines or anti-aliasing (to count bodies).
     #[arg(long)]
     pub flat: bool,
+}
+
+/// Arguments of `fixstep query`. The query's values are text here and parsed by
+/// [`crate::query_spec`], so that a bad one is one `error: --ARG: ...` line.
+///
+/// Give exactly one of `--ray`, `--cast` (with `--from` and `--dir`) and `--overlap` (with
+/// `--at`). Shapes are axis-aligned: `sphere:R`, `box:HX,HY,HZ` (half extents) or
+/// `capsule:R,H` (H the half height of its segment, along y); lengths in m.
+#[derive(Debug, Args)]
+pub struct QueryArgs {
+    /// A built-in scene name, a RON scene file (run with its script) or a replay file
+    /// (run with its recorded inputs).
+    #[arg(value_name = "SCENE|FILE.ron|FILE.replay")]
+    pub input: String,
+    /// Simulate this many ticks before the query.
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub tick: u64,
+    /// Cast a ray from (OX,OY,OZ) along (DX,DY,DZ) (any length but zero): prints the first
+    /// hit, or `{"hit":false}`.
+    #[arg(long, value_name = "OX,OY,OZ,DX,DY,DZ", allow_hyphen_values = true)]
+    pub ray: Option<String>,
+    /// Sweep a shape (sphere:R, box:HX,HY,HZ or capsule:R,H) from --from along --dir:
+    /// prints the first hit, or `{"hit":false}`.
+    #[arg(long, value_name = "SHAPE", allow_hyphen_values = true)]
+    pub cast: Option<String>,
+    /// Where a --cast shape starts (its centre).
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub from: Option<String>,
+    /// The direction a --cast shape moves in (any length but zero).
+    #[arg(long, value_name = "DX,DY,DZ", allow_hyphen_values = true)]
+    pub dir: Option<String>,
+    /// Find the bodies a shape (sphere:R, box:HX,HY,HZ or capsule:R,H) placed at --at
+    /// overlaps: prints `{"body":"3v0"}` for each, in ascending order.
+    #[arg(long, value_name = "SHAPE", allow_hyphen_values = true)]
+    pub overlap: Option<String>,
+    /// Where an --overlap shape is (its centre).
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub at: Option<String>,
+    /// The longest distance a ray or a cast travels, m (default 1000).
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub max: Option<String>,
+    /// Only bodies on one of these layers, a 32-bit mask in decimal or 0x hex (default: all).
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub mask: Option<String>,
 }
 
 /// A view name.

@@ -12,6 +12,10 @@
 //! fixstep rerecord FILE.replay...
 //! fixstep render REPLAY|SCENE [--ticks N] [--out DIR] [--every K]
 //!                            [--view iso|front|top] [--size WxH] [--flat]
+//! fixstep query SCENE|FILE.ron|FILE.replay [--tick N] [--max D] [--mask M]
+//!              (--ray OX,OY,OZ,DX,DY,DZ | --cast SHAPE --from X,Y,Z --dir DX,DY,DZ
+//!               | --overlap SHAPE --at X,Y,Z)
+//!              SHAPE: sphere:R | box:HX,HY,HZ | capsule:R,H (H: half height)
 //! fixstep peer --local-port P --remote ADDR [--remote ADDR...] [--player-index I]
 //!              [--scene S] [--ticks T] [--lockstep | --rollback] [--record OUT.replay]
 //!              [--bot SEED | --inputs FILE.ron] [--desync-every N] [--timeout SECONDS]
@@ -38,6 +42,8 @@ mod output;
 #[cfg(feature = "net")]
 mod peer;
 mod progress;
+mod query;
+mod query_spec;
 mod render;
 mod rerecord;
 mod run;
@@ -53,7 +59,7 @@ use clap::Parser;
 
 #[cfg(feature = "net")]
 pub use args::PeerArgs;
-pub use args::{BenchCommand, Cli, Command, RenderArgs, RunArgs};
+pub use args::{BenchCommand, Cli, Command, QueryArgs, RenderArgs, RunArgs};
 pub use status::Status;
 
 /// Runs the command line of this process; returns the exit code.
@@ -92,6 +98,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         Some(Command::Info { file }) => info::info(&file),
         Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
         Some(Command::Render(args)) => render::render(&args),
+        Some(Command::Query(args)) => query::query(&args),
         #[cfg(feature = "net")]
         Some(Command::Peer(args)) => peer::peer(&args),
         Some(Command::Bench { benchmark }) => bench::bench(&benchmark),
