@@ -92,7 +92,7 @@ fn unit_direction<R: Real>(v: Vec3<R>) -> Option<Vec3<R>> {
                 v.z.mul_pow2_recip(1),
             );
         } else if m < R::HALF {
-            v = v * R::TWO;
+            v *= R::TWO;
         } else {
             break;
         }

@@ -185,10 +185,10 @@ pub(super) fn ray_shape<R: Real>(
             let mut best: Option<Crossing<R>> = None;
             for part in parts {
                 let local = Transform::from_pose(part.translation, part.rotation);
-                if let Some(hit) = ray_shape(&part.shape, &xf.compose(&local), ray) {
-                    if best.is_none_or(|b| hit.distance() < b.distance()) {
-                        best = Some(hit);
-                    }
+                if let Some(hit) = ray_shape(&part.shape, &xf.compose(&local), ray)
+                    && best.is_none_or(|b| hit.distance() < b.distance())
+                {
+                    best = Some(hit);
                 }
             }
             best
@@ -326,10 +326,10 @@ pub(super) fn ray_capsule<R: Real>(radius: R, half_height: R, ray: &Ray<R>) -> O
     }
     for end in [-half_height, half_height] {
         let centre = Vec3::new(R::ZERO, end, R::ZERO);
-        if let Some(hit) = ray_sphere(centre, radius, &near) {
-            if best.is_none_or(|b| hit.distance() < b.distance()) {
-                best = Some(hit);
-            }
+        if let Some(hit) = ray_sphere(centre, radius, &near)
+            && best.is_none_or(|b| hit.distance() < b.distance())
+        {
+            best = Some(hit);
         }
     }
     best.map(|hit| match hit {

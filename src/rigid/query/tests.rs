@@ -161,10 +161,10 @@ fn ref_capsule(o: D3, d: D3, r: f64, h: f64) -> Option<(f64, D3)> {
         }
     }
     for end in [-h, h] {
-        if let Some(hit) = ref_sphere(o, d, [0.0, end, 0.0], r) {
-            if best.is_none_or(|b| hit.0 < b.0) {
-                best = Some(hit);
-            }
+        if let Some(hit) = ref_sphere(o, d, [0.0, end, 0.0], r)
+            && best.is_none_or(|b| hit.0 < b.0)
+        {
+            best = Some(hit);
         }
     }
     best
@@ -335,10 +335,10 @@ fn rays_against_a_compound_hit_its_nearest_part() {
                 Shape::Box { half_extents } => ref_box(sub(lo, *t), ld, half_extents.to_f64()),
                 _ => unreachable!(),
             };
-            if let Some(hit) = hit {
-                if best.is_none_or(|b| hit.0 < b.0) {
-                    best = Some(hit);
-                }
+            if let Some(hit) = hit
+                && best.is_none_or(|b| hit.0 < b.0)
+            {
+                best = Some(hit);
             }
         }
         match best {
