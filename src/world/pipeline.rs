@@ -430,7 +430,9 @@ impl<R: Real> World<R> {
             | Command::Remove {
                 target: Target::Joint(_),
             }
-            | Command::SetMotor { .. } => self
+            | Command::SetMotor { .. }
+            | Command::SpawnBody { .. }
+            | Command::SpawnJoint { .. } => self
                 .state
                 .rigid
                 .as_mut()
