@@ -18,6 +18,9 @@
 //!
 //! Joints: [`joints`] kinds, storage, breaking and queries; their rows live in the solver.
 //!
+//! Game API: [`filter`] collision layers and query filters · `sensors` overlap detection ·
+//! [`events`] contact, sensor and joint events · `spawn` templates and spawning by input.
+//!
 //! Dynamics: [`collide`] stage 1 · [`contact`] persistent contacts · [`sleep`] islands,
 //! waking and sleeping · [`solve`] stage 3 · [`solver`] the soft-step sequential-impulse
 //! solver · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with

@@ -64,9 +64,9 @@ impl Bot {
             seed,
             bodies,
             particles: world.particles().is_some(),
-            templates: world
-                .rigid()
-                .map_or(0, |r| u16::try_from(r.templates().len()).unwrap_or(u16::MAX)),
+            templates: world.rigid().map_or(0, |r| {
+                u16::try_from(r.templates().len()).unwrap_or(u16::MAX)
+            }),
         }
     }
 

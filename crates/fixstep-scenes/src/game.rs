@@ -9,7 +9,7 @@ use fixstep::rigid::{
 };
 use fixstep::world::{Command, PlayerInput, TickInput};
 
-use crate::rigid::ground;
+use super::rigid::ground;
 
 /// Layer of the level: the ground, the wall's boxes and the plate.
 pub const WORLD: u32 = 1;
