@@ -104,7 +104,6 @@ impl<R: Real> RigidSystem<R> {
         Ok(())
     }
 
-    /// One joint of the lattice: checks its bodies and computes its frames in them.
     /// Compiles a spawned joint between slots `joint.bodies` (no lattice).
     pub(crate) fn compile_spawned_joint(
         &self,
@@ -118,6 +117,7 @@ impl<R: Real> RigidSystem<R> {
         self.compile_joint(joint, &copy)
     }
 
+    /// One joint of the lattice: checks its bodies and computes its frames in them.
     fn compile_joint(
         &self,
         joint: &JointDesc<R>,
