@@ -337,3 +337,48 @@ fn restoring_at_every_tick_and_resimulating_gives_the_same_events_and_checksums(
     assert_eq!(sums, straight_sums);
     assert_eq!(events, straight_events);
 }
+
+#[test]
+fn the_shooter_replay_carries_its_sight_queries() {
+    use fixstep::replay::Replay;
+    use fixstep::rigid::QueryFilter;
+    use fixstep_scenes::game::{SIGHT_RANGE, WORLD, muzzle, sight_payload};
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("replays/shooter.replay");
+    let replay = Replay::read(&path).unwrap_or_else(|e| panic!("{e}"));
+    let mut world = replay.scene().build().expect("builds");
+    let mut checked = 0;
+    for input in replay.inputs() {
+        while world.tick() < input.tick {
+            world.step(&TickInput::default());
+        }
+        for command in input.players.iter().flat_map(|p| &p.commands) {
+            let Command::Payload(recorded) = *command else {
+                continue;
+            };
+            let velocity = input
+                .players
+                .iter()
+                .flat_map(|p| &p.commands)
+                .find_map(|c| match c {
+                    Command::SpawnBody { velocity, .. } => Some(*velocity),
+                    _ => None,
+                })
+                .expect("a shot with the sight");
+            let seen = world.cast_ray(
+                muzzle(),
+                velocity,
+                Fx::from_int(SIGHT_RANGE),
+                &QueryFilter::new().with_mask(WORLD),
+            );
+            assert_eq!(
+                sight_payload(seen.as_ref()),
+                recorded,
+                "tick {}",
+                input.tick
+            );
+            checked += 1;
+        }
+        world.step(input);
+    }
+    assert_eq!(checked, 8);
+}

@@ -3,10 +3,12 @@
 //! are on their own layer, so they pass through the player and each other; a sensor plate
 //! behind the wall counts what lands on it; the gun's line of sight is a ray query.
 
-use fixstep::math::{Quat, Real, Vec3};
+use fixstep::math::{Quat, Real, StateHasher, Vec3};
 use fixstep::rigid::{
-    BodyDesc, BodyKind, BodyTemplate, CollisionFilter, Grid, Material, RigidDesc, Shape,
+    BodyDesc, BodyKind, BodyTemplate, CollisionFilter, Grid, Material, QueryFilter, RayHit,
+    RigidDesc, Shape,
 };
+use fixstep::scene::Scene;
 use fixstep::world::{Command, PlayerInput, TickInput};
 
 use super::rigid::ground;
@@ -93,23 +95,63 @@ pub fn shooter<R: Real>() -> RigidDesc<R> {
     }
 }
 
-/// The player's inputs: at each shot's tick, spawn a projectile at the muzzle flying
-/// downrange.
+/// How far the gun's sight reaches, m.
+pub const SIGHT_RANGE: i32 = 50;
+
+/// The player's inputs: at each shot's tick, a [`Command::Payload`] with what the gun's
+/// sight sees ([`sight_payload`]) and a projectile spawned at the muzzle flying downrange.
+/// The sight is a ray query on the state before the tick, so the script is made by
+/// simulating the scene up to each shot: a replay then carries the query results, and
+/// re-simulating it checks them.
 pub fn shooter_script<R: Real>() -> Vec<TickInput<R>> {
-    SHOTS
-        .iter()
-        .map(|&(tick, along, up)| TickInput {
+    let mut scene = Scene::empty("shooter");
+    scene.rigid = Some(shooter());
+    let mut world = scene.build().expect("the shooter scene builds");
+    let mut script = Vec::with_capacity(SHOTS.len());
+    for &(tick, along, up) in &SHOTS {
+        let velocity = Vec3::new(R::from_ratio(along, 10), R::from_ratio(up, 10), R::ZERO);
+        while world.tick() < tick {
+            let input = script
+                .last()
+                .filter(|i: &&TickInput<R>| i.tick == world.tick());
+            world.step(input.unwrap_or(&TickInput::default()));
+        }
+        let seen = world.cast_ray(
+            muzzle(),
+            velocity,
+            R::from_int(SIGHT_RANGE),
+            &QueryFilter::new().with_mask(WORLD),
+        );
+        let commands = vec![
+            Command::Payload(sight_payload(seen.as_ref())),
+            Command::SpawnBody {
+                template: 0,
+                position: muzzle(),
+                orientation: Quat::IDENTITY,
+                velocity,
+                angular_velocity: Vec3::ZERO,
+            },
+        ];
+        script.push(TickInput {
             tick,
             players: vec![PlayerInput {
                 player: 0,
-                commands: vec![Command::SpawnBody {
-                    template: 0,
-                    position: muzzle(),
-                    orientation: Quat::IDENTITY,
-                    velocity: Vec3::new(R::from_ratio(along, 10), R::from_ratio(up, 10), R::ZERO),
-                    angular_velocity: Vec3::ZERO,
-                }],
+                commands,
             }],
-        })
-        .collect()
+        });
+    }
+    script
+}
+
+/// A sight's result as a payload: the low 32 bits of the state hash of the body's index and
+/// generation and the distance's canonical bits; `u32::MAX` for a miss.
+pub fn sight_payload<R: Real>(hit: Option<&RayHit<R>>) -> u32 {
+    let Some(hit) = hit else {
+        return u32::MAX;
+    };
+    let mut h = StateHasher::new();
+    h.write_u32(hit.body.index);
+    h.write_u32(hit.body.generation);
+    h.write_real(hit.distance);
+    h.finish() as u32
 }
