@@ -15,6 +15,31 @@ impl<R: Real> RigidSystem<R> {
     /// Applies a world command aimed at a rigid body or a joint; false when its target does
     /// not exist or the command does not act on it.
     pub fn apply_command(&mut self, command: &Command<R>) -> bool {
+        match *command {
+            Command::SpawnBody {
+                template,
+                position,
+                orientation,
+                velocity,
+                angular_velocity,
+            } => {
+                return self
+                    .spawn_body(template, position, orientation, velocity, angular_velocity)
+                    .is_some();
+            }
+            Command::SpawnJoint {
+                template,
+                bodies,
+                anchor,
+                anchor_b,
+                axis,
+            } => {
+                return self
+                    .spawn_joint(template, bodies, anchor, anchor_b, axis)
+                    .is_some();
+            }
+            _ => {}
+        }
         let target = match command {
             Command::ApplyForce { target, .. }
             | Command::ApplyImpulse { target, .. }

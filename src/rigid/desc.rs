@@ -21,6 +21,7 @@ use serde::{Deserialize, Serialize};
 use super::filter::CollisionFilter;
 use super::material::Material;
 use super::shape::Shape;
+use super::spawn::{BodyTemplate, JointTemplate};
 use crate::math::{Fx, Quat, Real, Vec3};
 
 /// The most bodies a scene may create.
@@ -155,6 +156,24 @@ pub struct RigidDesc<R: Real = Fx> {
     /// Solver settings.
     #[serde(default)]
     pub solver: SolverSettings<R>,
+    /// What [`Command::SpawnBody`](crate::types::Command::SpawnBody) creates, by index.
+    #[serde(default)]
+    pub templates: Vec<BodyTemplate<R>>,
+    /// What [`Command::SpawnJoint`](crate::types::Command::SpawnJoint) creates, by index.
+    #[serde(default)]
+    pub joint_templates: Vec<JointTemplate<R>>,
+}
+
+impl<R: Real> Default for RigidDesc<R> {
+    /// No bodies, no templates, the default solver settings.
+    fn default() -> Self {
+        Self {
+            bodies: Vec::new(),
+            solver: SolverSettings::default(),
+            templates: Vec::new(),
+            joint_templates: Vec::new(),
+        }
+    }
 }
 
 impl<R: Real> RigidDesc<R> {

@@ -74,6 +74,8 @@ impl<R: Real> RigidSystem<R> {
     pub(crate) fn begin_events(&mut self, tick: u64) {
         self.scratch.events.clear();
         self.scratch.event_tick = tick;
+        self.scratch.spawned.clear();
+        self.scratch.spawned_joints.clear();
         self.clear_joint_events();
     }
 

@@ -14,6 +14,7 @@ use super::joints::storage::Joints;
 use super::query::QueryIndex;
 use super::recycle::PairFrame;
 use super::solver::Solver;
+use super::spawn::{BodyTemplate, JointTemplate};
 use super::transform::Transform;
 use crate::math::{Fx, Real, Vec3};
 use crate::types::Handle;
@@ -47,6 +48,9 @@ pub struct RigidSystem<R: Real = Fx> {
     /// Sensor and visitor slots (lower, higher) that overlap, ascending
     /// ([`super::sensors`]).
     pub(crate) sensor_overlaps: Vec<(u32, u32)>,
+    /// What spawn commands create ([`super::spawn`]).
+    pub(crate) templates: Vec<BodyTemplate<R>>,
+    pub(crate) joint_templates: Vec<JointTemplate<R>>,
     #[serde(skip)]
     pub(crate) scratch: Scratch<R>,
 }
@@ -96,6 +100,9 @@ pub(crate) struct Scratch<R: Real> {
     pub filtered: bool,
     /// This step's broadphase pairs with one sensor, which make no contact.
     pub sensor_pairs: Vec<(u32, u32)>,
+    /// The bodies and the joints spawned during the current tick.
+    pub spawned: Vec<Handle>,
+    pub spawned_joints: Vec<Handle>,
     /// The bounding-volume tree of the scene queries ([`super::query`]).
     pub query: QueryIndex<R>,
 }
@@ -122,6 +129,8 @@ impl<R: Real> RigidSystem<R> {
             frames: Vec::new(),
             joints: Joints::default(),
             sensor_overlaps: Vec::new(),
+            templates: Vec::new(),
+            joint_templates: Vec::new(),
             scratch: Scratch::default(),
         }
     }

@@ -262,6 +262,12 @@ impl<R: Real> World<R> {
         self.state.rigid.as_ref()
     }
 
+    /// The events of the last tick, in canonical order (the same as its
+    /// [`TickReport::events`]); empty without rigid bodies.
+    pub fn events(&self) -> &[Event] {
+        self.state.rigid.as_ref().map_or(&[], |r| r.events())
+    }
+
     /// The simulated state.
     pub fn state(&self) -> &WorldState<R> {
         &self.state
@@ -430,7 +436,9 @@ impl<R: Real> World<R> {
             | Command::Remove {
                 target: Target::Joint(_),
             }
-            | Command::SetMotor { .. } => self
+            | Command::SetMotor { .. }
+            | Command::SpawnBody { .. }
+            | Command::SpawnJoint { .. } => self
                 .state
                 .rigid
                 .as_mut()
