@@ -42,6 +42,11 @@ impl CollisionFilter {
         mask: u32::MAX,
     };
 
+    /// Whether this is the default, [`Self::ALL`].
+    pub fn is_all(&self) -> bool {
+        *self == Self::ALL
+    }
+
     /// The filter on `layers` that interacts with `mask`.
     pub const fn new(layers: u32, mask: u32) -> Self {
         Self { layers, mask }
