@@ -22,6 +22,9 @@
 //! waking and sleeping · [`solve`] stage 3 · [`solver`] the soft-step sequential-impulse
 //! solver · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with
 //! gyroscopic torque.
+//!
+//! Queries: [`query`] rays, shape casts, overlaps and closest points, over a bounding-volume
+//! tree kept current by the step.
 
 pub mod aabb;
 pub(crate) mod bodies;
@@ -41,6 +44,7 @@ pub mod mass;
 pub mod material;
 mod metrics;
 pub mod narrowphase;
+pub mod query;
 mod recycle;
 mod sensors;
 pub mod shape;
@@ -61,6 +65,7 @@ pub use manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
 pub use mass::MassProperties;
 pub use material::Material;
 pub use metrics::RigidMetrics;
+pub use query::{PointProjection, RayHit};
 pub use shape::{Part, Shape};
 pub use spawn::{BodyTemplate, JointTemplate};
 pub use system::RigidSystem;

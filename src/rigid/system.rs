@@ -11,6 +11,7 @@ use super::desc::{BodyKind, SolverSettings};
 use super::events::Event;
 use super::joints::JointEvent;
 use super::joints::storage::Joints;
+use super::query::QueryIndex;
 use super::recycle::PairFrame;
 use super::solver::Solver;
 use super::spawn::{BodyTemplate, JointTemplate};
@@ -102,6 +103,8 @@ pub(crate) struct Scratch<R: Real> {
     /// The bodies and the joints spawned during the current tick.
     pub spawned: Vec<Handle>,
     pub spawned_joints: Vec<Handle>,
+    /// The bounding-volume tree of the scene queries ([`super::query`]).
+    pub query: QueryIndex<R>,
 }
 
 impl<R: Real> Clone for Scratch<R> {
@@ -141,18 +144,20 @@ impl<R: Real> RigidSystem<R> {
     /// [`from_desc`](RigidSystem::from_desc).
     pub(crate) fn insert(&mut self, body: NewBody<R>) -> Handle {
         self.scratch.cache_valid = false;
+        self.scratch.query.invalidate();
         self.bodies.insert(body)
     }
 
-    /// Advances the bodies by `dt` seconds under `gravity` (m/s²).
+    /// Advances the bodies by `dt` seconds under `gravity` (m/s²), then brings the query
+    /// index up to date.
     pub fn step(&mut self, dt: R, gravity: Vec3<R>) {
-        if !(0..self.bodies.len()).any(|i| self.bodies.is_moving(i)) {
-            return;
+        if (0..self.bodies.len()).any(|i| self.bodies.is_moving(i)) {
+            self.collide();
+            self.wake_touched();
+            self.solve(dt, gravity);
+            self.update_sleep(dt);
         }
-        self.collide();
-        self.wake_touched();
-        self.solve(dt, gravity);
-        self.update_sleep(dt);
+        self.update_query_index();
     }
 
     /// Clears the per-tick force and torque accumulators.
@@ -172,6 +177,7 @@ impl<R: Real> RigidSystem<R> {
         self.scratch = scratch;
         self.scratch.cache_valid = false;
         self.scratch.joint_filter_valid = false;
+        self.scratch.query.discard();
     }
 
     /// Number of body slots, alive or dead.
@@ -210,6 +216,7 @@ impl<R: Real> RigidSystem<R> {
             return false;
         };
         self.bodies.position[i] = position;
+        self.scratch.query.discard();
         true
     }
 

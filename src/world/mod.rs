@@ -4,6 +4,7 @@ pub mod checksum;
 pub mod difference;
 pub mod divergence;
 mod pipeline;
+mod queries;
 pub mod snapshot;
 pub mod stage;
 pub mod timestep;

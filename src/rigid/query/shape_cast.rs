@@ -1,0 +1,190 @@
+//! Shape casts: a sphere, box or capsule translated along a unit direction d from a start
+//! pose, against one body's shape: the first distance t (m) at which the two touch.
+//!
+//! A sphere against a sphere or a capsule is a ray against the target grown by the
+//! sphere's radius (exact to rounding). Every other pair uses conservative advancement
+//! with the narrowphase ([`collide`]): at distance t it gives the separation s (m) along
+//! a separating direction n (from the cast shape towards the target); the shapes cannot
+//! touch before t + s / (n·d), so the cast advances by that much (n·d ≤ 0: they never
+//! meet). It stops at a gap of at most [`cast_tolerance`]. Should an advance overshoot
+//! into overlap deeper than the tolerance (the narrowphase's separation of two boxes is
+//! that of its clipped points, which can exceed their true gap), the cast bisects between
+//! the last separated distance and the overlapping one. After [`MAX_ITERATIONS`] it reports
+//! the distance reached.
+//!
+//! So the reported distance lies within the tolerance of a touching pose: the gap there
+//! is at most 2⁻²⁰ m, or the overlap at most that deep (to rounding). Shapes that already
+//! touch or overlap at the start hit at distance 0.
+
+use super::super::manifold::Manifold;
+use super::super::narrowphase::collide;
+use super::super::shape::Shape;
+use super::super::transform::Transform;
+use super::ray::{Crossing, Ray, clamped_ratio, ray_capsule, ray_sphere};
+use crate::math::{Real, Vec3};
+
+/// Most narrowphase calls one cast against one convex shape makes.
+pub(super) const MAX_ITERATIONS: usize = 64;
+
+/// The gap (m) at which a conservative advancement counts as touching: 2⁻²⁰ m ≈ 0.95 µm.
+pub(super) fn cast_tolerance<R: Real>() -> R {
+    R::from_ratio(1, 1 << 20)
+}
+
+/// Where a cast shape first touches a target.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct CastHit<R: Real> {
+    /// Travel along the unit direction at impact, m.
+    pub distance: R,
+    /// The contact point, m (midway between the two surfaces).
+    pub point: Vec3<R>,
+    /// Unit normal from the target towards the cast shape.
+    pub normal: Vec3<R>,
+}
+
+/// The convex `cast` (sphere, box or capsule) placed by `start`, moved along unit
+/// `direction` by up to `max` (m), against `target` placed by `xf`: a compound answers for
+/// its nearest part (the first on ties), a plane for its half-space.
+pub(super) fn cast_shape<R: Real>(
+    cast: &Shape<R>,
+    start: &Transform<R>,
+    direction: Vec3<R>,
+    max: R,
+    target: &Shape<R>,
+    xf: &Transform<R>,
+) -> Option<CastHit<R>> {
+    match target {
+        Shape::Compound { parts } => {
+            let mut best: Option<CastHit<R>> = None;
+            for part in parts {
+                let local = Transform::from_pose(part.translation, part.rotation);
+                let placed = xf.compose(&local);
+                if let Some(hit) = cast_shape(cast, start, direction, max, &part.shape, &placed) {
+                    if best.is_none_or(|b| hit.distance < b.distance) {
+                        best = Some(hit);
+                    }
+                }
+            }
+            best
+        }
+        _ => analytic(cast, start, direction, max, target, xf)
+            .unwrap_or_else(|| advance(cast, start, direction, max, target, xf)),
+    }
+}
+
+/// A sphere of radius ρ against a sphere or capsule of radius r: the ray of the sphere's
+/// centre against the target grown to radius r + ρ; the contact point is the centre at
+/// impact moved ρ against the normal. `None` when the pair is not one of these or the
+/// centre starts in the grown shape (left to [`advance`], which answers distance 0 with
+/// the narrowphase's normal); `Some(None)` for a miss.
+#[allow(clippy::option_option)] // "not analytic" and "analytic miss" differ
+fn analytic<R: Real>(
+    cast: &Shape<R>,
+    start: &Transform<R>,
+    direction: Vec3<R>,
+    max: R,
+    target: &Shape<R>,
+    xf: &Transform<R>,
+) -> Option<Option<CastHit<R>>> {
+    let Shape::Sphere { radius: rho } = cast else {
+        return None;
+    };
+    let ray = Ray::new(start.translation, direction, max);
+    let crossing = match target {
+        Shape::Sphere { radius } => ray_sphere(xf.translation, *radius + *rho, &ray),
+        Shape::Capsule {
+            radius,
+            half_height,
+        } => {
+            let local = Ray::new(
+                xf.inverse_point(ray.origin),
+                xf.inverse_vector(direction),
+                max,
+            );
+            ray_capsule(*radius + *rho, *half_height, &local).map(|c| match c {
+                Crossing::Enters { distance, normal } => Crossing::Enters {
+                    distance,
+                    normal: xf.vector(normal),
+                },
+                Crossing::Inside => Crossing::Inside,
+            })
+        }
+        _ => return None,
+    };
+    match crossing {
+        None => Some(None),
+        Some(Crossing::Inside) => None,
+        Some(Crossing::Enters { distance, normal }) => Some(Some(CastHit {
+            distance,
+            point: ray.at(distance) - normal * *rho,
+            normal,
+        })),
+    }
+}
+
+/// Conservative advancement (see the [module](self)).
+fn advance<R: Real>(
+    cast: &Shape<R>,
+    start: &Transform<R>,
+    direction: Vec3<R>,
+    max: R,
+    target: &Shape<R>,
+    xf: &Transform<R>,
+) -> Option<CastHit<R>> {
+    let tolerance = cast_tolerance::<R>();
+    let max = max.clamp(R::ZERO, R::MAX * R::HALF);
+    let limit = max + R::ONE;
+    let mut t = R::ZERO;
+    // The last distance found separated, and the first found overlapping.
+    let mut separated = R::ZERO;
+    let mut overlapping: Option<R> = None;
+    for iteration in 0..MAX_ITERATIONS {
+        let placed = Transform {
+            rotation: start.rotation,
+            translation: start.translation.add_scaled(direction, t),
+        };
+        // Points farther apart than the rest of the travel cannot be reached.
+        let margin = (max - t) + tolerance;
+        let manifold = collide(cast, &placed, target, xf, margin);
+        let (separation, point) = deepest(&manifold)?;
+        let touching = separation <= tolerance && (separation >= -tolerance || t == R::ZERO);
+        if touching || iteration + 1 == MAX_ITERATIONS {
+            return Some(CastHit {
+                distance: t,
+                point,
+                normal: -manifold.normal,
+            });
+        }
+        if separation < -tolerance {
+            overlapping = Some(t);
+        } else {
+            separated = t;
+        }
+        t = match overlapping {
+            Some(deep) => (separated + deep) * R::HALF,
+            None => {
+                let closing = manifold.normal.dot(direction);
+                if closing <= R::ZERO {
+                    return None;
+                }
+                t + clamped_ratio(separation, closing, limit)
+            }
+        };
+        if t > max {
+            return None;
+        }
+    }
+    None
+}
+
+/// The smallest separation of a manifold's points and its point (the first on ties);
+/// `None` for an empty manifold.
+fn deepest<R: Real>(manifold: &Manifold<R>) -> Option<(R, Vec3<R>)> {
+    let mut best: Option<(R, Vec3<R>)> = None;
+    for p in manifold.points() {
+        if best.is_none_or(|(s, _)| p.separation < s) {
+            best = Some((p.separation, p.point));
+        }
+    }
+    best
+}
