@@ -26,6 +26,7 @@ mod particles_forces;
 mod particles_integrators;
 mod particles_kepler;
 mod particles_scene;
+mod queries;
 mod replay_committed;
 mod replay_snapshot;
 mod rigid_broadphase;

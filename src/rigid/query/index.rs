@@ -1,7 +1,7 @@
 //! The query index: the bounding-volume tree of the bodies, kept current step by step.
 //!
 //! It lives in the system's scratch (it is a cache, not state). Each body with a finite
-//! box has a leaf whose fat box is its tight box grown by [`FAT_MARGIN`]; bodies without
+//! box has a leaf whose fat box is its tight box grown by [`fat_margin`]; bodies without
 //! one (planes) are listed apart, to be tested by every query. At the end of each step
 //! ([`QueryIndex::sync`]) only the bodies that moved are looked at, and a leaf is
 //! re-inserted only when the body's tight box has left its fat box; bodies added or
@@ -135,10 +135,10 @@ impl<R: Real> QueryIndex<R> {
         let mut stack = Vec::new();
         self.tree.traverse(&mut stack, |aabb, leaf| {
             let pass = keep(aabb);
-            if let Some(slot) = leaf {
-                if pass {
-                    visit(slot as usize);
-                }
+            if let Some(slot) = leaf
+                && pass
+            {
+                visit(slot as usize);
             }
             pass
         });

@@ -74,7 +74,8 @@ fn prune_pad<R: Real>() -> R {
 
 /// The unit vector along `v`, or `None` for the zero vector. `v` is first scaled by a power
 /// of two so that its largest component lies in [½, 2¹⁴): tiny and huge directions then
-/// normalise as precisely as unit ones, and |v|² never saturates.
+/// normalise as precisely as unit ones, and |v|² never saturates. Each component is then
+/// divided by |v|.
 fn unit_direction<R: Real>(v: Vec3<R>) -> Option<Vec3<R>> {
     let largest = |v: Vec3<R>| v.abs().max_component();
     if largest(v) == R::ZERO {
@@ -91,12 +92,14 @@ fn unit_direction<R: Real>(v: Vec3<R>) -> Option<Vec3<R>> {
                 v.z.mul_pow2_recip(1),
             );
         } else if m < R::HALF {
-            v = v * R::TWO;
+            v *= R::TWO;
         } else {
             break;
         }
     }
-    v.try_normalize().map(|(n, _)| n)
+    // Three correctly rounded quotients: an axis direction comes out exact.
+    let length = v.length();
+    (length > R::ZERO).then(|| Vec3::new(v.x / length, v.y / length, v.z / length))
 }
 
 /// Whether (distance, handle) comes before the best so far.
@@ -213,14 +216,19 @@ impl<R: Real> RigidSystem<R> {
                 }
                 let handle = self.bodies.handle(i);
                 let xf = self.query_placement(i);
-                let Some(hit) = cast_shape(
-                    shape,
-                    &start,
-                    ray.direction,
-                    ray.max,
-                    &self.bodies.shape[i],
-                    &xf,
-                ) else {
+                let body = &self.bodies.shape[i];
+                // The same tight-box test on both paths (tree or every body).
+                let near = Aabb::of_shape(body, &xf).is_none_or(|b| {
+                    let grown = Aabb {
+                        min: b.min - half,
+                        max: b.max + half,
+                    };
+                    ray_reaches_box(&grown, pad, &centre, ray.max)
+                });
+                if !near {
+                    return;
+                }
+                let Some(hit) = cast_shape(shape, &start, ray.direction, ray.max, body, &xf) else {
                     return;
                 };
                 if precedes(hit.distance, handle, best) {
@@ -288,24 +296,31 @@ impl<R: Real> RigidSystem<R> {
         let max = max_distance.min(R::MAX * R::HALF);
         let reach = Cell::new(max);
         let pad = prune_pad::<R>();
+        let within = |aabb: &Aabb<R>, reach: R| {
+            let grown = aabb.expanded(reach + pad);
+            grown.min.x <= point.x
+                && grown.min.y <= point.y
+                && grown.min.z <= point.z
+                && point.x <= grown.max.x
+                && point.y <= grown.max.y
+                && point.z <= grown.max.z
+        };
         let mut best: Option<(R, Handle)> = None;
         let mut found = None;
         self.for_each_candidate(
-            |aabb| {
-                let grown = aabb.expanded(reach.get() + pad);
-                grown.min.x <= point.x
-                    && grown.min.y <= point.y
-                    && grown.min.z <= point.z
-                    && point.x <= grown.max.x
-                    && point.y <= grown.max.y
-                    && point.z <= grown.max.z
-            },
+            |aabb| within(aabb, reach.get()),
             |i| {
                 if !self.query_accepts(i, filter) {
                     return;
                 }
                 let handle = self.bodies.handle(i);
-                let p = project_point(&self.bodies.shape[i], &self.query_placement(i), point);
+                let xf = self.query_placement(i);
+                let body = &self.bodies.shape[i];
+                // The same tight-box test on both paths (tree or every body).
+                if !Aabb::of_shape(body, &xf).is_none_or(|b| within(&b, max)) {
+                    return;
+                }
+                let p = project_point(body, &xf, point);
                 if p.distance <= max && precedes(p.distance, handle, best) {
                     best = Some((p.distance, handle));
                     reach.set(p.distance);
@@ -362,8 +377,15 @@ impl<R: Real> RigidSystem<R> {
         if !self.query_accepts(i, filter) {
             return None;
         }
-        let crossing = ray_shape(&self.bodies.shape[i], &self.query_placement(i), ray)?;
-        Some((self.bodies.handle(i), crossing))
+        let xf = self.query_placement(i);
+        let shape = &self.bodies.shape[i];
+        // The same tight-box test on both paths (tree or every body).
+        let near = Aabb::of_shape(shape, &xf)
+            .is_none_or(|b| ray_reaches_box(&b, prune_pad(), ray, ray.max));
+        if !near {
+            return None;
+        }
+        Some((self.bodies.handle(i), ray_shape(shape, &xf, ray)?))
     }
 
     /// Calls `visit(slot)` for every candidate slot: from the tree when the index is

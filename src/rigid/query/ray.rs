@@ -185,10 +185,10 @@ pub(super) fn ray_shape<R: Real>(
             let mut best: Option<Crossing<R>> = None;
             for part in parts {
                 let local = Transform::from_pose(part.translation, part.rotation);
-                if let Some(hit) = ray_shape(&part.shape, &xf.compose(&local), ray) {
-                    if best.is_none_or(|b| hit.distance() < b.distance()) {
-                        best = Some(hit);
-                    }
+                if let Some(hit) = ray_shape(&part.shape, &xf.compose(&local), ray)
+                    && best.is_none_or(|b| hit.distance() < b.distance())
+                {
+                    best = Some(hit);
                 }
             }
             best
@@ -209,35 +209,45 @@ fn local_to_world<R: Real>(xf: &Transform<R>, hit: Option<Crossing<R>>) -> Optio
 
 /// Ray against the ball |x − c| ≤ r (c and r in m).
 ///
-/// With m = o − c, b = m·d and k = |m|² − r², |x(t) − c|² = r² reads t² + 2bt + k = 0. The
-/// origin is inside when k ≤ 0; otherwise the ray enters when b < 0 and b² − k ≥ 0, at the
-/// smaller root written as t = k / (−b + √(b² − k)), which does not lose digits to
-/// cancellation near the surface. Normal (x(t) − c)/|x(t) − c|.
+/// With m = o − c the origin is inside when |m|² ≤ r². Otherwise, with b = m·d, the ray
+/// misses when b ≥ 0 (it moves away); no point before t₀ = max(0, −b − r) can lie in the
+/// ball, so the ray first skips to t₀ (a far origin then never squares a large m). From
+/// there, with m' = m + t₀d, b' = m'·d and k = |m'|² − r², |x − c|² = r² reads
+/// t² + 2b't + k = 0, and the ray enters (when b'² − k ≥ 0) at the smaller root written
+/// as t = k / (−b' + √(b'² − k)), which does not lose digits to cancellation near the
+/// surface. Distance t₀ + t; normal (x − c)/|x − c|.
 pub(super) fn ray_sphere<R: Real>(centre: Vec3<R>, radius: R, ray: &Ray<R>) -> Option<Crossing<R>> {
+    let d = ray.direction;
     let m = ray.origin - centre;
-    let k = m.length_squared() - radius * radius;
-    if k <= R::ZERO {
+    if m.length_squared() <= radius * radius {
         return Some(Crossing::Inside);
     }
-    let b = m.dot(ray.direction);
+    let b = m.dot(d);
     if b >= R::ZERO {
         return None;
     }
-    let discriminant = b * b - k;
-    if discriminant < R::ZERO {
+    let skip = (-b - radius).max(R::ZERO);
+    if skip > ray.max {
         return None;
     }
-    let t = clamped_ratio(k, discriminant.sqrt() - b, ray.limit());
-    if t > ray.max {
+    let m = m.add_scaled(d, skip);
+    let k = m.length_squared() - radius * radius;
+    let b = m.dot(d);
+    let t = if k <= R::ZERO {
+        R::ZERO
+    } else {
+        let discriminant = b * b - k;
+        if b >= R::ZERO || discriminant < R::ZERO {
+            return None;
+        }
+        clamped_ratio(k, discriminant.sqrt() - b, ray.limit())
+    };
+    let distance = skip + t;
+    if distance > ray.max {
         return None;
     }
-    let normal = (m.add_scaled(ray.direction, t))
-        .try_normalize()
-        .map_or(-ray.direction, |(n, _)| n);
-    Some(Crossing::Enters {
-        distance: t,
-        normal,
-    })
+    let normal = (m.add_scaled(d, t)).try_normalize().map_or(-d, |(n, _)| n);
+    Some(Crossing::Enters { distance, normal })
 }
 
 /// Ray (in the box frame) against the box |x_k| ≤ h_k (m): inside when |o_k| ≤ h_k on
@@ -269,16 +279,31 @@ pub(super) fn ray_box<R: Real>(half: Vec3<R>, ray: &Ray<R>) -> Option<Crossing<R
 /// Ray (in the capsule frame) against the points within r (m) of the segment from
 /// (0, −h, 0) to (0, h, 0).
 ///
-/// Inside when the origin's distance to the segment is ≤ r. Otherwise the first hit is the
-/// nearest of: the side, the cylinder x² + z² = r², entered at t = k / (−b + √(b² − ak))
-/// with a = d_x² + d_z², b = o_x d_x + o_z d_z, k = o_x² + o_z² − r² (when k > 0, b < 0,
-/// b² ≥ ak) provided |y(t)| ≤ h, normal (x, 0, z)/r; and the two end balls.
+/// Inside when the origin's distance to the segment is ≤ r. Otherwise the ray first skips
+/// to t₀ = max(0, −o·d − (h + r)), before which it is farther than h + r from the centre
+/// (as for [`ray_sphere`]), and the first hit is the nearest of: the side, the cylinder
+/// x² + z² = r², entered at t₀ + k / (−b + √(b² − ak)) with a = d_x² + d_z²,
+/// b = o_x d_x + o_z d_z, k = o_x² + o_z² − r² at the skipped-to origin o (when k > 0,
+/// b < 0, b² ≥ ak) provided |y| ≤ h there, normal (x, 0, z)/r; and the two end balls.
 pub(super) fn ray_capsule<R: Real>(radius: R, half_height: R, ray: &Ray<R>) -> Option<Crossing<R>> {
-    let (o, d) = (ray.origin, ray.direction);
-    let axis_point = Vec3::new(R::ZERO, o.y.clamp(-half_height, half_height), R::ZERO);
-    if (o - axis_point).length_squared() <= radius * radius {
+    let axis_point = Vec3::new(
+        R::ZERO,
+        ray.origin.y.clamp(-half_height, half_height),
+        R::ZERO,
+    );
+    if (ray.origin - axis_point).length_squared() <= radius * radius {
         return Some(Crossing::Inside);
     }
+    let skip = (-ray.origin.dot(ray.direction) - (half_height + radius)).max(R::ZERO);
+    if skip > ray.max {
+        return None;
+    }
+    let near = Ray {
+        origin: ray.at(skip),
+        direction: ray.direction,
+        max: ray.max - skip,
+    };
+    let (o, d) = (near.origin, near.direction);
     let mut best: Option<Crossing<R>> = None;
     let a = d.x * d.x + d.z * d.z;
     let b = o.x * d.x + o.z * d.z;
@@ -286,9 +311,9 @@ pub(super) fn ray_capsule<R: Real>(radius: R, half_height: R, ray: &Ray<R>) -> O
     if k > R::ZERO && b < R::ZERO {
         let discriminant = b * b - a * k;
         if discriminant >= R::ZERO {
-            let t = clamped_ratio(k, discriminant.sqrt() - b, ray.limit());
-            let p = ray.at(t);
-            if t <= ray.max && p.y.abs() <= half_height {
+            let t = clamped_ratio(k, discriminant.sqrt() - b, near.limit());
+            let p = near.at(t);
+            if t <= near.max && p.y.abs() <= half_height {
                 let normal = Vec3::new(p.x, R::ZERO, p.z)
                     .try_normalize()
                     .map_or(-d, |(n, _)| n);
@@ -301,13 +326,22 @@ pub(super) fn ray_capsule<R: Real>(radius: R, half_height: R, ray: &Ray<R>) -> O
     }
     for end in [-half_height, half_height] {
         let centre = Vec3::new(R::ZERO, end, R::ZERO);
-        if let Some(hit) = ray_sphere(centre, radius, ray) {
-            if best.is_none_or(|b| hit.distance() < b.distance()) {
-                best = Some(hit);
-            }
+        if let Some(hit) = ray_sphere(centre, radius, &near)
+            && best.is_none_or(|b| hit.distance() < b.distance())
+        {
+            best = Some(hit);
         }
     }
-    best
+    best.map(|hit| match hit {
+        Crossing::Inside => Crossing::Enters {
+            distance: skip,
+            normal: -d,
+        },
+        Crossing::Enters { distance, normal } => Crossing::Enters {
+            distance: skip + distance,
+            normal,
+        },
+    })
 }
 
 /// Ray against the half-space n·x ≤ c (n unit, c in m, world frame). With s = n·o − c the

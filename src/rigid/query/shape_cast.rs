@@ -59,10 +59,10 @@ pub(super) fn cast_shape<R: Real>(
             for part in parts {
                 let local = Transform::from_pose(part.translation, part.rotation);
                 let placed = xf.compose(&local);
-                if let Some(hit) = cast_shape(cast, start, direction, max, &part.shape, &placed) {
-                    if best.is_none_or(|b| hit.distance < b.distance) {
-                        best = Some(hit);
-                    }
+                if let Some(hit) = cast_shape(cast, start, direction, max, &part.shape, &placed)
+                    && best.is_none_or(|b| hit.distance < b.distance)
+                {
+                    best = Some(hit);
                 }
             }
             best
