@@ -6,6 +6,8 @@
 # median ms per step over ROUNDS interleaved runs, the ratio to fixstep I32F32 and a
 # quality figure computed the same way for every engine.
 #   ./scripts/peer-bench.sh [ROUNDS] [SCENE ...]     (default 5 rounds, every scene)
+# SCENE also takes `queries` (rays and sphere overlaps on balls and pyramid, queries/s) and
+# `filters` (fixstep's balls with non-default filters against the default).
 # The first build downloads and compiles Rapier (a few minutes on two cores).
 set -euo pipefail
 cd "$(dirname "$0")/../bench/peers"

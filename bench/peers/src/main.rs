@@ -21,10 +21,17 @@
 //! the fixed substep count its time-step limit asks for and, in the dam break, with
 //! adaptive substeps (CFL 0.2, and 0.3 at salva3d's tolerance).
 //!
-//! Usage: `fixstep-peers [ROUNDS] [SCENE …]`.
+//! Scene queries (`queries`, [`queries`]): 100,000 rays and 10,000 sphere overlaps on
+//! `balls` and `pyramid` after 300 steps, queries per second of each engine and how often
+//! their answers agree. Filters (`filters`): fixstep's `balls` with every body on layer 1
+//! (so the collide stage filters pairs) beside the default filter.
+//!
+//! Usage: `fixstep-peers [ROUNDS] [SCENE …]`, SCENE one of pyramid, balls, falling, water,
+//! dam_break, queries, filters; none means every one.
 
 mod fixstep_side;
 mod quality;
+mod queries;
 mod rapier_side;
 mod salva_side;
 mod scenes;
@@ -91,12 +98,14 @@ fn main() {
         .iter()
         .filter(|s| wanted.is_empty() || wanted.iter().any(|w| w == s.name))
         .collect();
-    if let Some(unknown) = wanted
-        .iter()
-        .find(|w| SCENES.iter().all(|s| s.name != *w) && FLUID_SCENES.iter().all(|s| s.name != *w))
-    {
+    let other = |name: &str| wanted.is_empty() || wanted.iter().any(|w| w == name);
+    if let Some(unknown) = wanted.iter().find(|w| {
+        SCENES.iter().all(|s| s.name != *w)
+            && FLUID_SCENES.iter().all(|s| s.name != *w)
+            && !OTHER_BENCHES.contains(&w.as_str())
+    }) {
         eprintln!(
-            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, water, dam_break"
+            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, water, dam_break, queries, filters"
         );
         std::process::exit(2);
     }
@@ -123,10 +132,12 @@ fn main() {
             run: fixstep_side::run_f64,
         },
     ];
-    println!(
-        "| scene | steps | engine | ms/step (median of {rounds}) | vs fixstep I32F32 | quality |"
-    );
-    println!("|---|---|---|---|---|---|");
+    if !scenes.is_empty() {
+        println!(
+            "| scene | steps | engine | ms/step (median of {rounds}) | vs fixstep I32F32 | quality |"
+        );
+        println!("|---|---|---|---|---|---|");
+    }
     for scene in scenes {
         let mut times = vec![Vec::new(); engines.len()];
         let mut qualities = vec![None; engines.len()];
@@ -150,8 +161,62 @@ fn main() {
             );
         }
     }
+    if other("filters") {
+        filter_table(rounds);
+    }
+    if other("queries") {
+        queries::table(rounds, rapier);
+    }
     for scene in fluids {
         fluid_table(scene, rounds);
+    }
+}
+
+/// The benches that are not a scene of their own.
+const OTHER_BENCHES: [&str; 2] = ["queries", "filters"];
+
+/// fixstep's `balls` (500 steps, sleeping off) with the default filter and with every body
+/// on layer 1 interacting with every layer, interleaved: the cost of the collide stage's
+/// filtering (contact events are always computed, so both rows include them). The
+/// positions must come out the same.
+fn filter_table(rounds: usize) {
+    let scene = SCENES[1];
+    assert_eq!(scene.name, "balls");
+    let runs = [
+        Engine {
+            name: "fixstep I32F32, the default filter".into(),
+            run: fixstep_side::run_fixed,
+        },
+        Engine {
+            name: "fixstep I32F32, every body on layer 1 (the collide stage filters pairs)".into(),
+            run: fixstep_side::run_filtered,
+        },
+    ];
+    let mut times = vec![Vec::new(); runs.len()];
+    let mut ends = vec![Vec::new(); runs.len()];
+    for _ in 0..rounds {
+        for ((engine, times), end) in runs.iter().zip(&mut times).zip(&mut ends) {
+            let result = (engine.run)(scene);
+            times.push(result.ms);
+            *end = result.end;
+        }
+    }
+    let same = ends[0] == ends[1];
+    let medians: Vec<f64> = times.iter_mut().map(|t| median(t)).collect();
+    println!();
+    println!(
+        "| scene | steps | engine | ms/step (median of {rounds}) | vs default filter | positions |"
+    );
+    println!("|---|---|---|---|---|---|");
+    for (engine, m) in runs.iter().zip(&medians) {
+        println!(
+            "| {} | {} | {} | {m:.3} | {:+.1} % | {} |",
+            label(scene),
+            scene.steps,
+            engine.name,
+            100.0 * (m / medians[0] - 1.0),
+            if same { "the same bits" } else { "DIFFERENT" }
+        );
     }
 }
 

@@ -1,9 +1,14 @@
 //! Rapier's side: the same scenes as fixstep's built-in ones (`crates/fixstep-scenes/src/rigid.rs`),
 //! bodies for bodies, with Rapier's defaults otherwise (friction 0.5, restitution 0).
 
+use crate::queries::{
+    Answers, BodyShape, MAX_DISTANCE, PlacedBody, Queries, QuerySet, RayAnswer, SETTLE_STEPS, UNIT,
+    metres,
+};
 use crate::scenes::{RigidRun, Scene};
 use crate::time_steps;
 use rapier3d::prelude::*;
+use std::time::Instant;
 
 /// Whether this build has Rapier's enhanced-determinism mode.
 pub const ENHANCED_DETERMINISM: bool = cfg!(feature = "enhanced-determinism");
@@ -126,4 +131,146 @@ pub fn run_simplified(scene: Scene) -> RigidRun {
 /// friction.
 pub fn run_coulomb(scene: Scene) -> RigidRun {
     run(scene, FrictionModel::Coulomb)
+}
+
+/// Rapier's world of `scene` after [`SETTLE_STEPS`] steps (its default friction, sleeping
+/// off), or a copy of fixstep's bodies, with the query set in Rapier's types.
+pub struct RapierQueries {
+    world: PhysicsWorld,
+    rays: Vec<Ray>,
+    spheres: Vec<(Pose, Ball)>,
+}
+
+fn world() -> PhysicsWorld {
+    let mut world = PhysicsWorld {
+        gravity: Vector::new(0.0, -9.81, 0.0),
+        ..PhysicsWorld::default()
+    };
+    world.integration_parameters.dt = 1.0 / 60.0;
+    world.integration_parameters.num_solver_iterations = 4;
+    world
+}
+
+fn point(v: [i32; 3]) -> Vector {
+    let [x, y, z] = metres(v);
+    Vector::new(x as f32, y as f32, z as f32)
+}
+
+fn with_queries(world: PhysicsWorld, set: &QuerySet) -> RapierQueries {
+    RapierQueries {
+        world,
+        rays: set
+            .rays
+            .iter()
+            .map(|r| {
+                let origin = point(r.origin);
+                Ray::new(origin, (point(r.target) - origin).normalize())
+            })
+            .collect(),
+        spheres: set
+            .spheres
+            .iter()
+            .map(|s| {
+                let c = point(s.centre);
+                let radius = s.radius as f32 / UNIT as f32;
+                (Pose::translation(c.x, c.y, c.z), Ball::new(radius))
+            })
+            .collect(),
+    }
+}
+
+/// `scene` settled, ready for the queries of `set`.
+pub fn queries(scene: &str, set: &QuerySet) -> RapierQueries {
+    let mut world = world();
+    match scene {
+        "pyramid" => pyramid(&mut world, false),
+        "balls" => balls(&mut world, false),
+        other => unreachable!("no Rapier version of {other}"),
+    }
+    for _ in 0..SETTLE_STEPS {
+        world.step();
+    }
+    with_queries(world, set)
+}
+
+/// fixstep's `bodies` as Rapier bodies and colliders, in the same order (the ground plane as
+/// a 200 m box under its height), the tree built by one collision detection.
+pub fn queries_on(bodies: &[PlacedBody], set: &QuerySet) -> RapierQueries {
+    let mut world = world();
+    for body in bodies {
+        let [x, y, z] = body.position.map(|c| c as f32);
+        let [w, i, j, k] = body.orientation.map(|c| c as f32);
+        let (centre, collider) = match body.shape {
+            BodyShape::Ball(r) => (Vector::new(x, y, z), ColliderBuilder::ball(r as f32)),
+            BodyShape::Cuboid(h) => (
+                Vector::new(x, y, z),
+                ColliderBuilder::cuboid(h[0] as f32, h[1] as f32, h[2] as f32),
+            ),
+            BodyShape::Ground(top) => (
+                Vector::new(0.0, top as f32 - 0.5, 0.0),
+                ColliderBuilder::cuboid(100.0, 0.5, 100.0),
+            ),
+        };
+        let builder = if body.dynamic {
+            RigidBodyBuilder::dynamic()
+        } else {
+            RigidBodyBuilder::fixed()
+        };
+        let rotation = Rotation::from_xyzw(i, j, k, w).normalize();
+        world.insert(
+            builder
+                .pose(Pose::from_parts(centre, rotation))
+                .can_sleep(false),
+            collider,
+        );
+    }
+    world.detect_collisions(&(), &());
+    with_queries(world, set)
+}
+
+impl Queries for RapierQueries {
+    fn rays(&self) -> Answers<RayAnswer> {
+        let pipeline = self.world.query_pipeline();
+        let max = MAX_DISTANCE as f32;
+        let mut hits = Vec::with_capacity(self.rays.len());
+        let start = Instant::now();
+        for ray in &self.rays {
+            hits.push(pipeline.cast_ray_and_get_normal(ray, max, true));
+        }
+        let seconds = start.elapsed().as_secs_f64();
+        Answers {
+            seconds,
+            answers: hits
+                .into_iter()
+                .map(|hit| hit.map(|(h, i)| (h.into_raw_parts().0, f64::from(i.time_of_impact))))
+                .collect(),
+        }
+    }
+
+    fn overlaps(&self) -> Answers<Vec<u32>> {
+        let pipeline = self.world.query_pipeline();
+        let mut found = Vec::with_capacity(self.spheres.len());
+        let start = Instant::now();
+        for (pose, ball) in &self.spheres {
+            found.push(
+                pipeline
+                    .intersect_shape(*pose, ball)
+                    .map(|(h, _)| h)
+                    .collect::<Vec<_>>(),
+            );
+        }
+        let seconds = start.elapsed().as_secs_f64();
+        Answers {
+            seconds,
+            answers: found
+                .into_iter()
+                .map(|handles| {
+                    let mut slots: Vec<u32> =
+                        handles.iter().map(|h| h.into_raw_parts().0).collect();
+                    slots.sort_unstable();
+                    slots
+                })
+                .collect(),
+        }
+    }
 }
