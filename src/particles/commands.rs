@@ -31,7 +31,11 @@ impl<R: Real> ParticleSystem<R> {
             Command::Remove { target } => self.remove(target),
             Command::MoveKinematic { target, position } => self.move_pinned(target, position),
             Command::SetEmitter { emitter, on } => self.set_emitter(emitter, on),
-            Command::SetGravity { .. } | Command::Payload(_) | Command::SetMotor { .. } => false,
+            Command::SetGravity { .. }
+            | Command::Payload(_)
+            | Command::SetMotor { .. }
+            | Command::SpawnBody { .. }
+            | Command::SpawnJoint { .. } => false,
         }
     }
 

@@ -21,7 +21,8 @@
 //! Bodies are written as state version 5 wrote them ([`BodyFields`]: all but the collision
 //! filter and the sensor flag); the bodies whose filter or sensor flag is not the default
 //! are listed, by index in ascending order, in [`Addition::RigidBodyFlags`], which is never
-//! empty and never names a body that does not exist.
+//! empty and never names a body that does not exist. A scene with spawn templates adds
+//! [`Addition::RigidTemplates`]: its body and joint templates, never both empty.
 
 use serde::{Deserialize, Serialize};
 
@@ -30,8 +31,8 @@ use crate::fluid::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticlesDesc;
 use crate::rigid::{
-    BodyDesc, BodyKind, CollisionFilter, Grid, JointsDesc, Material, RigidDesc, Shape,
-    SolverSettings,
+    BodyDesc, BodyKind, BodyTemplate, CollisionFilter, Grid, JointTemplate, JointsDesc, Material,
+    RigidDesc, Shape, SolverSettings,
 };
 use crate::scene::Scene;
 use crate::soft::SoftDesc;
@@ -83,6 +84,8 @@ enum Addition<R: Real> {
     RigidRecycle(R),
     /// The bodies with a filter or a sensor flag other than the default.
     RigidBodyFlags(Vec<BodyFlags>),
+    /// The rigid bodies' spawn templates, when there are any.
+    RigidTemplates(Vec<BodyTemplate<R>>, Vec<JointTemplate<R>>),
 }
 
 /// The collision filter and sensor flag of body description `body`.
@@ -170,6 +173,7 @@ impl<R: Real> Addition<R> {
             Self::FluidCfl(_) => 4,
             Self::RigidRecycle(_) => 5,
             Self::RigidBodyFlags(_) => 6,
+            Self::RigidTemplates(..) => 7,
         }
     }
 }
@@ -284,6 +288,7 @@ impl<R: Real> RigidFields<R> {
                 angular_sleep_speed: self.angular_sleep_speed,
                 contact_recycle_distance: R::ZERO,
             },
+            ..RigidDesc::default()
         }
     }
 }
@@ -330,6 +335,12 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
         let flags = BodyFlags::of(&rigid.bodies);
         if !flags.is_empty() {
             additions.push(Addition::RigidBodyFlags(flags));
+        }
+        if !rigid.templates.is_empty() || !rigid.joint_templates.is_empty() {
+            additions.push(Addition::RigidTemplates(
+                rigid.templates.clone(),
+                rigid.joint_templates.clone(),
+            ));
         }
     }
     if !additions.is_empty() {
@@ -431,6 +442,17 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                     body.filter = f.filter;
                     body.sensor = f.sensor;
                 }
+            }
+            Addition::RigidTemplates(bodies, joints) => {
+                let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
+                let Some(rigid) = &mut scene.rigid else {
+                    return not_canonical("spawn templates without rigid bodies");
+                };
+                if bodies.is_empty() && joints.is_empty() {
+                    return not_canonical("empty lists of spawn templates");
+                }
+                rigid.templates = bodies;
+                rigid.joint_templates = joints;
             }
         }
     }

@@ -31,6 +31,7 @@ impl<R: Real> RigidSystem<R> {
                 system.insert(copy);
             }
         }
+        system.set_templates(&desc.templates, &desc.joint_templates)?;
         Ok(system)
     }
 
@@ -108,6 +109,18 @@ impl<R: Real> RigidSystem<R> {
                 ));
             }
             previous = Some(c.key);
+        }
+        let ordered = self.sensor_overlaps.windows(2).all(|w| w[0] < w[1]);
+        let live = |s: u32| (s as usize) < n && b.alive[s as usize];
+        if !ordered
+            || !self.sensor_overlaps.iter().all(|&(s, t)| {
+                s < t && live(s) && live(t) && b.sensor[s as usize] != b.sensor[t as usize]
+            })
+        {
+            return Err(SceneError::new(
+                "sensor_overlaps",
+                "must be ascending pairs A < B of a live sensor and a live body that is not one",
+            ));
         }
         self.validate_joints()
     }
@@ -207,7 +220,7 @@ fn lattice<R: Real>(body: &BodyDesc<R>) -> Result<Vec<Vec3<R>>, SceneError> {
 /// Checks one body description and computes what the storage needs. A compound is
 /// recentred so that its centre of mass is the body's origin, and the body's position
 /// moves to that centre.
-fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, SceneError> {
+pub(crate) fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, SceneError> {
     check_shape(&body.shape, body.kind).map_err(|e| e.within("shape"))?;
     let limit = R::from_int(MAX_MAGNITUDE);
     for (name, v) in [

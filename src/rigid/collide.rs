@@ -23,6 +23,7 @@
 use super::aabb::Aabb;
 use super::contact::{Contact, ContactKey};
 use super::desc::BodyKind;
+use super::filter::CollisionFilter;
 use super::manifold::Manifold;
 use super::narrowphase::{
     BoxPair, box_box_contact, collide as collide_convex, separating_axes_batch,
@@ -79,6 +80,21 @@ impl<R: Real> RigidSystem<R> {
             scratch
                 .pairs
                 .retain(|pair| filter.binary_search(pair).is_err());
+        }
+        scratch.sensor_pairs.clear();
+        if scratch.filtered {
+            let (bodies, sensor_pairs) = (&self.bodies, &mut scratch.sensor_pairs);
+            scratch.pairs.retain(|&(a, b)| {
+                let (a, b) = (a as usize, b as usize);
+                if !bodies.filter[a].interacts(bodies.filter[b]) {
+                    return false;
+                }
+                let (sa, sb) = (bodies.sensor[a], bodies.sensor[b]);
+                if sa != sb {
+                    sensor_pairs.push((a as u32, b as u32));
+                }
+                !(sa || sb)
+            });
         }
 
         // Last step's lists are read while the new ones are filled, in the storage of the
@@ -256,6 +272,10 @@ impl<R: Real> RigidSystem<R> {
         contacts.sort_by_key(|c| c.key);
         self.contacts = contacts;
         self.frames = frames;
+        self.record_contact_events(&old);
+        if self.scratch.filtered || !self.sensor_overlaps.is_empty() {
+            self.update_sensor_overlaps();
+        }
         self.scratch.spare_contacts = old;
         self.scratch.spare_frames = old_frames;
     }
@@ -286,6 +306,10 @@ impl<R: Real> RigidSystem<R> {
             }
         }
         if rebuild {
+            self.scratch.filtered = (0..n).any(|i| {
+                self.bodies.alive[i]
+                    && (self.bodies.sensor[i] || self.bodies.filter[i] != CollisionFilter::ALL)
+            });
             self.scratch.planes = (0..n)
                 .filter(|&i| {
                     self.bodies.alive[i] && matches!(self.bodies.shape[i], Shape::Plane { .. })
@@ -328,7 +352,7 @@ fn below_plane<R: Real>(plane: &Shape<R>, aabb: &Aabb<R>) -> bool {
 
 /// Calls `emit(part_a, part_b, manifold)` for every part pair of the two shapes that has
 /// contact points; a shape that is not a compound is part 0.
-fn for_each_manifold<R: Real>(
+pub(super) fn for_each_manifold<R: Real>(
     a: &Shape<R>,
     xf_a: &Transform<R>,
     b: &Shape<R>,

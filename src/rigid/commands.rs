@@ -5,6 +5,7 @@
 //! and impulses move only dynamic bodies; a static body accepts them and does not move.
 
 use super::desc::BodyKind;
+use super::events::EventKind;
 use super::joints::desc::{JointKind, Motor};
 use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
@@ -14,6 +15,31 @@ impl<R: Real> RigidSystem<R> {
     /// Applies a world command aimed at a rigid body or a joint; false when its target does
     /// not exist or the command does not act on it.
     pub fn apply_command(&mut self, command: &Command<R>) -> bool {
+        match *command {
+            Command::SpawnBody {
+                template,
+                position,
+                orientation,
+                velocity,
+                angular_velocity,
+            } => {
+                return self
+                    .spawn_body(template, position, orientation, velocity, angular_velocity)
+                    .is_some();
+            }
+            Command::SpawnJoint {
+                template,
+                bodies,
+                anchor,
+                anchor_b,
+                axis,
+            } => {
+                return self
+                    .spawn_joint(template, bodies, anchor, anchor_b, axis)
+                    .is_some();
+            }
+            _ => {}
+        }
         let target = match command {
             Command::ApplyForce { target, .. }
             | Command::ApplyImpulse { target, .. }
@@ -137,10 +163,34 @@ impl<R: Real> RigidSystem<R> {
         for j in attached {
             self.remove_joint(j);
         }
+        self.end_events_of(slot);
         self.bodies.remove(i);
         self.contacts
             .retain(|c| c.key.body_a != slot && c.key.body_b != slot);
+        self.sensor_overlaps
+            .retain(|&(a, b)| a != slot && b != slot);
         self.scratch.cache_valid = false;
+    }
+
+    /// Before slot `slot`'s body is removed: a `contact_end` for each body it touches and a
+    /// `sensor_exit` for each sensor overlap it is in, with the handles it had.
+    fn end_events_of(&mut self, slot: u32) {
+        let mut ended: Vec<(EventKind, u32, u32)> = self
+            .contacts
+            .iter()
+            .filter(|c| c.key.body_a == slot || c.key.body_b == slot)
+            .map(|c| (EventKind::ContactEnd, c.key.body_a, c.key.body_b))
+            .collect();
+        ended.dedup();
+        ended.extend(
+            self.sensor_overlaps
+                .iter()
+                .filter(|&&(a, b)| a == slot || b == slot)
+                .map(|&(a, b)| (EventKind::SensorExit, a, b)),
+        );
+        for (kind, a, b) in ended {
+            self.push_pair_event(kind, a, b);
+        }
     }
 
     /// Wakes the islands of every body touching slot `i`.

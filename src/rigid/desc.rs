@@ -21,6 +21,7 @@ use serde::{Deserialize, Serialize};
 use super::filter::CollisionFilter;
 use super::material::Material;
 use super::shape::Shape;
+use super::spawn::{BodyTemplate, JointTemplate};
 use crate::math::{Fx, Quat, Real, Vec3};
 
 /// The most bodies a scene may create.
@@ -100,12 +101,13 @@ pub struct BodyDesc<R: Real = Fx> {
     /// Copies of the body on a lattice; absent means one body.
     #[serde(default)]
     pub grid: Option<Grid<R>>,
-    /// The layers the body is on and interacts with ([`CollisionFilter`]). Default all ones.
-    #[serde(default)]
+    /// The layers the body is on and interacts with ([`CollisionFilter`]). Default all ones
+    /// (and not written out).
+    #[serde(default, skip_serializing_if = "CollisionFilter::is_all")]
     pub filter: CollisionFilter,
     /// A sensor detects the bodies it overlaps (events `sensor_enter` and `sensor_exit`) but
-    /// exerts no contact force and feels none. Default false.
-    #[serde(default)]
+    /// exerts no contact force and feels none. Default false (and not written out).
+    #[serde(default, skip_serializing_if = "core::ops::Not::not")]
     pub sensor: bool,
 }
 
@@ -155,6 +157,24 @@ pub struct RigidDesc<R: Real = Fx> {
     /// Solver settings.
     #[serde(default)]
     pub solver: SolverSettings<R>,
+    /// What [`Command::SpawnBody`](crate::types::Command::SpawnBody) creates, by index.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub templates: Vec<BodyTemplate<R>>,
+    /// What [`Command::SpawnJoint`](crate::types::Command::SpawnJoint) creates, by index.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub joint_templates: Vec<JointTemplate<R>>,
+}
+
+impl<R: Real> Default for RigidDesc<R> {
+    /// No bodies, no templates, the default solver settings.
+    fn default() -> Self {
+        Self {
+            bodies: Vec::new(),
+            solver: SolverSettings::default(),
+            templates: Vec::new(),
+            joint_templates: Vec::new(),
+        }
+    }
 }
 
 impl<R: Real> RigidDesc<R> {

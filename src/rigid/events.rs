@@ -8,6 +8,9 @@
 
 use core::fmt;
 
+use super::contact::Contact;
+use super::system::RigidSystem;
+use crate::math::Real;
 use crate::types::Handle;
 
 /// The kinds of event, in their canonical order.
@@ -58,4 +61,90 @@ pub struct Event {
     pub a: Handle,
     /// The body of higher slot; `None` for [`EventKind::JointBreak`].
     pub b: Option<Handle>,
+}
+
+impl<R: Real> RigidSystem<R> {
+    /// The events of the last tick, in canonical order.
+    pub fn events(&self) -> &[Event] {
+        &self.scratch.events
+    }
+
+    /// Forgets the previous tick's events and broken joints; the events to come belong to
+    /// `tick`. The world calls it before the tick's inputs, whose removals raise events.
+    pub(crate) fn begin_events(&mut self, tick: u64) {
+        self.scratch.events.clear();
+        self.scratch.event_tick = tick;
+        self.scratch.spawned.clear();
+        self.scratch.spawned_joints.clear();
+        self.clear_joint_events();
+    }
+
+    /// Records an event of the current tick between slots `a` and `b` (in any order).
+    pub(crate) fn push_pair_event(&mut self, kind: EventKind, a: u32, b: u32) {
+        let (a, b) = (a.min(b) as usize, a.max(b) as usize);
+        let event = Event {
+            tick: self.scratch.event_tick,
+            kind,
+            a: self.bodies.handle(a),
+            b: Some(self.bodies.handle(b)),
+        };
+        self.scratch.events.push(event);
+    }
+
+    /// Records the break of `joint`.
+    pub(crate) fn push_joint_break(&mut self, joint: Handle) {
+        let event = Event {
+            tick: self.scratch.event_tick,
+            kind: EventKind::JointBreak,
+            a: joint,
+            b: None,
+        };
+        self.scratch.events.push(event);
+    }
+
+    /// Puts the tick's events in canonical order (several substeps append in turn).
+    pub(crate) fn sort_events(&mut self) {
+        self.scratch.events.sort_unstable();
+    }
+
+    /// After a collide stage: a `contact_begin` for each body pair with a contact now and
+    /// none in `old` (last step's contacts), a `contact_end` for each pair the other way.
+    /// Both lists are sorted by key, so their body pairs come in ascending order and one
+    /// merge finds the differences.
+    pub(crate) fn record_contact_events(&mut self, old: &[Contact<R>]) {
+        let mut found = Vec::new();
+        let mut before = distinct_pairs(old).peekable();
+        let mut after = distinct_pairs(&self.contacts).peekable();
+        loop {
+            let ended = match (before.peek(), after.peek()) {
+                (None, None) => break,
+                (Some(p), Some(q)) if p == q => {
+                    before.next();
+                    after.next();
+                    continue;
+                }
+                (Some(p), Some(q)) => p < q,
+                (Some(_), None) => true,
+                (None, Some(_)) => false,
+            };
+            if ended {
+                found.extend(before.next().map(|p| (EventKind::ContactEnd, p)));
+            } else {
+                found.extend(after.next().map(|q| (EventKind::ContactBegin, q)));
+            }
+        }
+        drop(after);
+        for (kind, (a, b)) in found {
+            self.push_pair_event(kind, a, b);
+        }
+    }
+}
+
+/// The distinct (body A, body B) pairs of contacts sorted by key, in order.
+fn distinct_pairs<R: Real>(contacts: &[Contact<R>]) -> impl Iterator<Item = (u32, u32)> + '_ {
+    let mut last = None;
+    contacts.iter().filter_map(move |c| {
+        let pair = (c.key.body_a, c.key.body_b);
+        (last.replace(pair) != Some(pair)).then_some(pair)
+    })
 }

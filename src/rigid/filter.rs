@@ -42,6 +42,11 @@ impl CollisionFilter {
         mask: u32::MAX,
     };
 
+    /// Whether this is the default, [`Self::ALL`].
+    pub fn is_all(&self) -> bool {
+        *self == Self::ALL
+    }
+
     /// The filter on `layers` that interacts with `mask`.
     pub const fn new(layers: u32, mask: u32) -> Self {
         Self { layers, mask }
@@ -129,8 +134,19 @@ mod tests {
         let f = QueryFilter::new();
         assert!(f.accepts(CollisionFilter::ALL, false, h));
         assert!(!f.accepts(CollisionFilter::ALL, true, h));
-        assert!(f.clone().with_sensors().accepts(CollisionFilter::ALL, true, h));
-        assert!(!f.clone().excluding(h).accepts(CollisionFilter::ALL, false, h));
-        assert!(!f.with_mask(2).accepts(CollisionFilter::new(1, u32::MAX), false, h));
+        assert!(
+            f.clone()
+                .with_sensors()
+                .accepts(CollisionFilter::ALL, true, h)
+        );
+        assert!(
+            !f.clone()
+                .excluding(h)
+                .accepts(CollisionFilter::ALL, false, h)
+        );
+        assert!(
+            !f.with_mask(2)
+                .accepts(CollisionFilter::new(1, u32::MAX), false, h)
+        );
     }
 }

@@ -16,9 +16,14 @@
 //!    separation, feature id (`u32`) and normal impulse, then the contact's two friction
 //!    impulses and its twist impulse, then its recycling frame as an option (a byte 0 for
 //!    none; else 1, the translation, rotation and normal of the frame, and each point's
-//!    anchors on A and on B).
+//!    anchors on A and on B);
+//! 4. when there are joints, the joints (see `hash_joints`);
+//! 5. when some sensor overlaps a body, the overlap count (`u64`), then each overlapping
+//!    pair in ascending order: lower slot, higher slot (`u32`). A scene without sensors
+//!    hashes as it did before sensors existed.
 //!
-//! Shapes do not change during a run and are part of the scene, which replays check by
+//! Collision filters and sensor flags, like shapes, do not change during a run and are
+//! part of the scene (or of the template a spawn names). Shapes do not change during a run and are part of the scene, which replays check by
 //! its own hash; they are not hashed here.
 
 use super::joints::desc::{JointKind, Limits, Motor, Spring};
@@ -167,6 +172,14 @@ impl<R: Real> RigidSystem<R> {
 
         if !self.joints.is_empty() {
             self.hash_joints(h);
+        }
+
+        if !self.sensor_overlaps.is_empty() {
+            h.write_len(self.sensor_overlaps.len());
+            for &(a, b) in &self.sensor_overlaps {
+                h.write_u32(a);
+                h.write_u32(b);
+            }
         }
     }
 

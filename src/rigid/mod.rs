@@ -18,6 +18,9 @@
 //!
 //! Joints: [`joints`] kinds, storage, breaking and queries; their rows live in the solver.
 //!
+//! Game API: [`filter`] collision layers and query filters · `sensors` overlap detection ·
+//! [`events`] contact, sensor and joint events · `spawn` templates and spawning by input.
+//!
 //! Dynamics: [`collide`] stage 1 · [`contact`] persistent contacts · [`sleep`] islands,
 //! waking and sleeping · [`solve`] stage 3 · [`solver`] the soft-step sequential-impulse
 //! solver · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with
@@ -46,10 +49,12 @@ mod metrics;
 pub mod narrowphase;
 pub mod query;
 mod recycle;
+mod sensors;
 pub mod shape;
 mod sleep;
 mod solve;
 pub(crate) mod solver;
+mod spawn;
 mod subsystem;
 mod system;
 pub mod transform;
@@ -65,5 +70,6 @@ pub use material::Material;
 pub use metrics::RigidMetrics;
 pub use query::{PointProjection, RayHit};
 pub use shape::{Part, Shape};
+pub use spawn::{BodyTemplate, JointTemplate};
 pub use system::RigidSystem;
 pub use transform::Transform;

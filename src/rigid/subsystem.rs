@@ -14,18 +14,14 @@ impl<R: Real> Subsystem<R> for RigidSystem<R> {
         Part::Rigid
     }
 
-    /// Forgets the previous tick's broken joints, so that
-    /// [`RigidSystem::joint_events`] lists this tick's.
-    fn begin_tick(&mut self) {
-        self.clear_joint_events();
-    }
-
     fn step(&mut self, context: &mut StepContext<'_, R>) {
         RigidSystem::step(self, context.dt, context.gravity);
     }
 
+    /// Clears the force accumulators and puts the tick's events in canonical order.
     fn end_tick(&mut self) {
         RigidSystem::end_tick(self);
+        self.sort_events();
     }
 
     fn hash_state(&self, hasher: &mut StateHasher) {

@@ -8,11 +8,13 @@ use super::bodies::{Bodies, NewBody};
 use super::broadphase::BroadPhase;
 use super::contact::Contact;
 use super::desc::{BodyKind, SolverSettings};
+use super::events::Event;
 use super::joints::JointEvent;
 use super::joints::storage::Joints;
 use super::query::QueryIndex;
 use super::recycle::PairFrame;
 use super::solver::Solver;
+use super::spawn::{BodyTemplate, JointTemplate};
 use super::transform::Transform;
 use crate::math::{Fx, Real, Vec3};
 use crate::types::Handle;
@@ -43,6 +45,12 @@ pub struct RigidSystem<R: Real = Fx> {
     pub(crate) frames: Vec<PairFrame<R>>,
     /// Joints between the bodies.
     pub(crate) joints: Joints<R>,
+    /// Sensor and visitor slots (lower, higher) that overlap, ascending
+    /// ([`super::sensors`]).
+    pub(crate) sensor_overlaps: Vec<(u32, u32)>,
+    /// What spawn commands create ([`super::spawn`]).
+    pub(crate) templates: Vec<BodyTemplate<R>>,
+    pub(crate) joint_templates: Vec<JointTemplate<R>>,
     #[serde(skip)]
     pub(crate) scratch: Scratch<R>,
 }
@@ -83,6 +91,18 @@ pub(crate) struct Scratch<R: Real> {
     pub joint_filter: Vec<(u32, u32)>,
     /// The joints that broke during the current tick.
     pub joint_events: Vec<JointEvent<R>>,
+    /// The events of the current tick ([`super::events`]).
+    pub events: Vec<Event>,
+    /// The tick the events belong to.
+    pub event_tick: u64,
+    /// Whether some live body is a sensor or has a filter other than the default: only
+    /// then does the collide stage filter pairs. Computed with the bounds cache.
+    pub filtered: bool,
+    /// This step's broadphase pairs with one sensor, which make no contact.
+    pub sensor_pairs: Vec<(u32, u32)>,
+    /// The bodies and the joints spawned during the current tick.
+    pub spawned: Vec<Handle>,
+    pub spawned_joints: Vec<Handle>,
     /// The bounding-volume tree of the scene queries ([`super::query`]).
     pub query: QueryIndex<R>,
 }
@@ -108,6 +128,9 @@ impl<R: Real> RigidSystem<R> {
             contacts: Vec::new(),
             frames: Vec::new(),
             joints: Joints::default(),
+            sensor_overlaps: Vec::new(),
+            templates: Vec::new(),
+            joint_templates: Vec::new(),
             scratch: Scratch::default(),
         }
     }

@@ -111,6 +111,7 @@ impl<R: Real> Scene<R> {
                 ));
             }
         }
+        self.check_spawns()?;
         let settings = Settings {
             gravity: self.gravity,
             tick_rate: self.tick_rate,

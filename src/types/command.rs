@@ -10,7 +10,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::Handle;
-use crate::math::{Fx, Real, Vec3};
+use crate::math::{Fx, Quat, Real, Vec3};
 
 /// What a command acts on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -104,6 +104,37 @@ pub enum Command<R: Real = Fx> {
         speed: R,
         /// The largest torque (N·m) or force (N), at least 0.
         max_force: R,
+    },
+    /// Creates a rigid body from the scene's body template number `template`
+    /// ([`RigidDesc::templates`](crate::rigid::RigidDesc::templates)). The body takes the
+    /// lowest free slot ([`RigidSystem::spawned`](crate::rigid::RigidSystem::spawned) lists
+    /// the handles a tick created).
+    SpawnBody {
+        /// Index into the scene's body templates.
+        template: u32,
+        /// Position of the centre of mass, m.
+        position: Vec3<R>,
+        /// Orientation (normalised).
+        orientation: Quat<R>,
+        /// Linear velocity, m/s.
+        velocity: Vec3<R>,
+        /// Angular velocity, world frame, rad/s.
+        angular_velocity: Vec3<R>,
+    },
+    /// Creates a joint from the scene's joint template number `template`
+    /// ([`RigidDesc::joint_templates`](crate::rigid::RigidDesc::joint_templates)) between
+    /// two live bodies.
+    SpawnJoint {
+        /// Index into the scene's joint templates.
+        template: u32,
+        /// Bodies A and B.
+        bodies: (Handle, Handle),
+        /// A's anchor, world frame, m.
+        anchor: Vec3<R>,
+        /// B's anchor, world frame, m; absent: the same point as `anchor`.
+        anchor_b: Option<Vec3<R>>,
+        /// The joint axis, world frame, unit length.
+        axis: Vec3<R>,
     },
 }
 

@@ -11,7 +11,7 @@ use crate::math::saturation::count_saturations;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticleSystem;
-use crate::rigid::RigidSystem;
+use crate::rigid::{Event, RigidSystem};
 use crate::soft::SoftSystem;
 use crate::types::{
     Command, Handle, Metrics, Part, PlayerInput, SceneError, Stage, StepContext, Subsystem, Target,
@@ -146,8 +146,9 @@ type SubsystemsMut<'a, R> = [Option<&'a mut dyn Subsystem<R>>; 4];
 /// Per-part lists of (object handle, 32-bit state digest), in [`Part`] order.
 pub type ObjectDigests = Vec<(Part, Vec<(Handle, u32)>)>;
 
-/// What happened during one tick, besides the state change. Not part of the state.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// What happened during one tick, besides the state change. Not part of the state (but
+/// derived from it: a re-simulated tick reports the same).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct TickReport {
     /// Commands whose target did not exist.
     pub ignored_commands: u32,
@@ -156,6 +157,9 @@ pub struct TickReport {
     /// Rigid-body joints that broke during the tick (which ones:
     /// [`RigidSystem::joint_events`]).
     pub broken_joints: u32,
+    /// The tick's events in canonical order: contacts that began and ended, sensor
+    /// overlaps that began and ended, joints that broke ([`crate::rigid::events`]).
+    pub events: Vec<Event>,
 }
 
 /// A deterministic physics world.
@@ -258,6 +262,12 @@ impl<R: Real> World<R> {
         self.state.rigid.as_ref()
     }
 
+    /// The events of the last tick, in canonical order (the same as its
+    /// [`TickReport::events`]); empty without rigid bodies.
+    pub fn events(&self) -> &[Event] {
+        self.state.rigid.as_ref().map_or(&[], |r| r.events())
+    }
+
     /// The simulated state.
     pub fn state(&self) -> &WorldState<R> {
         &self.state
@@ -323,6 +333,9 @@ impl<R: Real> World<R> {
     /// Advances one tick with the given inputs (their `tick` field is not checked here; a
     /// driver passes the inputs for [`World::tick`]).
     pub fn step(&mut self, input: &TickInput<R>) -> TickReport {
+        if let Some(rigid) = &mut self.state.rigid {
+            rigid.begin_events(self.state.tick);
+        }
         let (ignored_commands, saturations) = count_saturations(|| {
             let mut timings = self.timings.take();
             let ignored = timed(&mut timings, Stage::ApplyInputs, || {
@@ -348,15 +361,14 @@ impl<R: Real> World<R> {
                 monitor.sample(&metrics);
             }
         }
-        let broken_joints = self
-            .state
-            .rigid
-            .as_ref()
-            .map_or(0, |r| r.joint_events().len() as u32);
+        let (broken_joints, events) = self.state.rigid.as_ref().map_or((0, Vec::new()), |r| {
+            (r.joint_events().len() as u32, r.events().to_vec())
+        });
         TickReport {
             ignored_commands,
             saturations,
             broken_joints,
+            events,
         }
     }
 
@@ -424,7 +436,9 @@ impl<R: Real> World<R> {
             | Command::Remove {
                 target: Target::Joint(_),
             }
-            | Command::SetMotor { .. } => self
+            | Command::SetMotor { .. }
+            | Command::SpawnBody { .. }
+            | Command::SpawnJoint { .. } => self
                 .state
                 .rigid
                 .as_mut()

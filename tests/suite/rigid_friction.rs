@@ -39,6 +39,7 @@ fn cube_on_ground(sideways: f64, spin: f64) -> (World<Fx>, Handle) {
             sleeping: false,
             ..SolverSettings::default()
         },
+        ..RigidDesc::default()
     });
     let world = scene.build().expect("the scene builds");
     let r = world.rigid().expect("rigid bodies");

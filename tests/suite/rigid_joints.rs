@@ -37,6 +37,7 @@ fn scene(bodies: Vec<BodyDesc<Fx>>, joints: Vec<JointDesc<Fx>>, sleeping: bool) 
             sleeping,
             ..SolverSettings::default()
         },
+        ..RigidDesc::default()
     });
     scene.joints = Some(JointsDesc::new(joints));
     scene

@@ -82,6 +82,7 @@ fn head_on(e: f64, ratio: i32) {
             sleeping: false,
             ..SolverSettings::default()
         },
+        ..RigidDesc::default()
     };
     let mut world = world_of(&scene_with(desc, Vec3::ZERO));
     let [a, b] = dynamic_handles(&world)[..] else {
@@ -131,6 +132,7 @@ fn bounces_never_rise_above_the_drop_height() {
                 sleeping: false,
                 ..SolverSettings::default()
             },
+            ..RigidDesc::default()
         };
         let mut scene = scene_with(desc, Vec3::new(Fx::ZERO, -Fx::from_f64(9.81), Fx::ZERO));
         scene.ticks = 600;
@@ -585,6 +587,7 @@ fn compounds_and_capsules_rest_on_the_ground() {
     let desc = RigidDesc {
         bodies: vec![fixstep_scenes::rigid::ground(), dumbbell, capsule],
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     };
     let mut world = world_of(&scene_with(
         desc,
@@ -630,6 +633,7 @@ fn a_kinematic_platform_carries_a_box() {
     let desc = RigidDesc {
         bodies: vec![platform, cube],
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     };
     let mut world = world_of(&scene_with(
         desc,

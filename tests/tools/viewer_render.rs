@@ -175,6 +175,7 @@ fn ropes_are_drawn_as_lines_between_their_anchors() {
     s.rigid = Some(RigidDesc {
         bodies: vec![anchor, ball],
         solver: Default::default(),
+        ..RigidDesc::default()
     });
     let rope = JointDesc::new(
         JointKind::Rope { max_length: None },

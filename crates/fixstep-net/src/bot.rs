@@ -40,6 +40,8 @@ pub struct Bot {
     bodies: Vec<(u16, Fx)>,
     /// Whether the scene has particles (group 0 is kicked).
     particles: bool,
+    /// How many body templates the scene has (spawns pick one).
+    templates: u16,
 }
 
 impl Bot {
@@ -62,13 +64,17 @@ impl Bot {
             seed,
             bodies,
             particles: world.particles().is_some(),
+            templates: world.rigid().map_or(0, |r| {
+                u16::try_from(r.templates().len()).unwrap_or(u16::MAX)
+            }),
         }
     }
 
     /// Player `player`'s input for `tick`. Seven ticks in eight are idle; otherwise the
     /// player kicks a random dynamic body (Δv uniform in ±1.5 m/s horizontally and 0–3 m/s
     /// up, J = m·Δv), or the particles of group 0 (J in ±0.5 N·s horizontally, 0–1 N·s up),
-    /// or, one action in four or when the scene has neither, sends a random payload.
+    /// or, one action in four or when the scene has neither, sends a random payload. In a
+    /// scene with body templates, half the other actions spawn a body instead (see below).
     pub fn input(&self, player: u8, tick: u64) -> NetInput {
         let mut rng = Pcg32::new(
             self.seed ^ tick.wrapping_mul(TICK_SPREAD),
@@ -78,6 +84,25 @@ impl Bot {
             return NetInput::default();
         }
         let payload = rng.below(4) == 0;
+        if !payload && self.templates > 0 && rng.below(2) == 0 {
+            // Spawn from a random template within ±4 m horizontally, 4–8 m up, thrown at
+            // up to ±3 m/s horizontally.
+            return NetInput {
+                action: Action::SpawnBody,
+                target: rng.below(u32::from(self.templates)) as u16,
+                position: [
+                    symmetric(&mut rng, 64) as i16,
+                    (64 + rng.below(65)) as i16,
+                    symmetric(&mut rng, 64) as i16,
+                ],
+                impulse: [
+                    symmetric(&mut rng, 48) as i16,
+                    0,
+                    symmetric(&mut rng, 48) as i16,
+                ],
+                ..NetInput::default()
+            };
+        }
         if !payload && let Some(&(slot, mass)) = self.pick_body(&mut rng) {
             let dv = [
                 symmetric(&mut rng, BODY_DV_HORIZONTAL),

@@ -8,7 +8,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use fixstep::math::{Fx, Real, Vec3};
+use fixstep::math::{Fx, Quat, Real, Vec3};
 use fixstep::scene::Scene;
 use fixstep::world::{Command, Handle, PlayerInput, Target, TickInput};
 
@@ -27,6 +27,13 @@ pub enum Action {
     ImpulseGroup,
     /// A game-logic payload ([`Command::Payload`]) with the value `payload`.
     Payload,
+    /// A rigid body spawned from body template `target` ([`Command::SpawnBody`]) at
+    /// `position` with velocity `impulse` (read as 1/16 m/s), unrotated, not spinning.
+    SpawnBody,
+    /// A joint spawned from joint template `target` ([`Command::SpawnJoint`]) between the
+    /// bodies in slots `payload & 0xffff` and `payload >> 16` (generation 0: bodies of the
+    /// scene), anchored at `position`, axis x.
+    SpawnJoint,
 }
 
 /// One player's input for one tick, as GGRS sends it.
@@ -40,8 +47,11 @@ pub struct NetInput {
     pub target: u16,
     /// Impulse (x, y, z) in 1/16 N·s.
     pub impulse: [i16; 3],
-    /// The payload value of [`Action::Payload`].
+    /// The payload value of [`Action::Payload`]; the two body slots of
+    /// [`Action::SpawnJoint`].
     pub payload: u32,
+    /// Where [`Action::SpawnBody`] and [`Action::SpawnJoint`] act, in 1/16 m.
+    pub position: [i16; 3],
     /// In lockstep mode, on ticks that are multiples of the desync-detection interval: the
     /// sender's 128-bit checksum ([`super::checksum128`]) of the state at this tick, as
     /// (high, low) halves; zero otherwise. Never applied to the world.
@@ -52,16 +62,41 @@ impl NetInput {
     /// The command this input stands for, if any: `ImpulseBody` →
     /// [`Command::ApplyImpulse`] on `Body(target v0)`, `ImpulseGroup` → the same on
     /// `ParticleGroup(target)`, both with impulse J = `impulse` / 16 N·s at the centre of
-    /// mass; `Payload` → [`Command::Payload`].
+    /// mass; `Payload` → [`Command::Payload`]; `SpawnBody` and `SpawnJoint` → the spawn
+    /// commands (positions and velocities in 1/16 m and 1/16 m/s, exactly).
     pub fn command(&self) -> Option<Command<Fx>> {
         let impulse = Vec3::new(
             impulse_component(self.impulse[0]),
             impulse_component(self.impulse[1]),
             impulse_component(self.impulse[2]),
         );
+        let position = Vec3::new(
+            impulse_component(self.position[0]),
+            impulse_component(self.position[1]),
+            impulse_component(self.position[2]),
+        );
         let target = match self.action {
             Action::Idle => return None,
             Action::Payload => return Some(Command::Payload(self.payload)),
+            Action::SpawnBody => {
+                return Some(Command::SpawnBody {
+                    template: u32::from(self.target),
+                    position,
+                    orientation: Quat::IDENTITY,
+                    velocity: impulse,
+                    angular_velocity: Vec3::ZERO,
+                });
+            }
+            Action::SpawnJoint => {
+                let slot = |s: u32| Handle::new(s, 0);
+                return Some(Command::SpawnJoint {
+                    template: u32::from(self.target),
+                    bodies: (slot(self.payload & 0xffff), slot(self.payload >> 16)),
+                    anchor: position,
+                    anchor_b: None,
+                    axis: Vec3::X,
+                });
+            }
             Action::ImpulseBody => Target::Body(Handle::new(u32::from(self.target), 0)),
             Action::ImpulseGroup => Target::ParticleGroup(self.target),
         };

@@ -49,6 +49,7 @@ pub fn chain<R: Real>(links: u32, height: R) -> (RigidDesc<R>, JointsDesc<R>) {
     let rigid = RigidDesc {
         bodies: vec![ground(), anchor, link],
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     };
     // Body 1 is the anchor, bodies 2.. the links.
     let first = JointDesc::new(JointKind::Ball, 1, 2, Vec3::new(R::ZERO, height, R::ZERO));
@@ -135,6 +136,7 @@ pub fn bridge<R: Real>(planks: u32) -> (RigidDesc<R>, JointsDesc<R>) {
         RigidDesc {
             bodies,
             solver: SolverSettings::default(),
+            ..RigidDesc::default()
         },
         JointsDesc::new(list),
     )
@@ -272,6 +274,7 @@ pub fn ragdolls<R: Real>(count: u32) -> (RigidDesc<R>, JointsDesc<R>) {
         RigidDesc {
             bodies,
             solver: SolverSettings::default(),
+            ..RigidDesc::default()
         },
         JointsDesc::new(list),
     )
@@ -343,6 +346,7 @@ pub fn falling_hinges<R: Real>(columns: u32, rows: u32) -> (RigidDesc<R>, Joints
         RigidDesc {
             bodies,
             solver: SolverSettings::default(),
+            ..RigidDesc::default()
         },
         JointsDesc::new(list),
     )
@@ -400,6 +404,7 @@ pub fn joint_grid<R: Real>(n: u32) -> (RigidDesc<R>, JointsDesc<R>) {
         RigidDesc {
             bodies,
             solver: SolverSettings::default(),
+            ..RigidDesc::default()
         },
         JointsDesc::new(list),
     )

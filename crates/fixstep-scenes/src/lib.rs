@@ -5,6 +5,7 @@
 //! pieces the scenes are made of, per subsystem, for tests and benchmarks to reuse.
 
 pub mod fluid;
+pub mod game;
 pub mod joints;
 pub mod particles;
 pub mod rigid;
@@ -15,7 +16,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 21] = [
+pub const BUILTIN_SCENES: [(&str, &str); 22] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -33,6 +34,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 21] = [
         "210 unit boxes in a pyramid of base 20 on the ground, standing and falling asleep",
     ),
     ("stack", "10 unit boxes stacked on the ground"),
+    (
+        "shooter",
+        "a player fires spawned projectiles, on their own layer, at a wall of boxes; a sensor plate counts arrivals; the aim is a ray query",
+    ),
     (
         "balls",
         "4096 balls dropped in a 16x16x16 lattice into an open box of 5 static boxes",
@@ -130,6 +135,11 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
         "stack" => {
             scene.rigid = Some(rigid::stack(10));
             scene.ticks = 420;
+        }
+        "shooter" => {
+            scene.rigid = Some(game::shooter());
+            scene.script = game::shooter_script();
+            scene.ticks = 600;
         }
         "balls" => {
             scene.rigid = Some(rigid::balls(16));

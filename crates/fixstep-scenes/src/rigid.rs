@@ -54,6 +54,7 @@ pub fn pyramid<R: Real>(base: u32) -> RigidDesc<R> {
     RigidDesc {
         bodies,
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     }
 }
 
@@ -67,6 +68,7 @@ pub fn stack<R: Real>(height: u32) -> RigidDesc<R> {
     RigidDesc {
         bodies: vec![ground(), body],
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     }
 }
 
@@ -118,6 +120,7 @@ pub fn balls<R: Real>(n: u32) -> RigidDesc<R> {
             sleeping: false,
             ..SolverSettings::default()
         },
+        ..RigidDesc::default()
     }
 }
 
@@ -135,6 +138,7 @@ pub fn falling<R: Real>(count: u32) -> RigidDesc<R> {
             sleeping: false,
             ..SolverSettings::default()
         },
+        ..RigidDesc::default()
     }
 }
 
@@ -162,6 +166,7 @@ pub fn cradle<R: Real>() -> RigidDesc<R> {
     RigidDesc {
         bodies: vec![striker, row],
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     }
 }
 
@@ -210,6 +215,7 @@ pub fn incline<R: Real>() -> RigidDesc<R> {
     RigidDesc {
         bodies,
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     }
 }
 
@@ -236,6 +242,7 @@ pub fn spinner<R: Real>() -> RigidDesc<R> {
             sleeping: false,
             ..SolverSettings::default()
         },
+        ..RigidDesc::default()
     }
 }
 
@@ -295,5 +302,6 @@ pub fn showcase<R: Real>() -> RigidDesc<R> {
     RigidDesc {
         bodies: vec![ground(), stack, balls, capsule, dumbbell],
         solver: SolverSettings::default(),
+        ..RigidDesc::default()
     }
 }

@@ -38,6 +38,7 @@ impl<R: Real> RigidSystem<R> {
         for (i, force, torque) in broken {
             let joint = self.joints.handle(i as usize);
             self.remove_joint(i as usize);
+            self.push_joint_break(joint);
             self.scratch.joint_events.push(JointEvent {
                 joint,
                 force,

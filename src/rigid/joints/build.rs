@@ -40,7 +40,7 @@ impl<R: Real> RigidSystem<R> {
                     };
                     e.within(&place)
                 })?;
-                self.joints.push(new);
+                self.joints.insert(new);
             }
         }
         self.scratch.joint_filter_valid = false;
@@ -102,6 +102,19 @@ impl<R: Real> RigidSystem<R> {
             }
         }
         Ok(())
+    }
+
+    /// Compiles a spawned joint between slots `joint.bodies` (no lattice).
+    pub(crate) fn compile_spawned_joint(
+        &self,
+        joint: &JointDesc<R>,
+    ) -> Result<NewJoint<R>, SceneError> {
+        let copy = Copy {
+            index: (0, 0, 0),
+            bodies: joint.bodies,
+            offset: Vec3::ZERO,
+        };
+        self.compile_joint(joint, &copy)
     }
 
     /// One joint of the lattice: checks its bodies and computes its frames in them.
@@ -246,7 +259,7 @@ fn lattice<R: Real>(joint: &JointDesc<R>) -> Result<Vec<Copy<R>>, SceneError> {
 
 /// The checks that do not depend on the bodies: the axis, the kind's parameters and the
 /// break thresholds.
-fn check_joint<R: Real>(joint: &JointDesc<R>) -> Result<(), SceneError> {
+pub(crate) fn check_joint<R: Real>(joint: &JointDesc<R>) -> Result<(), SceneError> {
     let tolerance = R::from_ratio(1, 1000);
     if (joint.axis.length_squared() - R::ONE).abs() > tolerance {
         return Err(SceneError::new("axis", "must have length 1"));

@@ -25,4 +25,5 @@ mod queries;
 pub(crate) mod storage;
 
 pub use breaking::JointEvent;
+pub(crate) use build::check_joint;
 pub use desc::{JointDesc, JointGrid, JointKind, JointsDesc, Limits, Motor, Spring};

@@ -1,8 +1,9 @@
 //! Structure-of-arrays joint storage: one `Vec` per attribute, indexed by joint slot.
 //!
 //! Slots are never freed, as for bodies: removing or breaking a joint marks its slot dead
-//! and bumps its generation, so every [`Handle`] to it goes stale at once. A new joint would
-//! take the lowest dead slot; joints are only created by the scene today, in order.
+//! and bumps its generation, so every [`Handle`] to it goes stale at once. A new joint (a
+//! scene's, in order, or a spawned one) takes the lowest dead slot, or a new slot at the
+//! end.
 
 use serde::{Deserialize, Serialize};
 
@@ -94,8 +95,22 @@ impl<R: Real> Joints<R> {
         (i < self.len() && self.alive[i] && self.generation[i] == handle.generation).then_some(i)
     }
 
-    /// Adds a joint in a new slot at the end.
-    pub fn push(&mut self, joint: NewJoint<R>) -> Handle {
+    /// Adds a joint in the lowest dead slot, or a new slot at the end.
+    pub fn insert(&mut self, joint: NewJoint<R>) -> Handle {
+        if let Some(i) = self.alive.iter().position(|&alive| !alive) {
+            self.kind[i] = joint.kind;
+            self.body_a[i] = joint.body_a;
+            self.body_b[i] = joint.body_b;
+            self.frame_a[i] = joint.frame_a;
+            self.frame_b[i] = joint.frame_b;
+            self.length[i] = joint.length;
+            self.collide[i] = joint.collide;
+            self.break_force[i] = joint.break_force;
+            self.break_torque[i] = joint.break_torque;
+            self.impulses[i] = [R::ZERO; MAX_JOINT_ROWS];
+            self.alive[i] = true;
+            return self.handle(i);
+        }
         self.kind.push(joint.kind);
         self.body_a.push(joint.body_a);
         self.body_b.push(joint.body_b);

@@ -191,7 +191,7 @@ fn a_contact_naming_a_missing_frame_is_refused() {
             BodyDesc::new(unit_box(), v(0.0, 0.0, 0.0)),
             BodyDesc::new(unit_box(), v(0.0, 0.99, 0.0)),
         ],
-        solver: Default::default(),
+        ..RigidDesc::default()
     };
     let mut system = RigidSystem::from_desc(&desc).expect("builds");
     system.step(Fx::from_ratio(1, 60), v(0.0, 0.0, 0.0));
