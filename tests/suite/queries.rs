@@ -7,7 +7,6 @@
 use fixstep::math::{Fx, Quat, Real, Vec3};
 use fixstep::rigid::{
     BodyDesc, BodyKind, CollisionFilter, Part, QueryFilter, RayHit, RigidDesc, Shape,
-    SolverSettings,
 };
 use fixstep::scene::Scene;
 use fixstep::world::{Handle, TickInput, World};
@@ -128,7 +127,7 @@ fn world_of(specs: &[BodySpec]) -> World<Fx> {
     scene.gravity = Vec3::new(Fx::ZERO, Fx::from_ratio(-981, 100), Fx::ZERO);
     scene.rigid = Some(RigidDesc {
         bodies,
-        solver: SolverSettings::default(),
+        ..RigidDesc::default()
     });
     scene.build().expect("the scene builds")
 }

@@ -46,6 +46,7 @@ fn system(bodies: Vec<BodyDesc<F>>) -> RigidSystem<F> {
             sleeping: false,
             ..SolverSettings::default()
         },
+        ..RigidDesc::default()
     })
     .expect("a valid scene")
 }
