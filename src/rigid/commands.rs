@@ -146,6 +146,7 @@ impl<R: Real> RigidSystem<R> {
             return;
         }
         self.bodies.position[i] = position;
+        self.scratch.query.invalidate();
         self.wake_touching(i);
     }
 
