@@ -82,16 +82,18 @@ impl<R: Real> RigidSystem<R> {
                 .retain(|pair| filter.binary_search(pair).is_err());
         }
         scratch.sensor_pairs.clear();
-        if scratch.filtered {
-            let (bodies, sensor_pairs) = (&self.bodies, &mut scratch.sensor_pairs);
+        if scratch.layered {
+            let filter = &self.bodies.filter;
+            scratch
+                .pairs
+                .retain(|&(a, b)| filter[a as usize].interacts(filter[b as usize]));
+        }
+        if scratch.sensing {
+            let (sensor, sensor_pairs) = (&self.bodies.sensor, &mut scratch.sensor_pairs);
             scratch.pairs.retain(|&(a, b)| {
-                let (a, b) = (a as usize, b as usize);
-                if !bodies.filter[a].interacts(bodies.filter[b]) {
-                    return false;
-                }
-                let (sa, sb) = (bodies.sensor[a], bodies.sensor[b]);
+                let (sa, sb) = (sensor[a as usize], sensor[b as usize]);
                 if sa != sb {
-                    sensor_pairs.push((a as u32, b as u32));
+                    sensor_pairs.push((a, b));
                 }
                 !(sa || sb)
             });
@@ -273,7 +275,7 @@ impl<R: Real> RigidSystem<R> {
         self.contacts = contacts;
         self.frames = frames;
         self.record_contact_events(&old);
-        if self.scratch.filtered || !self.sensor_overlaps.is_empty() {
+        if self.scratch.sensing || !self.sensor_overlaps.is_empty() {
             self.update_sensor_overlaps();
         }
         self.scratch.spare_contacts = old;
@@ -306,10 +308,10 @@ impl<R: Real> RigidSystem<R> {
             }
         }
         if rebuild {
-            self.scratch.filtered = (0..n).any(|i| {
-                self.bodies.alive[i]
-                    && (self.bodies.sensor[i] || self.bodies.filter[i] != CollisionFilter::ALL)
-            });
+            let b = &self.bodies;
+            self.scratch.layered =
+                (0..n).any(|i| b.alive[i] && b.filter[i] != CollisionFilter::ALL);
+            self.scratch.sensing = (0..n).any(|i| b.alive[i] && b.sensor[i]);
             self.scratch.planes = (0..n)
                 .filter(|&i| {
                     self.bodies.alive[i] && matches!(self.bodies.shape[i], Shape::Plane { .. })

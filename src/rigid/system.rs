@@ -95,9 +95,12 @@ pub(crate) struct Scratch<R: Real> {
     pub events: Vec<Event>,
     /// The tick the events belong to.
     pub event_tick: u64,
-    /// Whether some live body is a sensor or has a filter other than the default: only
-    /// then does the collide stage filter pairs. Computed with the bounds cache.
-    pub filtered: bool,
+    /// Whether some live body has a filter other than the default: only then does the
+    /// collide stage filter pairs by layer. Computed with the bounds cache.
+    pub layered: bool,
+    /// Whether some live body is a sensor: only then does the collide stage set sensor
+    /// pairs aside. Computed with the bounds cache.
+    pub sensing: bool,
     /// This step's broadphase pairs with one sensor, which make no contact.
     pub sensor_pairs: Vec<(u32, u32)>,
     /// The bodies and the joints spawned during the current tick.
