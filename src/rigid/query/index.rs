@@ -152,6 +152,23 @@ impl<R: Real> QueryIndex<R> {
         }
     }
 
+    /// Calls `visit(slot)` for the bodies whose fat box `enter` keeps, nearest entry
+    /// first (see [`AabbTree::traverse_nearest`]: a box whose entry exceeds `reach()` when
+    /// its turn comes is skipped), then for every body without a box.
+    pub fn candidates_nearest(
+        &self,
+        enter: impl FnMut(&Aabb<R>) -> Option<R>,
+        reach: impl Fn() -> R,
+        mut visit: impl FnMut(usize),
+    ) {
+        let mut stack = Vec::new();
+        self.tree
+            .traverse_nearest(&mut stack, enter, reach, |slot| visit(slot as usize));
+        for &slot in &self.unbounded {
+            visit(slot as usize);
+        }
+    }
+
     /// The tree, for tests.
     #[cfg(test)]
     pub fn tree(&self) -> &AabbTree<R> {

@@ -30,7 +30,7 @@ use core::cell::Cell;
 pub(crate) use self::index::QueryIndex;
 use self::overlap::shapes_overlap;
 use self::point::project_point;
-use self::ray::{Crossing, Ray, ray_reaches_box, ray_shape};
+use self::ray::{BoxProbe, Crossing, Ray, ray_shape};
 use self::shape_cast::{cast_shape, cast_tolerance};
 use super::aabb::Aabb;
 use super::filter::QueryFilter;
@@ -125,20 +125,31 @@ impl<R: Real> RigidSystem<R> {
     ) -> Option<RayHit<R>> {
         let ray = self.query_ray(origin, direction, max_distance)?;
         let reach = Cell::new(ray.max);
-        let pad = prune_pad::<R>();
+        let probe = BoxProbe::new(&ray, prune_pad::<R>());
         let mut best: Option<(R, Handle, Crossing<R>)> = None;
-        self.for_each_candidate(
-            |aabb| ray_reaches_box(aabb, pad, &ray, reach.get()),
-            |i| {
-                if let Some((handle, crossing)) = self.ray_against(i, &ray, filter) {
-                    let distance = crossing.distance();
-                    if precedes(distance, handle, best.map(|(d, h, _)| (d, h))) {
-                        best = Some((distance, handle, crossing));
-                        reach.set(distance);
-                    }
+        let mut visit = |i: usize| {
+            if let Some((handle, crossing)) = self.ray_against(i, &ray, &probe, filter) {
+                let distance = crossing.distance();
+                if precedes(distance, handle, best.map(|(d, h, _)| (d, h))) {
+                    best = Some((distance, handle, crossing));
+                    reach.set(distance);
                 }
-            },
-        );
+            }
+        };
+        let index = &self.scratch.query;
+        if index.is_current(self.bodies.len()) {
+            // Nearest boxes first, so that a hit soon cuts off the farther subtrees; a box
+            // entered at exactly the best distance is still visited (ties go by handle).
+            index.candidates_nearest(
+                |aabb| probe.enter(aabb).filter(|&e| e <= reach.get()),
+                || reach.get(),
+                &mut visit,
+            );
+        } else {
+            for i in 0..self.bodies.len() {
+                visit(i);
+            }
+        }
         best.map(|(_, handle, crossing)| ray_hit(&ray, handle, crossing))
     }
 
@@ -154,12 +165,12 @@ impl<R: Real> RigidSystem<R> {
         let Some(ray) = self.query_ray(origin, direction, max_distance) else {
             return Vec::new();
         };
-        let pad = prune_pad::<R>();
+        let probe = BoxProbe::new(&ray, prune_pad::<R>());
         let mut hits = Vec::new();
         self.for_each_candidate(
-            |aabb| ray_reaches_box(aabb, pad, &ray, ray.max),
+            |aabb| probe.reaches(aabb, ray.max),
             |i| {
-                if let Some((handle, crossing)) = self.ray_against(i, &ray, filter) {
+                if let Some((handle, crossing)) = self.ray_against(i, &ray, &probe, filter) {
                     hits.push(ray_hit(&ray, handle, crossing));
                 }
             },
@@ -198,7 +209,7 @@ impl<R: Real> RigidSystem<R> {
         // meets the body's box grown by the shape's half extents (and the tolerance).
         let centre = Ray::new((own.min + own.max) * R::HALF, ray.direction, ray.max);
         let half = (own.max - own.min) * R::HALF;
-        let pad = prune_pad::<R>() + cast_tolerance::<R>();
+        let probe = BoxProbe::new(&centre, prune_pad::<R>() + cast_tolerance::<R>());
         let reach = Cell::new(ray.max);
         let mut best: Option<(R, Handle)> = None;
         let mut found = None;
@@ -208,7 +219,7 @@ impl<R: Real> RigidSystem<R> {
                     min: aabb.min - half,
                     max: aabb.max + half,
                 };
-                ray_reaches_box(&grown, pad, &centre, reach.get())
+                probe.reaches(&grown, reach.get())
             },
             |i| {
                 if !self.query_accepts(i, filter) {
@@ -223,7 +234,7 @@ impl<R: Real> RigidSystem<R> {
                         min: b.min - half,
                         max: b.max + half,
                     };
-                    ray_reaches_box(&grown, pad, &centre, ray.max)
+                    probe.reaches(&grown, ray.max)
                 });
                 if !near {
                     return;
@@ -372,6 +383,7 @@ impl<R: Real> RigidSystem<R> {
         &self,
         i: usize,
         ray: &Ray<R>,
+        probe: &BoxProbe<R>,
         filter: &QueryFilter,
     ) -> Option<(Handle, Crossing<R>)> {
         if !self.query_accepts(i, filter) {
@@ -380,8 +392,7 @@ impl<R: Real> RigidSystem<R> {
         let xf = self.query_placement(i);
         let shape = &self.bodies.shape[i];
         // The same tight-box test on both paths (tree or every body).
-        let near = Aabb::of_shape(shape, &xf)
-            .is_none_or(|b| ray_reaches_box(&b, prune_pad(), ray, ray.max));
+        let near = Aabb::of_shape(shape, &xf).is_none_or(|b| probe.reaches(&b, ray.max));
         if !near {
             return None;
         }

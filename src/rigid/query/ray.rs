@@ -149,8 +149,105 @@ pub(super) fn slabs<R: Real>(
     (out.enter <= out.exit).then_some(out)
 }
 
+/// The tree's pruning test for one ray, with the per-axis reciprocals formed once: a box
+/// is tested by multiplications, not divisions. Conservative: it may pass a box the ray
+/// misses by a hair, never fail one the ray meets within the distance asked.
+///
+/// On an axis with |d_k| ≥ 2⁻¹⁰ whose slab offsets are below 2¹⁶ m, the distance is
+/// offset × (1/|d_k|): the reciprocal is off by at most 2⁻³³ (correctly rounded), so the
+/// product is off by at most 2¹⁶·2⁻³³ + 2⁻³³ < 2⁻¹⁶ m, less than the `pad` (≥ 2⁻¹⁶ m, which
+/// moves the distance by pad/|d_k| ≥ pad) covers. Every other axis divides as [`slabs`]
+/// does. So the test passes every box the exact quotients say the ray meets (the test
+/// `box_probe_is_never_stricter_than_exact_quotients`).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BoxProbe<R: Real> {
+    origin: Vec3<R>,
+    /// |d_k|, 0 for an axis the ray does not move along.
+    speed: [R; 3],
+    /// 1/|d_k| where the fast path applies (|d_k| ≥ 2⁻¹⁰), else 0.
+    inverse: [R; 3],
+    /// Whether d_k > 0.
+    ahead: [bool; 3],
+    pad: R,
+    limit: R,
+}
+
+impl<R: Real> BoxProbe<R> {
+    /// The probe of `ray` for boxes grown by `pad` (m, ≥ 2⁻¹⁶ m).
+    pub fn new(ray: &Ray<R>, pad: R) -> Self {
+        let slow = R::from_ratio(1, 1 << 10);
+        let mut speed = [R::ZERO; 3];
+        let mut inverse = [R::ZERO; 3];
+        let mut ahead = [false; 3];
+        for k in 0..3 {
+            let d = ray.direction[k];
+            speed[k] = d.abs();
+            ahead[k] = d > R::ZERO;
+            if speed[k] >= slow {
+                inverse[k] = speed[k].recip();
+            }
+        }
+        Self {
+            origin: ray.origin,
+            speed,
+            inverse,
+            ahead,
+            pad,
+            limit: ray.limit(),
+        }
+    }
+
+    /// The entry distance (m, possibly negative) of the ray into `aabb` grown by the pad,
+    /// when the ray's forward half meets it; `None` when it surely does not.
+    #[inline]
+    pub fn enter(&self, aabb: &crate::rigid::aabb::Aabb<R>) -> Option<R> {
+        let near_bound = R::from_int(1 << 16);
+        let mut enter = -self.limit;
+        let mut exit = self.limit;
+        for k in 0..3 {
+            let (o, lo, hi) = (
+                self.origin[k],
+                aabb.min[k] - self.pad,
+                aabb.max[k] + self.pad,
+            );
+            let speed = self.speed[k];
+            if speed == R::ZERO {
+                if o < lo || o > hi {
+                    return None;
+                }
+                continue;
+            }
+            let (near, far) = if self.ahead[k] {
+                (lo - o, hi - o)
+            } else {
+                (o - hi, o - lo)
+            };
+            let inverse = self.inverse[k];
+            let (t_near, t_far) =
+                if inverse != R::ZERO && near.abs() < near_bound && far.abs() < near_bound {
+                    (near * inverse, far * inverse)
+                } else {
+                    (
+                        clamped_ratio(near, speed, self.limit),
+                        clamped_ratio(far, speed, self.limit),
+                    )
+                };
+            enter = enter.max(t_near);
+            exit = exit.min(t_far);
+        }
+        (exit >= R::ZERO && enter <= exit).then_some(enter)
+    }
+
+    /// Whether the ray meets the grown `aabb` within `reach` (m).
+    #[inline]
+    pub fn reaches(&self, aabb: &crate::rigid::aabb::Aabb<R>, reach: R) -> bool {
+        self.enter(aabb).is_some_and(|e| e <= reach)
+    }
+}
+
 /// Whether the ray can meet the box `aabb` grown by `pad` (m) within `reach` (m): the
-/// pruning test of the tree. Rounding moves the slab distances by ulps; `pad` covers it.
+/// pruning test with exact quotients, the reference [`BoxProbe`] is checked against. Rounding moves the slab distances by ulps; `pad` covers it.
+#[cfg(test)]
 pub(super) fn ray_reaches_box<R: Real>(
     aabb: &crate::rigid::aabb::Aabb<R>,
     pad: R,

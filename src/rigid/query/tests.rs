@@ -935,7 +935,8 @@ fn the_tree_gives_the_answers_of_brute_force() {
         let mut best: Option<RayHit<F>> = None;
         for i in 0..sys.slot_count() {
             let ray = Ray::new(o, unit_direction(d).unwrap(), fx(40.0));
-            if let Some((h, c)) = sys.ray_against(i, &ray, &f) {
+            let probe = BoxProbe::new(&ray, prune_pad());
+            if let Some((h, c)) = sys.ray_against(i, &ray, &probe, &f) {
                 let hit = ray_hit(&ray, h, c);
                 if precedes(hit.distance, hit.body, best.map(|b| (b.distance, b.body))) {
                     best = Some(hit);
@@ -1046,4 +1047,54 @@ fn balls_index_cost() {
         tree.as_secs_f64() * 1e3,
         slow.as_secs_f64() * 1e4
     );
+}
+
+/// The multiplying box probe (boxes grown by the pad) passes every box the exact-quotient
+/// test passes unpadded: random boxes and rays, with tiny and zero direction components and
+/// far coordinates, at several reaches.
+#[test]
+fn box_probe_is_never_stricter_than_exact_quotients() {
+    use super::ray::{BoxProbe, ray_reaches_box};
+    let mut rng = Pcg32::new(11, 3);
+    let pad = prune_pad::<F>();
+    let mut passed = 0;
+    for round in 0..20_000 {
+        let scale = [fx(2.0), fx(50.0), fx(5000.0), fx(200_000.0)][round % 4];
+        let o = Vec3::new(
+            rng.range(-scale, scale),
+            rng.range(-scale, scale),
+            rng.range(-scale, scale),
+        );
+        let mut d: Vec3<F> = rng.unit_vector();
+        match round % 5 {
+            1 => d.x = F::ZERO,
+            2 => d.y = F::from_ratio(1, 1 << 12),
+            3 => d.z = -F::from_ratio(1, 1 << 9),
+            _ => {}
+        }
+        let Some(d) = unit_direction(d) else { continue };
+        let centre = Vec3::new(
+            rng.range(-scale, scale),
+            rng.range(-scale, scale),
+            rng.range(-scale, scale),
+        );
+        let half = Vec3::new(
+            rng.range(fx(0.0), scale),
+            rng.range(fx(0.0), scale),
+            rng.range(fx(0.0), scale),
+        );
+        let aabb = Aabb {
+            min: centre - half,
+            max: centre + half,
+        };
+        let ray = Ray::new(o, d, scale * fx(4.0));
+        let probe = BoxProbe::new(&ray, pad);
+        for reach in [ray.max, scale, fx(1.0), F::ZERO] {
+            if ray_reaches_box(&aabb, F::ZERO, &ray, reach) {
+                passed += 1;
+                assert!(probe.reaches(&aabb, reach), "{aabb:?} {ray:?} {reach:?}");
+            }
+        }
+    }
+    assert!(passed > 1000, "{passed}");
 }

@@ -127,6 +127,56 @@ impl<R: Real> AabbTree<R> {
         }
     }
 
+    /// Walks the tree nearest first: `enter(box)` gives a node's key (a ray's entry
+    /// distance, m) or `None` to prune it; of two children the one with the smaller key
+    /// (the left on ties) is walked first, and a node whose key exceeds `reach()` when it
+    /// comes up is skipped with its subtree (a key equal to `reach()` is kept).
+    /// `leaf(slot)` is called for every leaf kept. `stack` is working memory.
+    pub fn traverse_nearest(
+        &self,
+        stack: &mut Vec<(u32, R)>,
+        mut enter: impl FnMut(&Aabb<R>) -> Option<R>,
+        reach: impl Fn() -> R,
+        mut leaf: impl FnMut(u32),
+    ) {
+        stack.clear();
+        if self.root == NULL {
+            return;
+        }
+        let root = &self.nodes[self.root as usize];
+        match enter(&root.aabb) {
+            Some(key) => stack.push((self.root, key)),
+            None => return,
+        }
+        while let Some((index, key)) = stack.pop() {
+            if key > reach() {
+                continue;
+            }
+            let node = &self.nodes[index as usize];
+            if node.height == 0 {
+                leaf(node.slot);
+                continue;
+            }
+            let (l, r) = (node.left, node.right);
+            let kl = enter(&self.nodes[l as usize].aabb);
+            let kr = enter(&self.nodes[r as usize].aabb);
+            match (kl, kr) {
+                (Some(a), Some(b)) => {
+                    if b < a {
+                        stack.push((l, a));
+                        stack.push((r, b));
+                    } else {
+                        stack.push((r, b));
+                        stack.push((l, a));
+                    }
+                }
+                (Some(a), None) => stack.push((l, a)),
+                (None, Some(b)) => stack.push((r, b)),
+                (None, None) => {}
+            }
+        }
+    }
+
     fn allocate(&mut self) -> u32 {
         if self.free == NULL {
             self.nodes.push(Node {
