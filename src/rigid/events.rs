@@ -113,29 +113,48 @@ impl<R: Real> RigidSystem<R> {
     /// merge finds the differences.
     pub(crate) fn record_contact_events(&mut self, old: &[Contact<R>]) {
         let mut found = Vec::new();
-        let mut before = distinct_pairs(old).peekable();
-        let mut after = distinct_pairs(&self.contacts).peekable();
-        loop {
-            let ended = match (before.peek(), after.peek()) {
-                (None, None) => break,
-                (Some(p), Some(q)) if p == q => {
-                    before.next();
-                    after.next();
-                    continue;
-                }
-                (Some(p), Some(q)) => p < q,
-                (Some(_), None) => true,
-                (None, Some(_)) => false,
-            };
-            if ended {
-                found.extend(before.next().map(|p| (EventKind::ContactEnd, p)));
-            } else {
-                found.extend(after.next().map(|q| (EventKind::ContactBegin, q)));
-            }
-        }
-        drop(after);
+        sorted_difference(
+            distinct_pairs(old),
+            distinct_pairs(&self.contacts),
+            |pair, began| {
+                let kind = if began {
+                    EventKind::ContactBegin
+                } else {
+                    EventKind::ContactEnd
+                };
+                found.push((kind, pair));
+            },
+        );
         for (kind, (a, b)) in found {
             self.push_pair_event(kind, a, b);
+        }
+    }
+}
+
+/// Walks two ascending lists without repeats in one merge: `changed(item, true)` for each
+/// item of `after` missing from `before` (it began), `changed(item, false)` for each item of
+/// `before` missing from `after` (it ended), in ascending order.
+pub(super) fn sorted_difference<T: Ord + Copy>(
+    before: impl Iterator<Item = T>,
+    after: impl Iterator<Item = T>,
+    mut changed: impl FnMut(T, bool),
+) {
+    let (mut before, mut after) = (before.peekable(), after.peekable());
+    loop {
+        let began = match (before.peek(), after.peek()) {
+            (None, None) => break,
+            (Some(p), Some(q)) if p == q => {
+                before.next();
+                after.next();
+                continue;
+            }
+            (Some(p), Some(q)) => q < p,
+            (Some(_), None) => false,
+            (None, Some(_)) => true,
+        };
+        let item = if began { after.next() } else { before.next() };
+        if let Some(item) = item {
+            changed(item, began);
         }
     }
 }

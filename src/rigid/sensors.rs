@@ -12,7 +12,7 @@
 //! restore.
 
 use super::collide::for_each_manifold;
-use super::events::EventKind;
+use super::events::{EventKind, sorted_difference};
 use super::system::RigidSystem;
 use crate::math::Real;
 
@@ -57,23 +57,17 @@ impl<R: Real> RigidSystem<R> {
         now.sort_unstable();
         now.dedup();
         let before = core::mem::take(&mut self.sensor_overlaps);
-        let (mut i, mut j) = (0, 0);
-        while i < before.len() || j < now.len() {
-            match (before.get(i), now.get(j)) {
-                (Some(p), Some(q)) if p == q => {
-                    i += 1;
-                    j += 1;
-                }
-                (Some(&p), q) if q.is_none_or(|&q| p < q) => {
-                    self.push_pair_event(EventKind::SensorExit, p.0, p.1);
-                    i += 1;
-                }
-                (_, Some(&q)) => {
-                    self.push_pair_event(EventKind::SensorEnter, q.0, q.1);
-                    j += 1;
-                }
-                (_, None) => i += 1,
-            }
+        let mut found = Vec::new();
+        sorted_difference(before.into_iter(), now.iter().copied(), |pair, entered| {
+            let kind = if entered {
+                EventKind::SensorEnter
+            } else {
+                EventKind::SensorExit
+            };
+            found.push((kind, pair));
+        });
+        for (kind, (a, b)) in found {
+            self.push_pair_event(kind, a, b);
         }
         self.sensor_overlaps = now;
     }

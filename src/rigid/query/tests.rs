@@ -9,20 +9,23 @@ use crate::rigid::{BodyDesc, BodyKind, CollisionFilter, Part, RigidDesc, SolverS
 type F = Fx;
 
 /// 2⁻²⁰ m: the distance accuracy asked of a ray.
-const DISTANCE_TOLERANCE: f64 = 1.0 / 1048576.0;
+const DISTANCE_TOLERANCE: f64 = 1.0 / 1048576.0; // ok-det: f64 reference
 /// The normal accuracy asked of a ray.
-const NORMAL_TOLERANCE: f64 = 1e-5;
+const NORMAL_TOLERANCE: f64 = 1e-5; // ok-det: f64 reference
 
-fn v(x: f64, y: f64, z: f64) -> Vec3<F> {
+fn v(x: f64, y: f64, z: f64) -> Vec3<F> // ok-det: f64 reference
+{
     Vec3::from_f64(x, y, z)
 }
 
-fn fx(x: f64) -> F {
+fn fx(x: f64) -> F // ok-det: f64 reference
+{
     F::from_f64(x)
 }
 
 /// A unit quaternion for a rotation of `angle` rad about the normalised `axis`.
-fn rotation(axis: [f64; 3], angle: f64) -> Quat<F> {
+fn rotation(axis: [f64; 3], angle: f64) -> Quat<F> // ok-det: f64 reference
+{
     let n = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
     let (s, c) = (angle * 0.5).sin_cos();
     Quat::from_f64(c, s * axis[0] / n, s * axis[1] / n, s * axis[2] / n).normalize()
@@ -51,17 +54,20 @@ fn system(bodies: Vec<BodyDesc<F>>) -> RigidSystem<F> {
     .expect("a valid scene")
 }
 
-fn sphere(r: f64) -> Shape<F> {
+fn sphere(r: f64) -> Shape<F> // ok-det: f64 reference
+{
     Shape::Sphere { radius: fx(r) }
 }
 
-fn cuboid(x: f64, y: f64, z: f64) -> Shape<F> {
+fn cuboid(x: f64, y: f64, z: f64) -> Shape<F> // ok-det: f64 reference
+{
     Shape::Box {
         half_extents: v(x, y, z),
     }
 }
 
-fn capsule(r: f64, h: f64) -> Shape<F> {
+fn capsule(r: f64, h: f64) -> Shape<F> // ok-det: f64 reference
+{
     Shape::Capsule {
         radius: fx(r),
         half_height: fx(h),
@@ -77,12 +83,13 @@ fn ground() -> Shape<F> {
 
 // ---- f64 references -------------------------------------------------------------------
 
-type D3 = [f64; 3];
+type D3 = [f64; 3]; // ok-det: f64 reference
 
 fn sub(a: D3, b: D3) -> D3 {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
-fn dot(a: D3, b: D3) -> f64 {
+fn dot(a: D3, b: D3) -> f64 // ok-det: f64 reference
+{
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 fn cross(a: D3, b: D3) -> D3 {
@@ -92,7 +99,8 @@ fn cross(a: D3, b: D3) -> D3 {
         a[0] * b[1] - a[1] * b[0],
     ]
 }
-fn scale(a: D3, s: f64) -> D3 {
+fn scale(a: D3, s: f64) -> D3 // ok-det: f64 reference
+{
     [a[0] * s, a[1] * s, a[2] * s]
 }
 fn add(a: D3, b: D3) -> D3 {
@@ -103,18 +111,21 @@ fn unit(a: D3) -> D3 {
 }
 
 /// v rotated by the unit quaternion q = [w, x, y, z]: v + 2w(u×v) + 2u×(u×v).
-fn rotate(q: [f64; 4], v: D3) -> D3 {
+fn rotate(q: [f64; 4], v: D3) -> D3 // ok-det: f64 reference
+{
     let u = [q[1], q[2], q[3]];
     let t = scale(cross(u, v), 2.0);
     add(add(v, scale(t, q[0])), cross(u, t))
 }
 
-fn inverse_rotate(q: [f64; 4], v: D3) -> D3 {
+fn inverse_rotate(q: [f64; 4], v: D3) -> D3 // ok-det: f64 reference
+{
     rotate([q[0], -q[1], -q[2], -q[3]], v)
 }
 
 /// Ray o + t d (d unit) against the ball (c, r), from outside: (t, normal).
-fn ref_sphere(o: D3, d: D3, c: D3, r: f64) -> Option<(f64, D3)> {
+fn ref_sphere(o: D3, d: D3, c: D3, r: f64) -> Option<(f64, D3)> // ok-det: f64 reference
+{
     let m = sub(o, c);
     let b = dot(m, d);
     let k = dot(m, m) - r * r;
@@ -127,8 +138,9 @@ fn ref_sphere(o: D3, d: D3, c: D3, r: f64) -> Option<(f64, D3)> {
 }
 
 /// Ray in the box frame against |x_k| ≤ h_k from outside: (t, normal).
-fn ref_box(o: D3, d: D3, h: D3) -> Option<(f64, D3)> {
-    let (mut enter, mut exit, mut axis) = (f64::NEG_INFINITY, f64::INFINITY, 0);
+fn ref_box(o: D3, d: D3, h: D3) -> Option<(f64, D3)> // ok-det: f64 reference
+{
+    let (mut enter, mut exit, mut axis) = (f64::NEG_INFINITY, f64::INFINITY, 0); // ok-det: f64 reference
     for k in 0..3 {
         let t1 = (-h[k] - o[k]) / d[k];
         let t2 = (h[k] - o[k]) / d[k];
@@ -148,8 +160,9 @@ fn ref_box(o: D3, d: D3, h: D3) -> Option<(f64, D3)> {
 }
 
 /// Ray in the capsule frame (axis y) from outside: (t, normal).
-fn ref_capsule(o: D3, d: D3, r: f64, h: f64) -> Option<(f64, D3)> {
-    let mut best: Option<(f64, D3)> = None;
+fn ref_capsule(o: D3, d: D3, r: f64, h: f64) -> Option<(f64, D3)> // ok-det: f64 reference
+{
+    let mut best: Option<(f64, D3)> = None; // ok-det: f64 reference
     let a = d[0] * d[0] + d[2] * d[2];
     let b = o[0] * d[0] + o[2] * d[2];
     let k = o[0] * o[0] + o[2] * o[2] - r * r;
@@ -171,7 +184,8 @@ fn ref_capsule(o: D3, d: D3, r: f64, h: f64) -> Option<(f64, D3)> {
     best
 }
 
-fn assert_hit(hit: Option<RayHit<F>>, expected: (f64, D3), what: &str) {
+fn assert_hit(hit: Option<RayHit<F>>, expected: (f64, D3), what: &str) // ok-det: f64 reference
+{
     let hit = hit.unwrap_or_else(|| panic!("{what}: no hit, expected {expected:?}"));
     let t = hit.distance.to_f64();
     assert!(
@@ -299,16 +313,16 @@ fn rays_against_a_capsule_match_the_analytic_answer() {
 #[test]
 fn rays_against_a_compound_hit_its_nearest_part() {
     // Two balls of radius 0.5 at x = ±1 and a flat box between them, all on one body.
-    let part = |shape: Shape<F>, x: f64| Part {
+    let part = |shape: Shape<F>, translation: Vec3<F>| Part {
         rotation: Quat::IDENTITY,
-        translation: v(x, 0.0, 0.0),
+        translation,
         shape,
     };
     let compound = Shape::Compound {
         parts: vec![
-            part(sphere(0.5), -1.0),
-            part(sphere(0.5), 1.0),
-            part(cuboid(1.0, 0.1, 0.1), 0.0),
+            part(sphere(0.5), v(-1.0, 0.0, 0.0)),
+            part(sphere(0.5), v(1.0, 0.0, 0.0)),
+            part(cuboid(1.0, 0.1, 0.1), Vec3::ZERO),
         ],
     };
     let q = rotation([0.0, 1.0, 0.0], 0.4);
@@ -329,7 +343,7 @@ fn rays_against_a_compound_hit_its_nearest_part() {
         let (of, df, o, d) = rounded(o, d);
         let got = sys.cast_ray(of, df, fx(100.0), &QueryFilter::new());
         let (lo, ld) = (inverse_rotate(qf, sub(o, c)), inverse_rotate(qf, d));
-        let mut best: Option<(f64, D3)> = None;
+        let mut best: Option<(f64, D3)> = None; // ok-det: f64 reference
         for (t, shape) in &parts {
             let hit = match shape {
                 Shape::Sphere { radius } => ref_sphere(lo, ld, *t, radius.to_f64()),
@@ -555,7 +569,12 @@ fn filters_skip_masked_excluded_and_sensor_bodies() {
 
 /// The cast's distance must be the analytic one within 2⁻¹⁹ m (the advancement stops
 /// within 2⁻²⁰ m of touching, plus rounding).
-fn assert_cast(hit: Option<RayHit<F>>, distance: f64, normal: D3, what: &str) {
+fn assert_cast(
+    hit: Option<RayHit<F>>,
+    distance: f64, // ok-det: f64 reference
+    normal: D3,
+    what: &str,
+) {
     let hit = hit.unwrap_or_else(|| panic!("{what}: no hit"));
     let t = hit.distance.to_f64();
     assert!(
@@ -649,7 +668,7 @@ fn boxes_and_capsules_cast_onto_planes_boxes_and_spheres() {
     let f = QueryFilter::new();
     let plane = system(vec![fixed(ground(), Vec3::ZERO)]);
     // A box turned 45° about z: its lowest edge is √2·0.5 below its centre.
-    let q = rotation([0.0, 0.0, 1.0], core::f64::consts::FRAC_PI_4);
+    let q = rotation([0.0, 0.0, 1.0], core::f64::consts::FRAC_PI_4); // ok-det: f64 reference
     let hit = plane.cast_shape(
         &cuboid(0.5, 0.5, 0.5),
         v(0.0, 3.0, 0.0),
@@ -665,7 +684,7 @@ fn boxes_and_capsules_cast_onto_planes_boxes_and_spheres() {
         "turned box onto plane",
     );
     // A capsule lying along x (turned 90° about z), radius 0.3, onto a box top at y = 1.
-    let lying = rotation([0.0, 0.0, 1.0], core::f64::consts::FRAC_PI_2);
+    let lying = rotation([0.0, 0.0, 1.0], core::f64::consts::FRAC_PI_2); // ok-det: f64 reference
     let boxed = system(vec![fixed(cuboid(2.0, 1.0, 2.0), Vec3::ZERO)]);
     let hit = boxed.cast_shape(
         &capsule(0.3, 0.8),
@@ -736,7 +755,7 @@ fn overlap_and_closest_point_answer_each_shape() {
     ]);
     let h: Vec<Handle> = sys.handles().collect();
     let f = QueryFilter::new();
-    let at = |x: f64, y: f64, r: f64| sys.overlap(&sphere(r), v(x, y, 0.0), Quat::IDENTITY, &f);
+    let at = |x: f64, y: f64, r: f64| sys.overlap(&sphere(r), v(x, y, 0.0), Quat::IDENTITY, &f); // ok-det: f64 reference
     assert_eq!(at(0.0, 2.0, 0.1), vec![h[1]]);
     assert_eq!(at(0.0, 0.05, 0.1), vec![h[0]]);
     assert_eq!(at(1.5, 2.0, 0.5), Vec::<Handle>::new());
@@ -764,7 +783,8 @@ fn overlap_and_closest_point_answer_each_shape() {
 
 // ---- the tree ---------------------------------------------------------------------------
 
-fn random_box(rng: &mut Pcg32, extent: f64) -> Aabb<F> {
+fn random_box(rng: &mut Pcg32, extent: f64) -> Aabb<F> // ok-det: f64 reference
+{
     let c = Vec3::new(
         rng.range(fx(-extent), fx(extent)),
         rng.range(fx(-extent), fx(extent)),
@@ -804,9 +824,9 @@ fn the_tree_keeps_its_invariants_and_finds_every_overlap() {
         if round % 500 == 0 {
             let live = leaves.iter().flatten().count();
             assert_eq!(tree.validate(), live);
-            let bound = 2.0 * (live.max(2) as f64).log2() + 2.0;
+            let bound = 2.0 * (live.max(2) as f64).log2() + 2.0; // ok-det: f64 reference
             assert!(
-                f64::from(tree.height()) <= bound,
+                f64::from(tree.height()) <= bound, // ok-det: f64 reference
                 "height {} for {live}",
                 tree.height()
             );
@@ -1011,7 +1031,7 @@ fn balls_index_cost() {
         index += t1.elapsed();
         stages += t1 - t0;
     }
-    let per = |d: Duration| d.as_secs_f64() * 1e3 / f64::from(ticks);
+    let per = |d: Duration| d.as_secs_f64() * 1e3 / f64::from(ticks); // ok-det: f64 reference
     eprintln!(
         "balls, {ticks} steps: stages {:.3} ms/step, index update {:.3} ms/step ({:.2} %)",
         per(stages),
