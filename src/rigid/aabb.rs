@@ -1,5 +1,6 @@
 //! Axis-aligned bounding boxes of shapes, for the broadphase.
 
+use super::convex::{Convex, Rounded};
 use super::shape::Shape;
 use super::transform::Transform;
 use crate::math::{Fx, Real, Vec3};
@@ -68,6 +69,9 @@ impl<R: Real> Aabb<R> {
                 let axis = transform.rotation.cols[1].abs() * *half_height;
                 Some(around(axis + Vec3::splat(*radius)))
             }
+            Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::ConvexHull { .. } => {
+                Rounded::of(shape).map(|convex| Self::of_convex(&convex.core, transform))
+            }
             Shape::Plane { .. } => None,
             Shape::Compound { parts } => parts
                 .iter()
@@ -78,4 +82,29 @@ impl<R: Real> Aabb<R> {
                 .reduce(|a, b| a.union(&b)),
         }
     }
+
+    /// The bounding box of a convex core placed by `transform`, from its support points
+    /// along ±x, ±y, ±z (local directions Rᵀ e_k, the rows of R), grown by
+    /// 2⁻²⁰ m ([`SUPPORT_PAD_INVERSE`]) for the rounding of curved supports.
+    fn of_convex(core: &Convex<'_, R>, transform: &Transform<R>) -> Self {
+        let rows = transform.rotation.transpose().cols;
+        let pad = R::from_ratio(1, SUPPORT_PAD_INVERSE);
+        let mut min = [R::ZERO; 3];
+        let mut max = [R::ZERO; 3];
+        for (k, row) in rows.into_iter().enumerate() {
+            let high = transform.point(core.support(row)).to_array()[k];
+            let low = transform.point(core.support(-row)).to_array()[k];
+            min[k] = low - pad;
+            max[k] = high + pad;
+        }
+        Self {
+            min: Vec3::new(min[0], min[1], min[2]),
+            max: Vec3::new(max[0], max[1], max[2]),
+        }
+    }
 }
+
+/// 1/pad: the bounding box of a cylinder, cone or hull is grown by 2⁻²⁰ m so that the
+/// rounding of its support points (a unit vector times the radius) never leaves a point of
+/// the shape outside it.
+const SUPPORT_PAD_INVERSE: i64 = 1 << 20;

@@ -6,7 +6,7 @@ use super::desc::{BodyDesc, BodyKind, MAX_BODIES, MAX_SOLVER_SUBSTEPS, RigidDesc
 use super::mass::MassProperties;
 use super::shape::{Part, Shape};
 use super::system::RigidSystem;
-use crate::math::{Real, Vec3};
+use crate::math::{Quat, Real, Vec3};
 use crate::types::{SceneError, lattice_copies};
 
 /// The largest coordinate, size or speed a scene may use (m, m/s): far inside the range of
@@ -270,8 +270,8 @@ pub(crate) fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, Sc
                 "a dynamic body needs a positive mass (a positive density and a solid shape)",
             ));
         }
-        if let Shape::Compound { parts } = &mut shape {
-            recentre(parts, mass.centre);
+        if mass.centre != Vec3::ZERO {
+            shape = centred_on_mass(shape, mass.centre);
             position += orientation.rotate(mass.centre);
         }
     }
@@ -300,10 +300,27 @@ pub(crate) fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, Sc
     })
 }
 
-/// Moves every part by −`centre` so that the compound's centre of mass is the origin.
-fn recentre<R: Real>(parts: &mut [Part<R>], centre: Vec3<R>) {
-    for part in parts {
-        part.translation -= centre;
+/// `shape` moved by −`centre` (m) so that its centre of mass is the origin: every part of a
+/// compound moved, a hull's vertices moved, any other shape (a cone) made the one part of a
+/// compound placed at −`centre`.
+fn centred_on_mass<R: Real>(shape: Shape<R>, centre: Vec3<R>) -> Shape<R> {
+    match shape {
+        Shape::Compound { mut parts } => {
+            for part in &mut parts {
+                part.translation -= centre;
+            }
+            Shape::Compound { parts }
+        }
+        Shape::ConvexHull { hull } => Shape::ConvexHull {
+            hull: hull.translated(-centre),
+        },
+        other => Shape::Compound {
+            parts: vec![Part {
+                rotation: Quat::IDENTITY,
+                translation: -centre,
+                shape: other,
+            }],
+        },
     }
 }
 
@@ -341,6 +358,33 @@ fn check_shape<R: Real>(shape: &Shape<R>, kind: BodyKind) -> Result<(), SceneErr
             }
             Ok(())
         }
+        Shape::Cylinder {
+            radius,
+            half_height,
+        } => {
+            size("Cylinder.radius", *radius)?;
+            size("Cylinder.half_height", *half_height)
+        }
+        Shape::Cone {
+            radius,
+            half_height,
+        } => {
+            size("Cone.radius", *radius)?;
+            size("Cone.half_height", *half_height)
+        }
+        Shape::ConvexHull { hull } => {
+            match hull
+                .vertices()
+                .iter()
+                .position(|v| v.abs().max_component() > limit)
+            {
+                Some(k) => Err(SceneError::new(
+                    format!("ConvexHull.points[{k}]"),
+                    format!("components must be within ±{MAX_MAGNITUDE} m"),
+                )),
+                None => Ok(()),
+            }
+        }
         Shape::Plane { normal, offset } => {
             if kind != BodyKind::Static {
                 return Err(SceneError::new(
@@ -373,7 +417,7 @@ fn check_shape<R: Real>(shape: &Shape<R>, kind: BodyKind) -> Result<(), SceneErr
                 if matches!(part.shape, Shape::Compound { .. } | Shape::Plane { .. }) {
                     return Err(SceneError::new(
                         format!("{field}.shape"),
-                        "a part must be a sphere, a box or a capsule",
+                        "a part must be a sphere, box, capsule, cylinder, cone or convex hull",
                     ));
                 }
                 check_shape(&part.shape, kind).map_err(|e| e.within(&field))?;

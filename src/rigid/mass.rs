@@ -139,6 +139,26 @@ impl<R: Real> MassProperties<R> {
         Self::solid_box(density * volume, half_extents)
     }
 
+    /// Solid cylinder of radius r and half height h along y at density ρ (kg/m³):
+    /// m = ρ π r² (2h), moments as [`Self::solid_cylinder`].
+    pub fn cylinder_from_density(density: R, radius: R, half_height: R) -> Self {
+        let mass = density * R::PI * radius * radius * (half_height + half_height);
+        Self::solid_cylinder(mass, radius, half_height)
+    }
+
+    /// Solid cone of base radius r, base centred at (0, −h, 0) and apex at (0, h, 0), at
+    /// density ρ (kg/m³): m = ρ π r² H / 3 with H = 2h, moments as [`Self::solid_cone`],
+    /// centre of mass at (0, −h/2, 0) (a quarter of the height above the base).
+    pub fn cone_from_density(density: R, radius: R, half_height: R) -> Self {
+        let height = half_height + half_height;
+        let mass = density * R::PI * radius * radius * height / R::from_int(3);
+        let about_centre = Self::solid_cone(mass, radius, height);
+        Self {
+            centre: Vec3::new(R::ZERO, -half_height * R::HALF, R::ZERO),
+            ..about_centre
+        }
+    }
+
     /// The same body placed in a parent frame by `rotation` then `translation`: the centre
     /// becomes t + R c and the inertia R I Rᵀ (still about the centre of mass).
     pub fn transformed(self, rotation: Quat<R>, translation: Vec3<R>) -> Self {

@@ -12,7 +12,7 @@
 //! [`bodies`] structure-of-arrays storage · [`system`] the system and its step ·
 //! [`commands`] inputs · [`hashing`] canonical state · [`metrics`] reporting.
 //!
-//! Geometry: [`shape`] shapes · [`mass`] mass properties · [`transform`] placements ·
+//! Geometry: [`shape`] shapes · [`convex`] hulls and support mappings · [`mass`] mass properties · [`transform`] placements ·
 //! [`aabb`] bounding boxes · [`manifold`] contact manifolds · [`broadphase`] pairs ·
 //! [`narrowphase`] manifolds per shape pair.
 //!
@@ -36,6 +36,7 @@ pub(crate) mod build;
 mod collide;
 mod commands;
 pub(crate) mod contact;
+pub mod convex;
 pub mod desc;
 pub mod events;
 pub mod filter;

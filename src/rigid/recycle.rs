@@ -53,12 +53,22 @@ pub(crate) struct PairFrame<R: Real> {
 /// Whether the contacts of shapes `a` and `b` keep a [`PairFrame`]: both convex, neither a
 /// sphere (whose narrowphase costs less than the test) nor a plane (unbounded).
 pub(crate) fn recyclable<R: Real>(a: &Shape<R>, b: &Shape<R>) -> bool {
-    let costly = |s: &Shape<R>| matches!(s, Shape::Box { .. } | Shape::Capsule { .. });
+    let costly = |s: &Shape<R>| {
+        matches!(
+            s,
+            Shape::Box { .. }
+                | Shape::Capsule { .. }
+                | Shape::Cylinder { .. }
+                | Shape::Cone { .. }
+                | Shape::ConvexHull { .. }
+        )
+    };
     costly(a) && costly(b)
 }
 
 /// ρ², the square of the largest distance of a point of `shape` from its origin (m²), for
-/// the shapes [`recyclable`] admits: |h|² for a box, (h + r)² for a capsule.
+/// the shapes [`recyclable`] admits: |h|² for a box, (h + r)² for a capsule, r² + h² for a
+/// cylinder or a cone, the largest |v|² for a hull.
 fn reach_squared<R: Real>(shape: &Shape<R>) -> R {
     match *shape {
         Shape::Box { half_extents } => half_extents.length_squared(),
@@ -66,7 +76,18 @@ fn reach_squared<R: Real>(shape: &Shape<R>) -> R {
             radius,
             half_height,
         } => (radius + half_height) * (radius + half_height),
-        // Not reached: `recyclable` admits boxes and capsules only.
+        // The rim of a cap or base, the farthest points from the origin (a cone's apex is
+        // nearer, at h).
+        Shape::Cylinder {
+            radius,
+            half_height,
+        }
+        | Shape::Cone {
+            radius,
+            half_height,
+        } => radius * radius + half_height * half_height,
+        Shape::ConvexHull { ref hull } => hull.reach_squared(),
+        // Not reached: `recyclable` admits no other shape.
         _ => R::MAX,
     }
 }

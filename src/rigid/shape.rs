@@ -1,10 +1,14 @@
 //! Collision shapes and their mass properties at a given density.
 //!
 //! Each shape is described in its body's frame, centred on the origin; compounds place
-//! parts with a rotation and a translation. The capsule's axis is y.
+//! parts with a rotation and a translation. The axis of capsules, cylinders and cones is y.
+//! A dynamic body's origin is its centre of mass: when a shape's centre of mass is not its
+//! origin (a cone, most hulls, compounds), building the body moves the shape so that it is
+//! and moves the body's position by the same amount (see `build.rs`).
 
 use serde::{Deserialize, Serialize};
 
+use super::convex::ConvexHull;
 use super::mass::MassProperties;
 use crate::math::{Fx, Quat, Real, Vec3};
 
@@ -31,6 +35,19 @@ pub enum Shape<R: Real = Fx> {
     /// The points within `radius` (m) of the segment from (0, −h, 0) to (0, h, 0), h =
     /// `half_height` (m).
     Capsule { radius: R, half_height: R },
+    /// The solid cylinder of radius `radius` (m) whose axis runs from (0, −h, 0) to
+    /// (0, h, 0), h = `half_height` (m).
+    Cylinder { radius: R, half_height: R },
+    /// The solid cone with its base, a disc of radius `radius` (m), centred at (0, −h, 0)
+    /// and its apex at (0, h, 0), h = `half_height` (m). Its centre of mass is h/2 above
+    /// the base's centre, at (0, −h/2, 0).
+    Cone { radius: R, half_height: R },
+    /// The convex hull of a set of points (m), computed deterministically when the shape is
+    /// made (see [`ConvexHull::new`]); a scene writes `ConvexHull(points: [...])`.
+    ConvexHull {
+        #[serde(rename = "points")]
+        hull: ConvexHull<R>,
+    },
     /// The half-space n · x ≤ `offset` (m) below the plane with unit normal `normal`, for
     /// static ground and walls; it has no finite mass.
     Plane { normal: Vec3<R>, offset: R },
@@ -50,6 +67,15 @@ impl<R: Real> Shape<R> {
                 radius,
                 half_height,
             } => MassProperties::solid_capsule(density, *radius, *half_height),
+            Self::Cylinder {
+                radius,
+                half_height,
+            } => MassProperties::cylinder_from_density(density, *radius, *half_height),
+            Self::Cone {
+                radius,
+                half_height,
+            } => MassProperties::cone_from_density(density, *radius, *half_height),
+            Self::ConvexHull { hull } => hull.mass_properties(density),
             Self::Plane { .. } => MassProperties::ZERO,
             Self::Compound { parts } => {
                 let placed: Vec<MassProperties<R>> = parts

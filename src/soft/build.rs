@@ -776,7 +776,10 @@ fn compile_collider<R: Real>(c: &ColliderDesc<R>) -> Result<Collider<R>, SceneEr
                 },
             }
         }
-        Shape::Compound { .. } => {
+        Shape::Compound { .. }
+        | Shape::Cylinder { .. }
+        | Shape::Cone { .. }
+        | Shape::ConvexHull { .. } => {
             return Err(SceneError::new(
                 "shape",
                 "a soft-body collider is a plane, a sphere, a box or a capsule",

@@ -1,8 +1,9 @@
-//! Rigid bodies as shaded boxes, balls and capsules; planes as the ground.
+//! Rigid bodies as shaded boxes, balls and capsules, cylinders, cones and hulls as shaded
+//! polygons; planes as the ground.
 
 use super::colour::{GROUND, STATIC, body_colour, id_colour};
 use super::draw_list::{Figure, Layer, Paint, Primitive};
-use super::geometry::{Pose, dot, normalize, scale};
+use super::geometry::{P3, Pose, dot, normalize, scale};
 use fixstep::math::Real;
 use fixstep::rigid::{BodyKind, RigidSystem, Shape};
 
@@ -93,6 +94,50 @@ fn draw_shape<R: Real>(
                 layer,
             );
         }
+        Shape::Cylinder {
+            radius,
+            half_height,
+        } => {
+            let (r, h) = (radius.to_f64(), half_height.to_f64());
+            let bottom = circle(r, -h);
+            let top = circle(r, h);
+            let mut faces: Vec<Vec<P3>> = (0..SIDES)
+                .map(|k| {
+                    let next = (k + 1) % SIDES;
+                    vec![bottom[k], bottom[next], top[next], top[k]]
+                })
+                .collect();
+            faces.push(top.clone());
+            faces.push(bottom.iter().rev().copied().collect());
+            push_faces(&faces, pose, colour, layer, out);
+        }
+        Shape::Cone {
+            radius,
+            half_height,
+        } => {
+            let (r, h) = (radius.to_f64(), half_height.to_f64());
+            let base = circle(r, -h);
+            let apex = [0.0, h, 0.0];
+            let mut faces: Vec<Vec<P3>> = (0..SIDES)
+                .map(|k| vec![base[k], base[(k + 1) % SIDES], apex])
+                .collect();
+            faces.push(base.iter().rev().copied().collect());
+            push_faces(&faces, pose, colour, layer, out);
+        }
+        Shape::ConvexHull { hull } => {
+            let vertices: Vec<P3> = hull.vertices().iter().map(|v| v.to_f64()).collect();
+            let faces: Vec<Vec<P3>> = hull
+                .faces()
+                .iter()
+                .map(|face| {
+                    hull.face_indices(face)
+                        .iter()
+                        .map(|&i| vertices[usize::from(i)])
+                        .collect()
+                })
+                .collect();
+            push_faces(&faces, pose, colour, layer, out);
+        }
         // The half-space n · x ≤ offset in the body frame is n_w · x ≤ offset + n_w · t in
         // the world, with n_w = R n.
         Shape::Plane { normal, offset } => {
@@ -124,5 +169,39 @@ fn draw_shape<R: Real>(
                 );
             }
         }
+    }
+}
+
+/// Sides of the polygon that stands for a cylinder's or cone's circle.
+const SIDES: usize = 24;
+
+/// The circle of radius `radius` (m) in the plane y = `y`, as [`SIDES`] points
+/// counter-clockwise seen from +y.
+fn circle(radius: f64, y: f64) -> Vec<P3> {
+    (0..SIDES)
+        .map(|k| {
+            let angle = std::f64::consts::TAU * k as f64 / SIDES as f64;
+            [radius * angle.cos(), y, -radius * angle.sin()]
+        })
+        .collect()
+}
+
+/// Appends each face (corners in the body frame, counter-clockwise seen from outside)
+/// placed at `pose`, as a shaded polygon.
+fn push_faces(
+    faces: &[Vec<P3>],
+    pose: &Pose,
+    colour: [u8; 3],
+    layer: Layer,
+    out: &mut Vec<Primitive>,
+) {
+    for face in faces {
+        out.push(Primitive {
+            figure: Figure::Polygon {
+                corners: face.iter().map(|&c| pose.point(c)).collect(),
+            },
+            paint: Paint::Rgb(colour),
+            layer,
+        });
     }
 }

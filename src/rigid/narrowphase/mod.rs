@@ -53,6 +53,7 @@ mod box_box;
 mod capsule_box;
 mod capsule_capsule;
 mod clip;
+mod convex_pair;
 mod plane;
 mod segments;
 mod sphere_box;
@@ -194,6 +195,8 @@ pub fn collide<R: Real>(
         )
         .flipped(),
         (Shape::Compound { .. }, _) | (_, Shape::Compound { .. }) => Manifold::EMPTY,
+        // Every other pair has a cylinder, a cone or a hull.
+        _ => convex_pair::convex_pair(a, xf_a, b, xf_b, margin),
     }
 }
 
@@ -211,6 +214,9 @@ fn plane_against<R: Real>(
             half_height,
         } => plane::plane_capsule(plane, &capsule_segment(*half_height, xf), *radius, margin),
         Shape::Box { half_extents } => plane::plane_box(plane, *half_extents, xf, margin),
+        Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::ConvexHull { .. } => {
+            convex_pair::plane_convex(plane, shape, xf, margin)
+        }
         Shape::Plane { .. } | Shape::Compound { .. } => Manifold::EMPTY,
     }
 }

@@ -103,6 +103,9 @@ fn project_convex<R: Real>(shape: &Shape<R>, xf: &Transform<R>, p: Vec3<R>) -> P
                 outside(p - n * s, s)
             }
         }
+        Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::ConvexHull { .. } => {
+            outside(p, R::MAX)
+        }
         Shape::Compound { .. } => outside(p, R::MAX),
     }
 }

@@ -274,6 +274,7 @@ pub(super) fn ray_shape<R: Real>(
             radius,
             half_height,
         } => local_to_world(xf, ray_capsule(*radius, *half_height, &ray.local(xf))),
+        Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::ConvexHull { .. } => None,
         Shape::Plane { normal, offset } => {
             let n = xf.vector(*normal);
             ray_plane(n, *offset + n.dot(xf.translation), ray)
