@@ -35,6 +35,12 @@ pub enum Shape<R: Real = Fx> {
     /// The points within `radius` (m) of the segment from (0, −h, 0) to (0, h, 0), h =
     /// `half_height` (m).
     Capsule { radius: R, half_height: R },
+    /// The half-space n · x ≤ `offset` (m) below the plane with unit normal `normal`, for
+    /// static ground and walls; it has no finite mass.
+    Plane { normal: Vec3<R>, offset: R },
+    /// Rigidly joined parts.
+    Compound { parts: Vec<Part<R>> },
+    // Variants are appended, never inserted: replays encode the variant's index.
     /// The solid cylinder of radius `radius` (m) whose axis runs from (0, −h, 0) to
     /// (0, h, 0), h = `half_height` (m).
     Cylinder { radius: R, half_height: R },
@@ -48,11 +54,6 @@ pub enum Shape<R: Real = Fx> {
         #[serde(rename = "points")]
         hull: ConvexHull<R>,
     },
-    /// The half-space n · x ≤ `offset` (m) below the plane with unit normal `normal`, for
-    /// static ground and walls; it has no finite mass.
-    Plane { normal: Vec3<R>, offset: R },
-    /// Rigidly joined parts.
-    Compound { parts: Vec<Part<R>> },
 }
 
 impl<R: Real> Shape<R> {
