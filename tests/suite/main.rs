@@ -30,6 +30,7 @@ mod queries;
 mod replay_committed;
 mod replay_snapshot;
 mod rigid_broadphase;
+mod rigid_ccd;
 mod rigid_events;
 mod rigid_friction;
 mod rigid_gyroscopic;
