@@ -261,7 +261,10 @@ fn a_scene_with_a_flat_hull_is_refused_with_file_line_and_reason() {
     assert!(e.contains("x.ron"), "{e}");
     // ron places the error at the end of the list it could not turn into a hull.
     assert!(e.contains("line 3"), "{e}");
-    assert!(e.contains("the points span no volume: the points lie in one plane"), "{e}");
+    assert!(
+        e.contains("the points span no volume: the points lie in one plane"),
+        "{e}"
+    );
 }
 
 /// A random cloud: up to 80 points on a few scales, with exact duplicates and a fraction
