@@ -34,6 +34,7 @@ mod rigid_ccd;
 mod rigid_events;
 mod rigid_friction;
 mod rigid_gyroscopic;
+mod rigid_hull;
 mod rigid_joints;
 mod rigid_mass;
 mod rigid_narrowphase;

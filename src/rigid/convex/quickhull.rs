@@ -100,34 +100,39 @@ fn canonical_order<R: Real>(points: &[Vec3<R>]) -> Vec<Vec3<R>> {
     sorted
 }
 
-/// |v| computed after scaling v by 2⁸ up to four times until its largest component is at
-/// least 2⁻⁸, so that a short vector's square does not round away (m⁰ in the scaled units).
+/// |v| computed after doubling v until its largest component is at least ½ (at most 31
+/// times, exact in fixed point), so that the square of a short vector keeps its digits: in
+/// I32F32 |v|² of a vector of order 2⁻⁸ would otherwise keep only 16 bits (scaled units).
 fn careful_length<R: Real>(v: Vec3<R>) -> R {
-    let (scaled, steps) = scaled_up(v);
-    let mut length = scaled.length();
-    for _ in 0..steps {
-        length = length.mul_pow2_recip(8);
+    let (scaled, doublings) = scaled_up(v);
+    let length = scaled.length();
+    if doublings == 0 {
+        length
+    } else {
+        length.mul_pow2_recip(doublings)
     }
-    length
 }
 
-/// The unit vector along v (scaled up first as in [`careful_length`]), `None` for zero.
+/// The unit vector along v, v/|v| after the doubling of [`careful_length`], each component
+/// clamped to [−1, 1] (|v| may round an ulp short, and an axis then comes out exact);
+/// `None` for zero.
 fn careful_unit<R: Real>(v: Vec3<R>) -> Option<Vec3<R>> {
-    scaled_up(v).0.try_normalize().map(|(unit, _)| unit)
+    let scaled = scaled_up(v).0;
+    let length = scaled.length();
+    let unit = |x: R| (x / length).clamp(-R::ONE, R::ONE);
+    (length > R::ZERO).then(|| Vec3::new(unit(scaled.x), unit(scaled.y), unit(scaled.z)))
 }
 
-/// v · 2^(8k) for the smallest k ≤ 4 that makes the largest component at least 2⁻⁸, and k.
+/// v · 2ᵏ for the smallest k ≤ 31 that makes the largest component at least ½, and k.
 fn scaled_up<R: Real>(v: Vec3<R>) -> (Vec3<R>, u32) {
-    let small = R::from_ratio(1, 256);
-    let up = R::from_int(256);
     let mut scaled = v;
-    for steps in 0..4 {
-        if scaled.abs().max_component() >= small {
-            return (scaled, steps);
+    for doublings in 0..31 {
+        if scaled.abs().max_component() >= R::HALF {
+            return (scaled, doublings);
         }
-        scaled *= up;
+        scaled *= R::TWO;
     }
-    (scaled, 4)
+    (scaled, 31)
 }
 
 /// A triangle of the hull under construction.
