@@ -59,7 +59,7 @@ mod segments;
 mod sphere_box;
 mod sphere_capsule;
 mod sphere_sphere;
-mod tolerance;
+pub(crate) mod tolerance;
 
 pub(crate) use self::box_box::{BoxPair, contact as box_box_contact, separating_axes_batch};
 use self::plane::WorldPlane;
