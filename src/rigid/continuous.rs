@@ -85,7 +85,7 @@ fn core_fraction<R: Real>() -> R {
 /// hull: about its origin (its centre of mass once in a dynamic body), the nearest face
 /// offset, 0 when the origin is outside or the hull has no faces. `None` for a plane or a
 /// compound.
-pub(crate) fn core_of<R: Real>(shape: &Shape<R>) -> Option<(Vec3<R>, R)> {
+fn core_of<R: Real>(shape: &Shape<R>) -> Option<(Vec3<R>, R)> {
     let centred = |radius: R| Some((Vec3::ZERO, radius));
     match shape {
         Shape::Sphere { radius } | Shape::Capsule { radius, .. } => centred(*radius),
@@ -103,10 +103,17 @@ pub(crate) fn core_of<R: Real>(shape: &Shape<R>) -> Option<(Vec3<R>, R)> {
             let (r, h) = (*radius, *half_height);
             // r + 2h > 0: a checked cone has positive sizes.
             let side = (R::from_int(3) * r * h) / (R::TWO * (r + R::TWO * h));
-            Some((Vec3::new(R::ZERO, -h * R::HALF, R::ZERO), side.min(h * R::HALF)))
+            Some((
+                Vec3::new(R::ZERO, -h * R::HALF, R::ZERO),
+                side.min(h * R::HALF),
+            ))
         }
         Shape::ConvexHull { hull } => {
-            let nearest = hull.faces().iter().map(|f| f.offset).reduce(|a, b| a.min(b));
+            let nearest = hull
+                .faces()
+                .iter()
+                .map(|f| f.offset)
+                .reduce(|a, b| a.min(b));
             centred(nearest.unwrap_or(R::ZERO).max(R::ZERO))
         }
         Shape::Plane { .. } | Shape::Compound { .. } => None,
