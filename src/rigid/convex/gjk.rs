@@ -137,6 +137,8 @@ impl<R: Real> Simplex<R> {
 /// algorithm and its bounds.
 ///
 /// [`Convex::Point`]: super::support::Convex::Point
+// The shape queries' entry point; the narrowphase uses `gjk_simplex` for EPA's start.
+#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) fn gjk<R: Real>(
     a: &Rounded<R>,
     xf_a: &Transform<R>,
@@ -298,7 +300,7 @@ fn power_of_two_scale<R: Real>(x: R, low: R) -> R {
 
 /// `direction` scaled by a power of two to a largest component in [1/2, 1) (unchanged when
 /// zero).
-fn sized<R: Real>(direction: Vec3<R>) -> Vec3<R> {
+pub(crate) fn sized<R: Real>(direction: Vec3<R>) -> Vec3<R> {
     direction * power_of_two_scale(direction.abs().max_component(), R::HALF)
 }
 
