@@ -62,6 +62,7 @@ mod system;
 pub mod transform;
 
 pub use aabb::Aabb;
+pub use convex::{ConvexHull, HullError};
 pub use desc::{BodyDesc, BodyKind, Grid, RigidDesc, SolverSettings};
 pub use events::{Event, EventKind};
 pub use filter::{CollisionFilter, QueryFilter};

@@ -2,6 +2,7 @@
 //! integer, so the presets are the same bits on every machine.
 
 use fixstep::math::{Quat, Real, Vec3};
+use fixstep::rigid::ConvexHull;
 use fixstep::rigid::Material;
 use fixstep::rigid::Shape;
 use fixstep::rigid::{BodyDesc, BodyKind, Grid, RigidDesc, SolverSettings};
@@ -248,8 +249,9 @@ pub fn spinner<R: Real>() -> RigidDesc<R> {
 
 /// The rigid part of the showcase, 10 m behind the particles (z = −10): a stack of four unit
 /// cubes, three bouncy balls (e = 0.6) dropped on and beside it, a capsule tumbling down
-/// from above, and a dumbbell (a compound of two balls on a bar) landing on one end, all on
-/// the ground plane y ≤ 0.
+/// from above, a dumbbell (a compound of two balls on a bar) landing on one end, a barrel
+/// (a cylinder on its side) rolling in from the right and a cut gem (a convex hull) tumbling
+/// down on the left, all on the ground plane y ≤ 0.
 pub fn showcase<R: Real>() -> RigidDesc<R> {
     use fixstep::rigid::Part;
     let z = -R::from_int(10);
@@ -299,9 +301,58 @@ pub fn showcase<R: Real>() -> RigidDesc<R> {
         Vec3::new(-R::from_int(3), R::TWO, z),
     );
     dumbbell.orientation = Quat::from_axis_angle(Vec3::Z, ratio(1, 2));
+    // The barrel's axis along z; rolling without slipping, ω_z = −v_x / r.
+    let mut barrel = BodyDesc::new(
+        Shape::Cylinder {
+            radius: ratio(2, 5),
+            half_height: ratio(1, 2),
+        },
+        Vec3::new(R::from_int(6), ratio(2, 5), z),
+    );
+    barrel.orientation = Quat::from_axis_angle(Vec3::X, R::FRAC_PI_2);
+    barrel.velocity = Vec3::new(-R::TWO, R::ZERO, R::ZERO);
+    barrel.angular_velocity = Vec3::new(R::ZERO, R::ZERO, R::from_int(5));
+    let mut gem = BodyDesc::new(
+        Shape::ConvexHull {
+            hull: ConvexHull::new(&gem_points()).expect("the gem's points span a volume"),
+        },
+        Vec3::new(-R::from_int(5), R::from_int(3), z),
+    );
+    gem.orientation = Quat::from_axis_angle(Vec3::new(R::ONE, R::ONE, R::ZERO), R::ONE);
+    gem.angular_velocity = Vec3::new(R::ONE, R::ZERO, R::TWO);
     RigidDesc {
-        bodies: vec![ground(), stack, balls, capsule, dumbbell],
+        bodies: vec![ground(), stack, balls, capsule, dumbbell, barrel, gem],
         solver: SolverSettings::default(),
         ..RigidDesc::default()
     }
+}
+
+/// A brilliant-cut gem about 0.8 m across: an octagonal table at y = 0.25, an octagonal
+/// girdle of radius 0.4 at y = 0 and the culet (a point) at y = −0.45, in metres.
+fn gem_points<R: Real>() -> Vec<Vec3<R>> {
+    // cos and sin of k·45°, k = 0..8, to three decimals.
+    const RING: [(i64, i64); 8] = [
+        (1000, 0),
+        (707, 707),
+        (0, 1000),
+        (-707, 707),
+        (-1000, 0),
+        (-707, -707),
+        (0, -1000),
+        (707, -707),
+    ];
+    let ring = |radius: i64, y: i64| {
+        RING.iter().map(move |&(c, s)| {
+            Vec3::new(
+                R::from_ratio(c * radius, 1_000_000),
+                R::from_ratio(y, 1000),
+                R::from_ratio(s * radius, 1_000_000),
+            )
+        })
+    };
+    let culet = Vec3::new(R::ZERO, R::from_ratio(-450, 1000), R::ZERO);
+    ring(250, 250)
+        .chain(ring(400, 0))
+        .chain(std::iter::once(culet))
+        .collect()
 }
