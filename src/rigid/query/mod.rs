@@ -11,15 +11,20 @@
 //!
 //! # Files
 //!
-//! [`ray`] rays against shapes · [`shape_cast`] swept shapes · [`overlap`] shared points ·
-//! [`point`] closest points · [`parts`] a compound's parts · [`tree`] the dynamic AABB
-//! tree · [`index`] the tree kept current by the step.
+//! [`ray`] rays against shapes · [`ray_round`] rays against cylinders and cones ·
+//! [`ray_hull`] rays against convex hulls · [`shape_cast`] swept shapes · [`overlap`]
+//! shared points · [`point`] closest points · [`point_hull`] closest points of hulls ·
+//! [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
+//! kept current by the step.
 
 mod index;
 mod overlap;
 mod parts;
 mod point;
+mod point_hull;
 mod ray;
+mod ray_hull;
+mod ray_round;
 mod shape_cast;
 #[cfg(test)]
 mod tests;

@@ -1,6 +1,8 @@
 //! Queries against analytic answers computed in `f64`, edge cases, filters, the tree's
 //! invariants, and the tree against brute force.
 
+mod convex_shapes;
+
 use super::tree::AabbTree;
 use super::*;
 use crate::math::{Pcg32, Quat};
