@@ -22,7 +22,11 @@
 //! filter and the sensor flag); the bodies whose filter or sensor flag is not the default
 //! are listed, by index in ascending order, in [`Addition::RigidBodyFlags`], which is never
 //! empty and never names a body that does not exist. A scene with spawn templates adds
-//! [`Addition::RigidTemplates`]: its body and joint templates, never both empty.
+//! [`Addition::RigidTemplates`]: its body and joint templates, never both empty, the body
+//! templates as state version 5 wrote them ([`TemplateFields`]: all but the bullet flag).
+//! A scene with bullets adds [`Addition::RigidBullets`]: the indices, each list ascending,
+//! of the bullet bodies and of the bullet templates, never both empty and never naming one
+//! that does not exist.
 
 use serde::{Deserialize, Serialize};
 
@@ -85,7 +89,62 @@ enum Addition<R: Real> {
     /// The bodies with a filter or a sensor flag other than the default.
     RigidBodyFlags(Vec<BodyFlags>),
     /// The rigid bodies' spawn templates, when there are any.
-    RigidTemplates(Vec<BodyTemplate<R>>, Vec<JointTemplate<R>>),
+    RigidTemplates(Vec<TemplateFields<R>>, Vec<JointTemplate<R>>),
+    /// The bullet bodies and the bullet templates, by index, when there are any.
+    RigidBullets(Vec<u32>, Vec<u32>),
+}
+
+/// [`BodyTemplate`]'s fields as state version 5 wrote them, in that order: all but the
+/// bullet flag.
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct TemplateFields<R: Real> {
+    kind: BodyKind,
+    shape: Shape<R>,
+    density: R,
+    material: Material<R>,
+    linear_damping: R,
+    angular_damping: R,
+    filter: CollisionFilter,
+    sensor: bool,
+}
+
+impl<R: Real> TemplateFields<R> {
+    fn of(t: &BodyTemplate<R>) -> Self {
+        Self {
+            kind: t.kind,
+            shape: t.shape.clone(),
+            density: t.density,
+            material: t.material,
+            linear_damping: t.linear_damping,
+            angular_damping: t.angular_damping,
+            filter: t.filter,
+            sensor: t.sensor,
+        }
+    }
+
+    /// The template, not a bullet.
+    fn into_template(self) -> BodyTemplate<R> {
+        let mut t = BodyTemplate::new(self.shape);
+        t.kind = self.kind;
+        t.density = self.density;
+        t.material = self.material;
+        t.linear_damping = self.linear_damping;
+        t.angular_damping = self.angular_damping;
+        t.filter = self.filter;
+        t.sensor = self.sensor;
+        t
+    }
+}
+
+/// The indices of the items that are bullets, ascending.
+fn bullet_indices<T>(items: &[T], bullet: impl Fn(&T) -> bool) -> Vec<u32> {
+    items
+        .iter()
+        .enumerate()
+        .filter(|(_, item)| bullet(item))
+        .map(|(k, _)| k as u32)
+        .collect()
 }
 
 /// The collision filter and sensor flag of body description `body`.
@@ -174,6 +233,7 @@ impl<R: Real> Addition<R> {
             Self::RigidRecycle(_) => 5,
             Self::RigidBodyFlags(_) => 6,
             Self::RigidTemplates(..) => 7,
+            Self::RigidBullets(..) => 8,
         }
     }
 }
@@ -338,9 +398,14 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
         }
         if !rigid.templates.is_empty() || !rigid.joint_templates.is_empty() {
             additions.push(Addition::RigidTemplates(
-                rigid.templates.clone(),
+                rigid.templates.iter().map(TemplateFields::of).collect(),
                 rigid.joint_templates.clone(),
             ));
+        }
+        let bodies = bullet_indices(&rigid.bodies, |b| b.bullet);
+        let templates = bullet_indices(&rigid.templates, |t| t.bullet);
+        if !bodies.is_empty() || !templates.is_empty() {
+            additions.push(Addition::RigidBullets(bodies, templates));
         }
     }
     if !additions.is_empty() {
@@ -451,8 +516,36 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                 if bodies.is_empty() && joints.is_empty() {
                     return not_canonical("empty lists of spawn templates");
                 }
-                rigid.templates = bodies;
+                rigid.templates = bodies
+                    .into_iter()
+                    .map(TemplateFields::into_template)
+                    .collect();
                 rigid.joint_templates = joints;
+            }
+            Addition::RigidBullets(bodies, templates) => {
+                let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
+                let Some(rigid) = &mut scene.rigid else {
+                    return not_canonical("bullets without rigid bodies");
+                };
+                if bodies.is_empty() && templates.is_empty() {
+                    return not_canonical("empty lists of bullets");
+                }
+                let ascending = |list: &[u32]| list.windows(2).all(|w| w[0] < w[1]);
+                if !ascending(&bodies) || !ascending(&templates) {
+                    return not_canonical("bullets out of order or repeated");
+                }
+                for k in bodies {
+                    let Some(body) = rigid.bodies.get_mut(k as usize) else {
+                        return not_canonical("a bullet body that does not exist");
+                    };
+                    body.bullet = true;
+                }
+                for k in templates {
+                    let Some(template) = rigid.templates.get_mut(k as usize) else {
+                        return not_canonical("a bullet template that does not exist");
+                    };
+                    template.bullet = true;
+                }
             }
         }
     }
@@ -556,6 +649,27 @@ mod tests {
         assert!(rejection(&zero).contains("of 0"));
         let alone = with_additions(&scene, &[Addition::RigidRecycle(Fx::ONE)]);
         assert!(rejection(&alone).contains("without rigid bodies"));
+    }
+
+    #[test]
+    fn bullets_survive_the_round_trip_and_cost_nothing_when_absent() {
+        let mut scene = builtin_scene::<Fx>("shooter").expect("a built-in scene");
+        let plain = encode_scene(&scene).expect("encodes");
+        let rigid = scene.rigid.as_mut().expect("rigid bodies");
+        rigid.bodies[2].bullet = true;
+        rigid.templates[0].bullet = true;
+        let bullets = encode_scene(&scene).expect("encodes");
+        assert_eq!(decode_scene(&bullets).expect("decodes"), scene);
+        // One more addition: its variant index, then two lists of one index each.
+        assert_eq!(bullets.len(), plain.len() + 4 + (8 + 4) * 2);
+        let alone = with_additions(&scene, &[Addition::RigidBullets(vec![2], vec![])]);
+        assert!(rejection(&alone).contains("without rigid bodies"));
+        let rigid = RigidFields::of(scene.rigid.as_ref().expect("rigid bodies"));
+        let missing = with_additions(
+            &scene,
+            &[Addition::Rigid(rigid), Addition::RigidBullets(vec![99], vec![])],
+        );
+        assert!(rejection(&missing).contains("does not exist"));
     }
 
     #[test]

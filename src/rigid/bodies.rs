@@ -36,6 +36,7 @@ pub(crate) struct NewBody<R: Real> {
     pub angular_damping: R,
     pub filter: CollisionFilter,
     pub sensor: bool,
+    pub bullet: bool,
 }
 
 /// Every body attribute, one array each, indexed by slot.
@@ -83,6 +84,9 @@ pub(crate) struct Bodies<R: Real> {
     pub filter: Vec<CollisionFilter>,
     /// Whether the body is a sensor (detects overlaps, exerts and feels no contact force).
     pub sensor: Vec<bool>,
+    /// Whether the body is a bullet (swept against dynamic bodies too:
+    /// [`super::continuous`]).
+    pub bullet: Vec<bool>,
 
     // Sleep.
     /// Seconds the body has been slower than the sleep speeds.
@@ -188,6 +192,7 @@ impl<R: Real> Bodies<R> {
         self.angular_damping[i] = body.angular_damping;
         self.filter[i] = body.filter;
         self.sensor[i] = body.sensor;
+        self.bullet[i] = body.bullet;
         self.sleep_time[i] = R::ZERO;
         self.asleep[i] = false;
         self.island[i] = i as u32;
@@ -230,6 +235,7 @@ impl<R: Real> Bodies<R> {
         self.angular_damping.push(R::ZERO);
         self.filter.push(CollisionFilter::ALL);
         self.sensor.push(false);
+        self.bullet.push(false);
         self.sleep_time.push(R::ZERO);
         self.asleep.push(false);
         self.island.push(self.alive.len() as u32);

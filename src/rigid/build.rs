@@ -60,6 +60,7 @@ impl<R: Real> RigidSystem<R> {
             b.angular_damping.len(),
             b.filter.len(),
             b.sensor.len(),
+            b.bullet.len(),
             b.sleep_time.len(),
             b.asleep.len(),
             b.island.len(),
@@ -297,6 +298,7 @@ pub(crate) fn compile_body<R: Real>(body: &BodyDesc<R>) -> Result<NewBody<R>, Sc
         angular_damping: body.angular_damping,
         filter: body.filter,
         sensor: body.sensor,
+        bullet: body.bullet,
     })
 }
 

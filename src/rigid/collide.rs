@@ -373,7 +373,7 @@ pub(super) fn for_each_manifold<R: Real>(
 }
 
 /// Calls `f(part, shape, placement)` for each convex part of `shape` placed by `xf`.
-fn for_each_part<R: Real>(
+pub(super) fn for_each_part<R: Real>(
     shape: &Shape<R>,
     xf: &Transform<R>,
     mut f: impl FnMut(u16, &Shape<R>, &Transform<R>),

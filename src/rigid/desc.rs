@@ -109,6 +109,12 @@ pub struct BodyDesc<R: Real = Fx> {
     /// exerts no contact force and feels none. Default false (and not written out).
     #[serde(default, skip_serializing_if = "core::ops::Not::not")]
     pub sensor: bool,
+    /// A bullet is a dynamic body whose fast motion is also swept against the other
+    /// dynamic bodies (those that are not bullets), not only against static and kinematic
+    /// ones ([continuous collision](super::continuous)). Default false (and not written
+    /// out).
+    #[serde(default, skip_serializing_if = "core::ops::Not::not")]
+    pub bullet: bool,
 }
 
 fn identity<R: Real>() -> Quat<R> {
@@ -137,6 +143,7 @@ impl<R: Real> BodyDesc<R> {
             grid: None,
             filter: CollisionFilter::ALL,
             sensor: false,
+            bullet: false,
         }
     }
 

@@ -22,7 +22,7 @@
 //!    pair in ascending order: lower slot, higher slot (`u32`). A scene without sensors
 //!    hashes as it did before sensors existed.
 //!
-//! Collision filters and sensor flags, like shapes, do not change during a run and are
+//! Collision filters, sensor flags and bullet flags, like shapes, do not change during a run and are
 //! part of the scene (or of the template a spawn names). Shapes do not change during a run and are part of the scene, which replays check by
 //! its own hash; they are not hashed here.
 

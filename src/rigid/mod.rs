@@ -23,7 +23,7 @@
 //!
 //! Dynamics: [`collide`] stage 1 · [`contact`] persistent contacts · [`sleep`] islands,
 //! waking and sleeping · [`solve`] stage 3 · [`solver`] the soft-step sequential-impulse
-//! solver · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with
+//! solver · [`continuous`] the last stage, fast bodies swept against thin ones · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with
 //! gyroscopic torque.
 //!
 //! Queries: [`query`] rays, shape casts, overlaps and closest points, over a bounding-volume
@@ -36,6 +36,7 @@ pub(crate) mod build;
 mod collide;
 mod commands;
 pub(crate) mod contact;
+pub(crate) mod continuous;
 pub mod convex;
 pub mod desc;
 pub mod events;

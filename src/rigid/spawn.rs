@@ -4,7 +4,7 @@
 //! [`JointTemplate`]s, during a run.
 //!
 //! A template holds what does not change from one copy to the next (shape, density,
-//! material, filter, sensor flag; joint kind, collision, break thresholds); the command
+//! material, filter, sensor and bullet flags; joint kind, collision, break thresholds); the command
 //! gives the rest (pose and velocities; bodies, anchors and axis). A spawned body takes the
 //! lowest dead slot, or a new slot at the end, so its handle is a function of the state and
 //! the same on every peer; [`RigidSystem::spawned`] lists the handles a tick created. A
@@ -52,6 +52,9 @@ pub struct BodyTemplate<R: Real = Fx> {
     /// Whether the body is a sensor. Default false.
     #[serde(default)]
     pub sensor: bool,
+    /// Whether the body is a bullet ([`BodyDesc::bullet`]). Default false.
+    #[serde(default)]
+    pub bullet: bool,
 }
 
 fn default_density<R: Real>() -> R {
@@ -70,6 +73,7 @@ impl<R: Real> BodyTemplate<R> {
             angular_damping: R::ZERO,
             filter: CollisionFilter::ALL,
             sensor: false,
+            bullet: false,
         }
     }
 
@@ -92,6 +96,7 @@ impl<R: Real> BodyTemplate<R> {
         desc.angular_damping = self.angular_damping;
         desc.filter = self.filter;
         desc.sensor = self.sensor;
+        desc.bullet = self.bullet;
         desc
     }
 }

@@ -31,9 +31,13 @@ use crate::types::Handle;
 /// 3. **solve** ([`solver`](super::solver)): soft-constraint sequential impulses over
 ///    joints and contacts with substeps, restitution, impulses stored, overloaded joints
 ///    broken ([`joints::breaking`](super::joints::breaking));
-/// 4. **sleep** ([`sleep`](super::sleep)): islands that stayed slow long enough.
+/// 4. **sleep** ([`sleep`](super::sleep)): islands that stayed slow long enough;
+/// 5. **continuous** ([`continuous`](super::continuous)), once the query index is up to
+///    date: fast bodies that would pass through a thin body are moved back to their time of
+///    impact.
 ///
-/// When every body sleeps or is static, a step does nothing.
+/// When every body sleeps or is static, a step does nothing but bring the query index up to
+/// date.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub struct RigidSystem<R: Real = Fx> {
@@ -154,13 +158,17 @@ impl<R: Real> RigidSystem<R> {
     /// Advances the bodies by `dt` seconds under `gravity` (m/s²), then brings the query
     /// index up to date.
     pub fn step(&mut self, dt: R, gravity: Vec3<R>) {
-        if (0..self.bodies.len()).any(|i| self.bodies.is_moving(i)) {
+        let moving = (0..self.bodies.len()).any(|i| self.bodies.is_moving(i));
+        if moving {
             self.collide();
             self.wake_touched();
             self.solve(dt, gravity);
             self.update_sleep(dt);
         }
         self.update_query_index();
+        if moving {
+            self.solve_continuous();
+        }
     }
 
     /// Clears the per-tick force and torque accumulators.

@@ -204,7 +204,12 @@ fn info_counts_bodies_and_joints() {
             .expect("UTF-8"),
     ]);
     assert_eq!(run.code, 0, "{run:?}");
-    assert!(run.stdout.contains("rigid bodies: 55\n"), "{}", run.stdout);
+    assert!(
+        run.stdout
+            .contains("rigid bodies: 55 (4 sphere, 14 box, 36 capsule, 1 plane)\n"),
+        "{}",
+        run.stdout
+    );
     assert!(
         run.stdout
             .contains("joints: 40 (24 cone-twist, 16 hinge)\n"),

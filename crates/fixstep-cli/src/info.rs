@@ -9,7 +9,7 @@ use fixstep::math::{Fx, Real};
 use fixstep::particles::{ForceDesc, ParticlesDesc};
 use fixstep::replay::format::FORMAT_VERSION;
 use fixstep::replay::{Replay, StateVersionCheck};
-use fixstep::rigid::JointsDesc;
+use fixstep::rigid::{JointsDesc, RigidDesc, Shape};
 use fixstep::soft::{SoftDesc, SoftModel, SoftShape};
 use fixstep::types::lattice_copies as copies;
 use fixstep::world::STATE_VERSION;
@@ -47,7 +47,7 @@ pub fn info(path: &Path) -> Result<Status, String> {
             scene
                 .rigid
                 .as_ref()
-                .map_or_else(|| "none".to_owned(), |r| r.body_count().to_string())
+                .map_or_else(|| "none".to_owned(), rigid_summary)
         ),
         format!(
             "joints: {}",
@@ -96,6 +96,51 @@ pub fn info(path: &Path) -> Result<Status, String> {
         print_line(&line)?;
     }
     Ok(Status::Ok)
+}
+
+/// Body count (lattice copies counted) and the count of each shape, in declaration order,
+/// with the vertices and faces of the convex hulls among them.
+fn rigid_summary(desc: &RigidDesc<Fx>) -> String {
+    const KINDS: [&str; 8] = [
+        "sphere",
+        "box",
+        "capsule",
+        "plane",
+        "compound",
+        "cylinder",
+        "cone",
+        "convex hull",
+    ];
+    let mut counts = [0u64; 8];
+    let (mut vertices, mut faces) = (0u64, 0u64);
+    for body in &desc.bodies {
+        let copies = copies(body.grid.map(|g| g.count));
+        let kind = match &body.shape {
+            Shape::Sphere { .. } => 0,
+            Shape::Box { .. } => 1,
+            Shape::Capsule { .. } => 2,
+            Shape::Plane { .. } => 3,
+            Shape::Compound { .. } => 4,
+            Shape::Cylinder { .. } => 5,
+            Shape::Cone { .. } => 6,
+            Shape::ConvexHull { hull } => {
+                vertices = vertices.saturating_add(hull.vertices().len() as u64 * copies);
+                faces = faces.saturating_add(hull.faces().len() as u64 * copies);
+                7
+            }
+        };
+        counts[kind] = counts[kind].saturating_add(copies);
+    }
+    let kinds: Vec<String> = KINDS
+        .iter()
+        .zip(counts)
+        .filter(|&(_, n)| n > 0)
+        .map(|(kind, n)| match *kind {
+            "convex hull" => format!("{n} {kind} ({vertices} vertices, {faces} faces)"),
+            _ => format!("{n} {kind}"),
+        })
+        .collect();
+    format!("{} ({})", desc.body_count(), kinds.join(", "))
 }
 
 /// Joint count (lattice copies counted) and the count of each kind, in declaration order.

@@ -4,6 +4,7 @@
 //! [`builtin_scene`] builds one by name; [`BUILTIN_SCENES`] lists them. The modules hold the
 //! pieces the scenes are made of, per subsystem, for tests and benchmarks to reuse.
 
+pub mod bullets;
 pub mod fluid;
 pub mod game;
 pub mod joints;
@@ -16,7 +17,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 22] = [
+pub const BUILTIN_SCENES: [(&str, &str); 23] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -37,6 +38,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 22] = [
     (
         "shooter",
         "a player fires spawned projectiles, on their own layer, at a wall of boxes; a sensor plate counts arrivals; the aim is a ray query",
+    ),
+    (
+        "bullets",
+        "fast steel balls at a thin static wall, and bullets at a stack of boxes: continuous collision keeps them from passing through",
     ),
     (
         "balls",
@@ -140,6 +145,10 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.rigid = Some(game::shooter());
             scene.script = game::shooter_script();
             scene.ticks = 600;
+        }
+        "bullets" => {
+            scene.rigid = Some(bullets::bullets());
+            scene.ticks = 240;
         }
         "balls" => {
             scene.rigid = Some(rigid::balls(16));

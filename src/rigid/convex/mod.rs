@@ -6,8 +6,11 @@
 //!
 //! [`hull`] the hull's data (vertices, faces, edges) and its checks · `quickhull` the
 //! deterministic construction from points · `hull_mass` its volume integrals · [`support`]
-//! support points of every convex shape.
+//! support points of every convex shape · `gjk` distance and closest points of two cores · `epa`
+//! penetration normal and depth of two overlapping cores.
 
+pub(crate) mod epa;
+pub(crate) mod gjk;
 pub mod hull;
 mod hull_mass;
 mod quickhull;

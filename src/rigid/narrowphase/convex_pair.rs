@@ -1,29 +1,261 @@
-//! Contacts of any pair with a cylinder, a cone or a hull (placeholder until GJK, EPA and
-//! face clipping land).
+//! Contacts of any pair with a cylinder, a cone or a hull (and of a plane with one).
+//!
+//! Normal and depth come from the cores: GJK while they are apart (separation
+//! s = d − r_A − r_B), EPA when they overlap (s = −depth − r_A − r_B), and, when EPA finds
+//! no polytope, the gap of the two support points along the line of centres. Points come
+//! from the supporting features of both cores along ±n (`supporting_face.rs`), as in Jolt:
+//!
+//! - one of them a face well aligned with the normal (n · m ≥ 1/2, the better one, A on
+//!   ties): the reference; the other feature is clipped against its side planes
+//!   (`face_clip.rs`) and every clipped point p gets its own core gap t, the distance
+//!   along n from p to the reference plane m · x = m · r₀: t = m · (p − r₀) / (m · n) for
+//!   A's face, the same with −m for B's;
+//! - two segments (cylinder sides, capsules): B's segment clipped to the slab of A's and
+//!   each end's gap to A's segment;
+//! - otherwise one point, GJK's closest points (or the features' points when EPA ran).
+//!
+//! Each point lies midway between the surfaces (cores grown by their radii) with
+//! separation t − r_A − r_B; points beyond `margin` are dropped and more than four reduced
+//! to four with the deepest and the widest spread (`clip::four_of`). Ids: bit 31 when B's
+//! face is the reference; a kept vertex has the incident shape's vertex id; a clipped
+//! crossing has bit 29, the reference side's id in bits 14–27 and the incident edge's in
+//! bits 0–13 (see `face_clip.rs`).
 
+use super::clip::four_of;
+use super::face_clip::{Clipped, clip_to_face, clip_to_slab};
 use super::plane::WorldPlane;
-use crate::math::Real;
-use crate::rigid::manifold::Manifold;
+use super::supporting_face::{Feature, supporting_feature};
+use super::tolerance::unit;
+use crate::math::{Real, Vec3};
+use crate::rigid::convex::Rounded;
+use crate::rigid::convex::epa::epa;
+use crate::rigid::convex::gjk::{CorePair, gjk_simplex};
+use crate::rigid::manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
 use crate::rigid::shape::Shape;
 use crate::rigid::transform::Transform;
 
-/// The manifold of two convex shapes, at least one a cylinder, a cone or a hull.
-pub(super) fn convex_pair<R: Real>(
-    _a: &Shape<R>,
-    _xf_a: &Transform<R>,
-    _b: &Shape<R>,
-    _xf_b: &Transform<R>,
-    _margin: R,
-) -> Manifold<R> {
-    Manifold::EMPTY
+/// Slack (m) within which points count as equally deep when four are chosen: 2⁻¹² m.
+fn depth_slack<R: Real>() -> R {
+    R::from_ratio(1, 1 << 12)
 }
 
-/// The manifold of a plane (A) and a cylinder, a cone or a hull (B).
-pub(super) fn plane_convex<R: Real>(
-    _plane: &WorldPlane<R>,
-    _shape: &Shape<R>,
-    _xf: &Transform<R>,
-    _margin: R,
+/// The manifold of two convex shapes, at least one a cylinder, a cone or a hull (see the
+/// [module](self)); empty beyond `margin` (m) or for a shape that is not convex.
+pub(super) fn convex_pair<R: Real>(
+    a: &Shape<R>,
+    xf_a: &Transform<R>,
+    b: &Shape<R>,
+    xf_b: &Transform<R>,
+    margin: R,
 ) -> Manifold<R> {
-    Manifold::EMPTY
+    let (Some(ra), Some(rb)) = (Rounded::of(a), Rounded::of(b)) else {
+        return Manifold::EMPTY;
+    };
+    let pair = CorePair::new(&ra, xf_a, &rb, xf_b);
+    let (g, simplex) = gjk_simplex(&pair);
+    let (normal, gap) = if g.overlap {
+        match epa(&pair, &simplex) {
+            Some(p) => (p.normal, -p.depth),
+            None => {
+                let n = unit(xf_b.translation - xf_a.translation).map_or(Vec3::Y, |(n, _)| n);
+                (n, -n.dot(pair.support(n).w))
+            }
+        }
+    } else {
+        (g.normal, g.distance)
+    };
+    let radii = ra.radius + rb.radius;
+    if gap - radii > margin {
+        return Manifold::EMPTY;
+    }
+    let fa = supporting_feature(&ra.core, xf_a, normal);
+    let fb = supporting_feature(&rb.core, xf_b, -normal);
+    let mut points = Candidates::new(normal, ra.radius, rb.radius);
+    let align_a = face_alignment(&fa, normal);
+    let align_b = face_alignment(&fb, -normal);
+    if align_a.max(align_b) >= R::HALF {
+        let b_reference = align_b > align_a;
+        let (reference, incident, towards) = if b_reference {
+            (&fb, &fa, -normal)
+        } else {
+            (&fa, &fb, normal)
+        };
+        let clipped = clip_to_face(reference, incident);
+        let r0 = reference.points[0];
+        let m = reference.normal;
+        let denominator = m.dot(towards);
+        for (p, id) in clipped.iter() {
+            let t = m.dot(p - r0) / denominator;
+            let flag = if b_reference { 1 << 31 } else { 0 };
+            if b_reference {
+                points.add(p, p + normal * t, t, id | flag);
+            } else {
+                points.add(p - normal * t, p, t, id);
+            }
+        }
+    } else if fa.count == 2 && fb.count == 2 {
+        let (a0, a1) = (fa.points[0], fa.points[1]);
+        let clipped: Clipped<R> = clip_to_slab(&fa, &fb);
+        let e = a1 - a0;
+        let ee = e.length_squared();
+        if ee > super::tolerance::tiny_length_squared() {
+            for (p, id) in clipped.iter() {
+                let s = (e.dot(p - a0) / ee).clamp(R::ZERO, R::ONE);
+                let on_a = a0 + e * s;
+                points.add(on_a, p, normal.dot(p - on_a), id);
+            }
+        }
+    }
+    if points.count == 0 {
+        let (core_a, core_b) = if g.overlap {
+            let p = if fa.count == 1 {
+                fa.points[0]
+            } else if fb.count == 1 {
+                fb.points[0] - normal * gap
+            } else {
+                centroid(&fa)
+            };
+            (p, p + normal * gap)
+        } else {
+            (g.point_a, g.point_b)
+        };
+        points.add(core_a, core_b, gap, 0);
+    }
+    points.manifold(margin)
+}
+
+/// n · m for a face (3 or more points) with outward normal m seen along `towards`; −1 for
+/// an edge or a vertex.
+fn face_alignment<R: Real>(feature: &Feature<R>, towards: Vec3<R>) -> R {
+    if feature.count >= 3 {
+        feature.normal.dot(towards)
+    } else {
+        -R::ONE
+    }
+}
+
+/// The mean of a feature's points, m.
+fn centroid<R: Real>(feature: &Feature<R>) -> Vec3<R> {
+    let sum = feature.points().iter().fold(Vec3::ZERO, |s, &p| s + p);
+    sum * (R::from_int(feature.count as i32)).recip()
+}
+
+/// Most contact candidates before the reduction to four.
+const MAX_CANDIDATES: usize = 2 * super::supporting_face::MAX_FACE_POINTS;
+
+/// Contact candidates: core points, gaps and ids, turned into manifold points.
+struct Candidates<R: Real> {
+    normal: Vec3<R>,
+    radius_a: R,
+    radius_b: R,
+    positions: [Vec3<R>; MAX_CANDIDATES],
+    separations: [R; MAX_CANDIDATES],
+    ids: [u32; MAX_CANDIDATES],
+    count: usize,
+}
+
+impl<R: Real> Candidates<R> {
+    fn new(normal: Vec3<R>, radius_a: R, radius_b: R) -> Self {
+        Self {
+            normal,
+            radius_a,
+            radius_b,
+            positions: [Vec3::ZERO; MAX_CANDIDATES],
+            separations: [R::ZERO; MAX_CANDIDATES],
+            ids: [0; MAX_CANDIDATES],
+            count: 0,
+        }
+    }
+
+    /// A candidate from the core points `core_a`, `core_b` with core gap `gap` (m): the
+    /// surfaces at core_a + r_A n and core_b − r_B n, the point midway, separation
+    /// gap − r_A − r_B.
+    fn add(&mut self, core_a: Vec3<R>, core_b: Vec3<R>, gap: R, id: u32) {
+        if self.count == MAX_CANDIDATES {
+            return;
+        }
+        let on_a = core_a + self.normal * self.radius_a;
+        let on_b = core_b - self.normal * self.radius_b;
+        self.positions[self.count] = (on_a + on_b) * R::HALF;
+        self.separations[self.count] = gap - self.radius_a - self.radius_b;
+        self.ids[self.count] = id;
+        self.count += 1;
+    }
+
+    /// The candidates within `margin`, reduced to four by [`four_of`] on the plane across
+    /// the normal when more.
+    fn manifold(&self, margin: R) -> Manifold<R> {
+        let mut manifold = Manifold {
+            normal: self.normal,
+            ..Manifold::EMPTY
+        };
+        let mut kept = [0usize; MAX_CANDIDATES];
+        let mut n = 0;
+        for i in 0..self.count {
+            if self.separations[i] <= margin {
+                kept[n] = i;
+                n += 1;
+            }
+        }
+        if n <= MAX_MANIFOLD_POINTS {
+            for &i in &kept[..n] {
+                manifold.push(self.point(i));
+            }
+            return manifold;
+        }
+        let t1 = self.normal.any_orthonormal();
+        let t2 = self.normal.cross(t1);
+        let mut local = [Vec3::ZERO; MAX_CANDIDATES];
+        let mut separations = [R::ZERO; MAX_CANDIDATES];
+        let mut ids = [0u32; MAX_CANDIDATES];
+        for (j, &i) in kept[..n].iter().enumerate() {
+            let p = self.positions[i];
+            local[j] = Vec3::new(p.dot(t1), p.dot(self.normal), p.dot(t2));
+            separations[j] = self.separations[i];
+            ids[j] = self.ids[i];
+        }
+        let chosen = four_of(
+            &local[..n],
+            &separations[..n],
+            &ids[..n],
+            depth_slack(),
+            0,
+            2,
+        );
+        for j in chosen {
+            manifold.push(self.point(kept[j]));
+        }
+        manifold
+    }
+
+    fn point(&self, i: usize) -> ManifoldPoint<R> {
+        ManifoldPoint {
+            point: self.positions[i],
+            separation: self.separations[i],
+            id: self.ids[i],
+        }
+    }
+}
+
+/// The manifold of a plane (A, outward normal n) and a cylinder, a cone or a hull (B): the
+/// supporting feature of B's core along −n, each point p with separation n · p − d − r_B,
+/// those within `margin` (m), at most four (the deepest and widest spread). Ids: B's
+/// feature ids.
+pub(super) fn plane_convex<R: Real>(
+    plane: &WorldPlane<R>,
+    shape: &Shape<R>,
+    xf: &Transform<R>,
+    margin: R,
+) -> Manifold<R> {
+    let Some(rounded) = Rounded::of(shape) else {
+        return Manifold::EMPTY;
+    };
+    let n = plane.normal;
+    let feature = supporting_feature(&rounded.core, xf, -n);
+    let mut points = Candidates::new(n, R::ZERO, rounded.radius);
+    for (&p, &id) in feature.points().iter().zip(&feature.ids) {
+        let gap = plane.distance(p);
+        points.add(p - n * gap, p, gap, id);
+    }
+    points.manifold(margin)
 }

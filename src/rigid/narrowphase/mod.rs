@@ -29,6 +29,7 @@
 //! | capsule–box | `capsule_box.rs` | 1, or 2 lying on a face |
 //! | box–box | `box_box.rs` (with `clip.rs`; separating axes in `box_box/axes.rs`, eight pairs at a time in `box_box/avx512.rs`; a face contact's points to the world frame in `box_box/world_points.rs`) | 1 to 4 |
 //! | plane–sphere, plane–capsule, plane–box | `plane.rs` | 1, 1–2, 1–4 |
+//! | any pair with a cylinder, a cone or a hull; plane against one | `convex_pair.rs` (GJK and EPA on the cores, supporting features in `supporting_face.rs`, clipped in `face_clip.rs`) | 1 to 4 |
 //!
 //! Shared helpers: `segments.rs` (closest points on segments), `clip.rs` (face clipping and
 //! the choice of four points), `tolerance.rs` (thresholds and guarded normalisation).
@@ -47,19 +48,23 @@
 //!   point (bits 2–4) and the box face or edge (bits 5 and up);
 //! - box–box, face contact: reference box, reference face, incident face, and the pair of
 //!   incident edges or reference sides meeting at the point (bits 0–12); edge contact: bit
-//!   13 with the two edges' indices.
+//!   13 with the two edges' indices;
+//! - pairs with a cylinder, a cone or a hull: see `convex_pair.rs` (the shapes' vertex ids
+//!   in `supporting_face.rs`, the cut points' in `face_clip.rs`).
 
 mod box_box;
 mod capsule_box;
 mod capsule_capsule;
 mod clip;
 mod convex_pair;
+mod face_clip;
 mod plane;
 mod segments;
 mod sphere_box;
 mod sphere_capsule;
 mod sphere_sphere;
-mod tolerance;
+mod supporting_face;
+pub(crate) mod tolerance;
 
 pub(crate) use self::box_box::{BoxPair, contact as box_box_contact, separating_axes_batch};
 use self::plane::WorldPlane;
@@ -82,8 +87,9 @@ fn capsule_segment<R: Real>(half_height: R, xf: &Transform<R>) -> Segment<R> {
 /// Contacts between two convex shapes or a convex shape and a plane, within `margin` (m,
 /// speculative distance: points whose separation ≤ margin are reported).
 ///
-/// Handles every pair of [`Shape::Sphere`], [`Shape::Box`] and [`Shape::Capsule`], and any
-/// of them against a [`Shape::Plane`] (as A or as B). Two planes give an empty manifold.
+/// Handles every pair of [`Shape::Sphere`], [`Shape::Box`], [`Shape::Capsule`],
+/// [`Shape::Cylinder`], [`Shape::Cone`] and [`Shape::ConvexHull`], and any of them against
+/// a [`Shape::Plane`] (as A or as B). Two planes give an empty manifold.
 /// [`Shape::Compound`] is not handled here and also gives an empty manifold: the caller
 /// iterates over the parts, placing each with [`Transform::compose`], and collides them
 /// one by one. `margin` is expected to be ≥ 0.

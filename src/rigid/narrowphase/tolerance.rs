@@ -11,7 +11,7 @@ use crate::math::{Real, Vec3};
 /// 2⁻¹² m ≈ 0.24 mm. Centres closer than this, or a sphere centre this close to a box
 /// surface, use the deep-penetration fallback.
 #[inline(always)]
-pub(super) fn tiny_length_squared<R: Real>() -> R {
+pub(crate) fn tiny_length_squared<R: Real>() -> R {
     R::from_ratio(1, 1 << 24)
 }
 
@@ -50,7 +50,7 @@ pub(super) fn min_span<R: Real>() -> R {
 /// few significant bits in fixed point (at |v| = 7 mm, I32F32 keeps it to 6·10⁻⁶), and the
 /// scaled one brings the unit vector back to about 10⁻⁹.
 #[inline]
-pub(super) fn unit_from_squared<R: Real>(v: Vec3<R>, length_squared: R) -> Option<(Vec3<R>, R)> {
+pub(crate) fn unit_from_squared<R: Real>(v: Vec3<R>, length_squared: R) -> Option<(Vec3<R>, R)> {
     if length_squared <= tiny_length_squared() {
         return None;
     }
@@ -69,7 +69,7 @@ pub(super) fn unit_from_squared<R: Real>(v: Vec3<R>, length_squared: R) -> Optio
 
 /// v / |v| and |v|, or `None` when |v|² ≤ [`tiny_length_squared`].
 #[inline]
-pub(super) fn unit<R: Real>(v: Vec3<R>) -> Option<(Vec3<R>, R)> {
+pub(crate) fn unit<R: Real>(v: Vec3<R>) -> Option<(Vec3<R>, R)> {
     unit_from_squared(v, v.length_squared())
 }
 

@@ -36,7 +36,7 @@ pub(crate) use self::index::QueryIndex;
 use self::overlap::shapes_overlap;
 use self::point::project_point;
 use self::ray::{BoxProbe, Crossing, Ray, ray_shape};
-use self::shape_cast::{cast_shape, cast_tolerance};
+pub(crate) use self::shape_cast::{CastHit, cast_shape, cast_tolerance};
 use super::aabb::Aabb;
 use super::filter::QueryFilter;
 use super::shape::Shape;
@@ -81,7 +81,7 @@ fn prune_pad<R: Real>() -> R {
 /// of two so that its largest component lies in [½, 2¹⁴): tiny and huge directions then
 /// normalise as precisely as unit ones, and |v|² never saturates. Each component is then
 /// divided by |v|.
-fn unit_direction<R: Real>(v: Vec3<R>) -> Option<Vec3<R>> {
+pub(crate) fn unit_direction<R: Real>(v: Vec3<R>) -> Option<Vec3<R>> {
     let largest = |v: Vec3<R>| v.abs().max_component();
     if largest(v) == R::ZERO {
         return None;

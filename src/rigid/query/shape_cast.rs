@@ -27,13 +27,13 @@ use crate::math::{Real, Vec3};
 pub(super) const MAX_ITERATIONS: usize = 64;
 
 /// The gap (m) at which a conservative advancement counts as touching: 2⁻²⁰ m ≈ 0.95 µm.
-pub(super) fn cast_tolerance<R: Real>() -> R {
+pub(crate) fn cast_tolerance<R: Real>() -> R {
     R::from_ratio(1, 1 << 20)
 }
 
 /// Where a cast shape first touches a target.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct CastHit<R: Real> {
+pub(crate) struct CastHit<R: Real> {
     /// Travel along the unit direction at impact, m.
     pub distance: R,
     /// The contact point, m (midway between the two surfaces).
@@ -45,7 +45,7 @@ pub(super) struct CastHit<R: Real> {
 /// The convex `cast` (sphere, box or capsule) placed by `start`, moved along unit
 /// `direction` by up to `max` (m), against `target` placed by `xf`: a compound answers for
 /// its nearest part (the first on ties), a plane for its half-space.
-pub(super) fn cast_shape<R: Real>(
+pub(crate) fn cast_shape<R: Real>(
     cast: &Shape<R>,
     start: &Transform<R>,
     direction: Vec3<R>,
