@@ -469,3 +469,41 @@ fn check_point(got: PointProjection<F>, distance: f64, point: D3, what: &str)
         );
     }
 }
+
+#[test]
+fn cylinders_cones_and_hulls_cast_onto_the_ground_and_overlap_a_box() {
+    let sys = system(vec![
+        fixed(ground(), Vec3::ZERO),
+        fixed(cuboid(0.5, 0.5, 0.5), v(5.0, 1.0, 0.0)),
+    ]);
+    let f = QueryFilter::new();
+    // Dropped from 3 m: the lowest point (−h for the cylinder and the cone, 0 for the
+    // tetrahedron) reaches the ground.
+    for (shape, bottom) in [
+        (cylinder(0.5, 0.75), 0.75),
+        (cone(0.5, 0.75), 0.75),
+        (tetra_hull(1.0), 0.0),
+    ] {
+        let hit = sys
+            .cast_shape(
+                &shape,
+                v(0.0, 3.0, 0.0),
+                Quat::IDENTITY,
+                v(0.0, -1.0, 0.0),
+                fx(10.0),
+                &f,
+            )
+            .unwrap_or_else(|| panic!("{shape:?} misses the ground"));
+        assert!(
+            (hit.distance.to_f64() - (3.0 - bottom)).abs() <= 2.0 * DISTANCE_TOLERANCE,
+            "{hit:?}"
+        );
+        assert!(
+            (hit.normal.to_f64()[1] - 1.0).abs() <= NORMAL_TOLERANCE,
+            "{hit:?}"
+        );
+    }
+    // And they overlap what they touch.
+    let over = sys.overlap(&cone(0.5, 0.75), v(4.2, 1.0, 0.0), Quat::IDENTITY, &f);
+    assert_eq!(over.len(), 1);
+}
