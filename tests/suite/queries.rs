@@ -5,6 +5,7 @@
 //! snapshot is restored.
 
 use fixstep::math::{Fx, Quat, Real, Vec3};
+use fixstep::rigid::convex::ConvexHull;
 use fixstep::rigid::{
     BodyDesc, BodyKind, CollisionFilter, Part, QueryFilter, RayHit, RigidDesc, Shape,
 };
@@ -18,7 +19,7 @@ type BodySpec = (u8, [i32; 3], [i32; 3], [i32; 3], i32, u8, bool, u32);
 
 fn body_spec() -> impl Strategy<Value = BodySpec> {
     (
-        0u8..5,
+        0u8..8,
         [1i32..9, 1i32..9, 1i32..9],
         [-32i32..32, -8i32..40, -32i32..32],
         [-3i32..4, -3i32..4, -3i32..4],
@@ -91,6 +92,28 @@ fn shape_of(kind: u8, s: [i32; 3]) -> Shape<Fx> {
                 },
             ],
         },
+        5 => Shape::Cylinder {
+            radius: eighth(s[0]),
+            half_height: eighth(s[1]),
+        },
+        6 => Shape::Cone {
+            radius: eighth(s[0]),
+            half_height: eighth(s[1]),
+        },
+        7 => {
+            let (a, b, c) = (eighth(s[0]), eighth(s[1]), eighth(s[2]));
+            let points = [
+                Vec3::new(a, Fx::ZERO, Fx::ZERO),
+                Vec3::new(-a, Fx::ZERO, Fx::ZERO),
+                Vec3::new(Fx::ZERO, b, Fx::ZERO),
+                Vec3::new(Fx::ZERO, -b, Fx::ZERO),
+                Vec3::new(Fx::ZERO, Fx::ZERO, c),
+                Vec3::new(Fx::ZERO, Fx::ZERO, -c),
+            ];
+            Shape::ConvexHull {
+                hull: ConvexHull::new(&points).expect("an octahedron"),
+            }
+        }
         _ => Shape::Box {
             half_extents: Vec3::new(eighth(4 * s[0]), eighth(s[1]), eighth(s[2])),
         },

@@ -11,15 +11,20 @@
 //!
 //! # Files
 //!
-//! [`ray`] rays against shapes · [`shape_cast`] swept shapes · [`overlap`] shared points ·
-//! [`point`] closest points · [`parts`] a compound's parts · [`tree`] the dynamic AABB
-//! tree · [`index`] the tree kept current by the step.
+//! [`ray`] rays against shapes · [`ray_round`] rays against cylinders and cones ·
+//! [`ray_hull`] rays against convex hulls · [`shape_cast`] swept shapes · [`overlap`]
+//! shared points · [`point`] closest points · [`point_hull`] closest points of hulls ·
+//! [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
+//! kept current by the step.
 
 mod index;
 mod overlap;
 mod parts;
 mod point;
+mod point_hull;
 mod ray;
+mod ray_hull;
+mod ray_round;
 mod shape_cast;
 #[cfg(test)]
 mod tests;
@@ -179,7 +184,7 @@ impl<R: Real> RigidSystem<R> {
         hits
     }
 
-    /// `shape` (a sphere, box or capsule) at `position` (m) and `orientation`, translated
+    /// `shape` (any convex shape: sphere, box, capsule, cylinder, cone or hull) at `position` (m) and `orientation`, translated
     /// along `direction` (normalised) by up to `max_distance` (m): the first accepted body
     /// it touches, ties to the lower handle. `distance` is the travel along the unit
     /// direction at impact (within 2⁻²⁰ m of touching: see `shape_cast.rs`), `point` the
@@ -196,10 +201,7 @@ impl<R: Real> RigidSystem<R> {
         max_distance: R,
         filter: &QueryFilter,
     ) -> Option<RayHit<R>> {
-        if !matches!(
-            shape,
-            Shape::Sphere { .. } | Shape::Box { .. } | Shape::Capsule { .. }
-        ) {
+        if matches!(shape, Shape::Plane { .. } | Shape::Compound { .. }) {
             return None;
         }
         let ray = self.query_ray(position, direction, max_distance)?;

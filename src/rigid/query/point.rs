@@ -3,6 +3,8 @@
 use super::super::shape::Shape;
 use super::super::transform::Transform;
 use super::parts::for_each_part;
+use super::point_hull::project_hull;
+use super::ray_round::{Slant, cone_contains, cylinder_contains};
 use crate::math::{Real, Vec3};
 
 /// The answer for one shape.
@@ -48,6 +50,9 @@ pub(super) fn project_point<R: Real>(
 /// - box (half extents h, box frame): q = p clamped to [−h, h]; inside when q = p, else q
 ///   at distance |p − q|;
 /// - capsule: the ball rule around the segment point (0, clamp(p_y, −h, h), 0);
+/// - cylinder (cylinder frame): inside when p_x² + p_z² ≤ r² and |p_y| ≤ h, else the point
+///   with y clamped to [−h, h] and (x, z) pulled in to radius r when farther out;
+/// - cone: [`project_cone`]; convex hull: [`project_hull`];
 /// - half-space n·x ≤ c: with s = n·p − c, inside when s ≤ 0, else p − s·n at distance s.
 fn project_convex<R: Real>(shape: &Shape<R>, xf: &Transform<R>, p: Vec3<R>) -> Projected<R> {
     let inside = Projected {
@@ -103,9 +108,63 @@ fn project_convex<R: Real>(shape: &Shape<R>, xf: &Transform<R>, p: Vec3<R>) -> P
                 outside(p - n * s, s)
             }
         }
-        Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::ConvexHull { .. } => {
-            outside(p, R::MAX)
+        Shape::Cylinder {
+            radius,
+            half_height,
+        } => {
+            let local = xf.inverse_point(p);
+            if cylinder_contains(*radius, *half_height, local) {
+                return inside;
+            }
+            let y = local.y.clamp(-*half_height, *half_height);
+            let level = Vec3::new(local.x, y, local.z);
+            let q = ball(Vec3::new(R::ZERO, y, R::ZERO), *radius, level).map_or(level, |b| b.0);
+            outside(xf.point(q), (local - q).length())
+        }
+        Shape::Cone {
+            radius,
+            half_height,
+        } => {
+            let local = xf.inverse_point(p);
+            match project_cone(*radius, *half_height, local) {
+                Some(q) => outside(xf.point(q), (local - q).length()),
+                None => inside,
+            }
+        }
+        Shape::ConvexHull { hull } => {
+            let local = xf.inverse_point(p);
+            match project_hull(hull, local) {
+                Some(q) => outside(xf.point(q), (local - q).length()),
+                None => inside,
+            }
         }
         Shape::Compound { .. } => outside(p, R::MAX),
     }
+}
+
+/// The point of the solid cone (base radius r at y = −h, apex (0, h, 0), m; cone frame)
+/// closest to `p`, or `None` when `p` is in it ([`cone_contains`]).
+///
+/// In the half-plane of p, at radius ρ = √(p_x² + p_z²) and height y, the cone is the
+/// triangle (0, −h), (r, −h), (0, h), and an outside point is nearest to one of the two
+/// edges it can see: the base (ρ clamped to [0, r], −h), and the slant from the apex
+/// (0, h) down along g = (sin α, −cos α) (the [`Slant`]) to the rim, at
+/// τ = (ρ, y − h)·g clamped to [0, L], L = r sin α + 2h cos α = √(r² + 4h²) the slant's
+/// length. The nearer wins (the base on ties), and is turned back into 3D along the
+/// radial direction (p_x, 0, p_z)/ρ (+x on the axis, where the point is on it anyway).
+pub(super) fn project_cone<R: Real>(radius: R, half_height: R, p: Vec3<R>) -> Option<Vec3<R>> {
+    let slant = Slant::of(radius, half_height)?;
+    if cone_contains(&slant, half_height, p) {
+        return None;
+    }
+    let (e, rho) = Vec3::new(p.x, R::ZERO, p.z)
+        .try_normalize()
+        .unwrap_or((Vec3::X, R::ZERO));
+    let base = (rho.clamp(R::ZERO, radius), -half_height);
+    let length = radius * slant.sin + (half_height + half_height) * slant.cos;
+    let tau = (rho * slant.sin - (p.y - half_height) * slant.cos).clamp(R::ZERO, length);
+    let side = (tau * slant.sin, half_height - tau * slant.cos);
+    let gap = |(r, y): (R, R)| (rho - r) * (rho - r) + (p.y - y) * (p.y - y);
+    let (r, y) = if gap(side) < gap(base) { side } else { base };
+    Some(Vec3::new(e.x * r, y, e.z * r))
 }

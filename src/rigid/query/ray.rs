@@ -14,6 +14,8 @@
 
 use super::super::shape::Shape;
 use super::super::transform::Transform;
+use super::ray_hull::ray_hull;
+use super::ray_round::{ray_cone, ray_cylinder};
 use crate::math::{Real, Vec3};
 
 /// A ray: origin (m), unit direction, and the farthest distance of interest (m).
@@ -259,8 +261,9 @@ pub(super) fn ray_reaches_box<R: Real>(
         .is_some_and(|s| s.exit >= R::ZERO && s.enter <= reach)
 }
 
-/// The ray against `shape` placed by `xf` (m): see the [module](self) for the answers. A
-/// compound answers for its nearest part (the first on ties); a plane body is the
+/// The ray against `shape` placed by `xf` (m): see the [module](self) for the answers
+/// (cylinders and cones: [`ray_round`](super::ray_round), hulls:
+/// [`ray_hull`](super::ray_hull)). A compound answers for its nearest part (the first on ties); a plane body is the
 /// half-space below its plane.
 pub(super) fn ray_shape<R: Real>(
     shape: &Shape<R>,
@@ -274,7 +277,15 @@ pub(super) fn ray_shape<R: Real>(
             radius,
             half_height,
         } => local_to_world(xf, ray_capsule(*radius, *half_height, &ray.local(xf))),
-        Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::ConvexHull { .. } => None,
+        Shape::Cylinder {
+            radius,
+            half_height,
+        } => local_to_world(xf, ray_cylinder(*radius, *half_height, &ray.local(xf))),
+        Shape::Cone {
+            radius,
+            half_height,
+        } => local_to_world(xf, ray_cone(*radius, *half_height, &ray.local(xf))),
+        Shape::ConvexHull { hull } => local_to_world(xf, ray_hull(hull, &ray.local(xf))),
         Shape::Plane { normal, offset } => {
             let n = xf.vector(*normal);
             ray_plane(n, *offset + n.dot(xf.translation), ray)

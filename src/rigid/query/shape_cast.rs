@@ -1,4 +1,4 @@
-//! Shape casts: a sphere, box or capsule translated along a unit direction d from a start
+//! Shape casts: a convex shape translated along a unit direction d from a start
 //! pose, against one body's shape: the first distance t (m) at which the two touch.
 //!
 //! A sphere against a sphere or a capsule is a ray against the target grown by the
@@ -42,7 +42,7 @@ pub(crate) struct CastHit<R: Real> {
     pub normal: Vec3<R>,
 }
 
-/// The convex `cast` (sphere, box or capsule) placed by `start`, moved along unit
+/// The convex `cast` (any shape but a plane or a compound) placed by `start`, moved along unit
 /// `direction` by up to `max` (m), against `target` placed by `xf`: a compound answers for
 /// its nearest part (the first on ties), a plane for its half-space.
 pub(crate) fn cast_shape<R: Real>(

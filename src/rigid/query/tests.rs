@@ -1,6 +1,8 @@
 //! Queries against analytic answers computed in `f64`, edge cases, filters, the tree's
 //! invariants, and the tree against brute force.
 
+mod convex_shapes;
+
 use super::tree::AabbTree;
 use super::*;
 use crate::math::{Pcg32, Quat};
@@ -856,7 +858,7 @@ fn random_scene(seed: u64, n: usize, kind: BodyKind) -> RigidSystem<F> {
     let mut bodies = vec![fixed(ground(), v(0.0, -10.0, 0.0))];
     for _ in 0..n {
         let size = |rng: &mut Pcg32| rng.range(fx(0.1), fx(1.0));
-        let shape = match rng.below(4) {
+        let shape = match rng.below(7) {
             0 => Shape::Sphere {
                 radius: size(&mut rng),
             },
@@ -867,6 +869,16 @@ fn random_scene(seed: u64, n: usize, kind: BodyKind) -> RigidSystem<F> {
                 radius: size(&mut rng),
                 half_height: size(&mut rng),
             },
+            3 => Shape::Cylinder {
+                radius: size(&mut rng),
+                half_height: size(&mut rng),
+            },
+            4 => Shape::Cone {
+                radius: size(&mut rng),
+                half_height: size(&mut rng),
+            },
+            // A hand-built hull has no mass properties here: static scenes only.
+            5 if kind == BodyKind::Static => convex_shapes::tetra_hull(1.0),
             _ => Shape::Compound {
                 parts: vec![
                     Part {
