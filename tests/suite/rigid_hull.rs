@@ -318,3 +318,60 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_dense_grid_on_a_cube_surface_is_still_eight_corners() {
+    // 10 × 10 points on each face (on edges and faces, mostly not corners), far from the
+    // origin: 600 points, of which 8 corners.
+    let mut points = Vec::new();
+    for k in 0..10 {
+        for l in 0..10 {
+            let (s, t) = (
+                f64::from(k) / 9.0 * 2.0 - 1.0,
+                f64::from(l) / 9.0 * 2.0 - 1.0,
+            );
+            for side in [-1.0, 1.0] {
+                points.push([side, s, t]);
+                points.push([s, side, t]);
+                points.push([s, t, side]);
+            }
+        }
+    }
+    let points: Vec<Vec3<Fx>> = points
+        .iter()
+        .map(|p| v(40_000.0 + 3.0 * p[0], -70_000.0 + 3.0 * p[1], 3.0 * p[2]))
+        .collect();
+    let hull = ConvexHull::new(&points).expect("a cube");
+    assert_eq!(
+        (
+            hull.vertices().len(),
+            hull.edges().len(),
+            hull.faces().len()
+        ),
+        (8, 12, 6)
+    );
+    assert_valid(&hull, &points, 1e-9);
+}
+
+#[test]
+fn the_largest_hull_keeps_every_point_of_a_sphere() {
+    // MAX_HULL_POINTS points of a Fibonacci sphere, every one a corner (about 30 ms with
+    // the test profile on the 2-core build machine).
+    let n = MAX_HULL_POINTS;
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let points: Vec<Vec3<Fx>> = (0..n)
+        .map(|i| {
+            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+            let r = (1.0 - y * y).sqrt();
+            let a = golden * i as f64;
+            v(r * a.cos() * 2.5, y * 2.5, r * a.sin() * 2.5)
+        })
+        .collect();
+    let start = std::time::Instant::now();
+    let hull = ConvexHull::new(&points).expect("a sphere");
+    let elapsed = start.elapsed();
+    println!("{n} points: {:?}", elapsed);
+    assert_eq!(hull.vertices().len(), n);
+    assert_eq!(hull.faces().len(), 2 * n - 4, "all triangles");
+    assert_valid(&hull, &points, 1e-9);
+}

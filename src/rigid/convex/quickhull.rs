@@ -38,7 +38,16 @@
 //! collected by a walk from its own face over visible neighbours, so they are connected;
 //! when rounding makes them anything else than a disc (their boundary not one simple loop),
 //! the eye is skipped rather than the surface broken: the result is always a closed
-//! surface with V − E + F = 2.
+//! surface with V − E + F = 2. Every face's offset is the largest n · v over all vertices,
+//! so each face plane supports the hull whatever the rounding of its normal.
+//!
+//! # Limit
+//!
+//! A face normal comes from a cross product rounded to one ulp u of the format (2⁻³² in
+//! the scaled units for I32F32), so a sliver face of height h has its normal tilted by up
+//! to about u/h radians. Where h falls below about u/ε (0.4% of s for I32F32) that tilt can
+//! exceed the tolerance, and a point the construction judged inside (a point of a slab
+//! a few ε thick, say) may lie up to (u/h)·s outside the hull; the surface stays valid.
 
 use super::hull::{ConvexHull, HullError, HullFace, MAX_HULL_POINTS};
 use crate::math::{Real, Vec3};
@@ -571,8 +580,9 @@ impl<R: Real> Round<R> {
 
     /// The finished hull, once every point of `points` is a corner: faces rotated to start
     /// at their lowest index and sorted, normals by Newell's rule n ∝ Σ (qᵢ − q₀) × (qᵢ₊₁ − q₀)
-    /// in the scaled units, and offset d = max over the face's vertices of n · v (m), so no
-    /// vertex is above its own face's plane.
+    /// in the scaled units, and offset d = max over all vertices of n · v (m): each face's
+    /// plane supports the hull, no vertex above it, even where rounding tilts the normal of
+    /// a sliver (a face's own vertices then lie a little below its plane).
     fn into_hull(self, points: &[Vec3<R>]) -> ConvexHull<R> {
         let mut loops: Vec<Vec<u32>> = self
             .faces
@@ -597,9 +607,9 @@ impl<R: Real> Round<R> {
                 sum + (qi - q0).cross(qj - q0)
             });
             let normal = careful_unit(area).unwrap_or(Vec3::ZERO);
-            let offset = face
+            let offset = points
                 .iter()
-                .map(|&p| normal.dot_fused(points[p as usize]))
+                .map(|&p| normal.dot_fused(p))
                 .fold(R::MIN, R::max);
             faces.push(HullFace {
                 normal,
