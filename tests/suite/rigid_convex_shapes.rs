@@ -5,7 +5,7 @@
 
 use fixstep::math::{Fx, Quat, Real, Vec3};
 use fixstep::rigid::convex::ConvexHull;
-use fixstep::rigid::{BodyDesc, Material, RigidDesc, Shape, SolverSettings};
+use fixstep::rigid::{BodyDesc, Material, Part, RigidDesc, Shape, SolverSettings};
 use fixstep::scene::Scene;
 use fixstep::world::{Handle, TickInput, World};
 
@@ -82,6 +82,7 @@ fn solid_cylinder_rolls_down_a_slope_at_two_thirds_g_sin_theta() {
     let (mut world, cylinder) = on_slope(body, 20.0, 0.8, false);
     let a = acceleration(&mut world, cylinder, 10, 30);
     let expected = 2.0 / 3.0 * G * 20f64.to_radians().sin();
+    println!("rolling cylinder: a = {a} m/s², expected {expected}");
     assert!(
         (a - expected).abs() <= 0.02 * expected,
         "a = {a}, expected {expected}"
@@ -141,8 +142,57 @@ fn hull_cube_slides_down_a_slope_at_the_coulomb_rate() {
     let a = acceleration(&mut world, cube, 10, 30);
     let theta = 30f64.to_radians();
     let expected = G * (theta.sin() - 0.3 * theta.cos());
+    println!("sliding hull cube: a = {a} m/s², expected {expected}");
     assert!(
         (a - expected).abs() <= 0.01 * expected,
         "a = {a}, expected {expected}"
     );
+}
+
+/// A compound of a cylinder (lying along z) and a hull cube side by side, dropped on the
+/// floor: the parts collide one by one and the body comes to rest on both at the right
+/// height, asleep.
+#[test]
+fn compound_of_a_cylinder_and_a_hull_rests_on_the_floor() {
+    let points: Vec<Vec3<Fx>> = (0..8)
+        .map(|i| {
+            let s = |bit: usize| {
+                if i & bit != 0 {
+                    Fx::from_f64(0.3)
+                } else {
+                    -Fx::from_f64(0.3)
+                }
+            };
+            Vec3::new(s(1), s(2), s(4))
+        })
+        .collect();
+    let parts = vec![
+        Part {
+            rotation: Quat::from_axis_angle(Vec3::X, Fx::FRAC_PI_2),
+            translation: Vec3::new(-Fx::from_f64(0.5), Fx::ZERO, Fx::ZERO),
+            shape: Shape::Cylinder {
+                radius: Fx::from_f64(0.3),
+                half_height: Fx::from_f64(0.3),
+            },
+        },
+        Part {
+            rotation: Quat::IDENTITY,
+            translation: Vec3::new(Fx::from_f64(0.5), Fx::ZERO, Fx::ZERO),
+            shape: Shape::ConvexHull {
+                hull: ConvexHull::new(&points).expect("a cube"),
+            },
+        },
+    ];
+    let body = BodyDesc::new(
+        Shape::Compound { parts },
+        Vec3::new(Fx::ZERO, Fx::from_f64(0.5), Fx::ZERO),
+    );
+    let (mut world, compound) = on_slope(body, 0.0, 0.5, true);
+    for _ in 0..600 {
+        world.step(&TickInput::default());
+    }
+    let r = world.rigid().unwrap();
+    let y = r.position(compound).unwrap().y.to_f64();
+    assert!((y - 0.3).abs() <= 0.01, "y {y}");
+    assert_eq!(r.is_sleeping(compound), Some(true));
 }
