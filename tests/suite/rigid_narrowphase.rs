@@ -1129,3 +1129,61 @@ fn round_shapes_against_new_shapes() {
         &[([-0.5, 0.995, 0.0], -0.01), ([0.5, 0.995, 0.0], -0.01)],
     );
 }
+
+/// Cylinders, cones and a hull against every convex shape over a sweep of turned poses:
+/// unit normals, at most four points with distinct ids, separations within the margin and
+/// above −1 m, and, for shapes of different kinds, the swapped order flips the normal with
+/// the same number of points.
+#[test]
+fn sweep_of_new_shapes_keeps_the_invariants() {
+    let shapes: Vec<Shape<Fx>> = vec![
+        sphere(0.3),
+        capsule(0.2, 0.4),
+        cuboid([0.4, 0.3, 0.5]),
+        cylinder(0.3, 0.4),
+        cone(0.4, 0.5),
+        hull_cube([0.3, 0.4, 0.35]),
+    ];
+    let mut checked = 0;
+    for (i, a) in shapes.iter().enumerate() {
+        for b in &shapes[3.max(i)..] {
+            for k in 0..24 {
+                let kf = k as f64;
+                let xa = pose([0.0; 3], [0.0, 0.6, 0.8], 15.0 * kf);
+                let xb = pose(
+                    [
+                        0.1 * (kf * 0.7).sin(),
+                        0.45 + 0.02 * kf,
+                        0.1 * (kf * 1.3).cos(),
+                    ],
+                    [0.8, 0.0, 0.6],
+                    37.0 * kf,
+                );
+                let m = run(a, &xa, b, &xb);
+                let s = run(b, &xb, a, &xa);
+                // Shapes of different kinds are always computed in one order and flipped.
+                let exact = std::mem::discriminant(a) != std::mem::discriminant(b);
+                if exact {
+                    assert_eq!(m.count, s.count, "{a:?} {b:?} pose {k}");
+                }
+                assert!(m.count <= 4);
+                if m.count == 0 {
+                    continue;
+                }
+                checked += 1;
+                let n = m.normal.to_f64();
+                let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+                assert!((length - 1.0).abs() <= 1e-6, "{a:?} {b:?} pose {k}: {n:?}");
+                if exact {
+                    assert!(close(n, (-s.normal).to_f64(), 1e-6));
+                }
+                for p in m.points() {
+                    assert!(p.separation.to_f64() <= MARGIN + TOL);
+                    assert!(p.separation.to_f64() >= -1.0, "{a:?} {b:?} pose {k}: {p:?}");
+                }
+                assert_distinct_ids(&m);
+            }
+        }
+    }
+    assert!(checked > 50, "{checked}");
+}

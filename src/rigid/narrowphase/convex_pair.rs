@@ -2,8 +2,9 @@
 //!
 //! Normal and depth come from the cores: GJK while they are apart (separation
 //! s = d − r_A − r_B), EPA when they overlap (s = −depth − r_A − r_B, made exact by GJK on
-//! the cores moved apart along EPA's normal, see [`refine`]), and, when EPA finds
-//! no polytope, the gap of the two support points along the line of centres. Points come
+//! the cores moved apart along EPA's normal, see [`refine`]), and, when EPA finds no
+//! polytope or only a touching one (the origin on D's boundary, where its faces can
+//! mislead), [`refine`] from the line of centres. Points come
 //! from the supporting features of both cores along ±n (`supporting_face.rs`), as in Jolt:
 //!
 //! - one of them a face well aligned with the normal (n · m ≥ 1/2, the better one, A on
@@ -62,10 +63,10 @@ pub(super) fn convex_pair<R: Real>(
     let (g, simplex) = gjk_simplex(&pair);
     let (normal, gap, closest) = if g.overlap {
         match epa(&pair, &simplex) {
-            Some(p) => refine(&ra, xf_a, &rb, xf_b, p.normal, p.depth),
-            None => {
+            Some(p) if p.depth >= R::ZERO => refine(&ra, xf_a, &rb, xf_b, p.normal, p.depth),
+            _ => {
                 let n = unit(xf_b.translation - xf_a.translation).map_or(Vec3::Y, |(n, _)| n);
-                (n, -n.dot(pair.support(n).w), None)
+                refine(&ra, xf_a, &rb, xf_b, n, R::ZERO)
             }
         }
     } else {
@@ -252,11 +253,18 @@ impl<R: Real> Candidates<R> {
 
     /// A candidate from the core points `core_a`, `core_b` with core gap `gap` (m): the
     /// surfaces at core_a + r_A n and core_b − r_B n, the point midway, separation
-    /// gap − r_A − r_B.
+    /// gap − r_A − r_B. An id already taken (two cuts whose truncated feature codes
+    /// coincide, which is rare) is made distinct with bit 30 and the candidate's index in
+    /// bits 22–29.
     fn add(&mut self, core_a: Vec3<R>, core_b: Vec3<R>, gap: R, id: u32) {
         if self.count == MAX_CANDIDATES {
             return;
         }
+        let id = if self.ids[..self.count].contains(&id) {
+            1 << 30 | (self.count as u32) << 22 | (id & 0x3F_FFFF)
+        } else {
+            id
+        };
         let on_a = core_a + self.normal * self.radius_a;
         let on_b = core_b - self.normal * self.radius_b;
         self.positions[self.count] = (on_a + on_b) * R::HALF;
