@@ -31,6 +31,7 @@ mod replay_committed;
 mod replay_snapshot;
 mod rigid_broadphase;
 mod rigid_ccd;
+mod rigid_convex_shapes;
 mod rigid_events;
 mod rigid_friction;
 mod rigid_gyroscopic;

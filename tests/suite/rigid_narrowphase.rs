@@ -946,3 +946,244 @@ fn check_invariants(m: &Manifold<Fx>) {
     }
     assert_distinct_ids(m);
 }
+
+// ---------------------------------------------------------------- cylinders, cones, hulls
+
+fn cylinder<R: Real>(radius: f64, half_height: f64) -> Shape<R> {
+    Shape::Cylinder {
+        radius: real(radius),
+        half_height: real(half_height),
+    }
+}
+
+fn cone<R: Real>(radius: f64, half_height: f64) -> Shape<R> {
+    Shape::Cone {
+        radius: real(radius),
+        half_height: real(half_height),
+    }
+}
+
+fn hull_cube(half: [f64; 3]) -> Shape<Fx> {
+    let points: Vec<Vec3<Fx>> = (0..8)
+        .map(|i| {
+            let s = |bit: usize, h: f64| if i & bit != 0 { h } else { -h };
+            vec([s(1, half[0]), s(2, half[1]), s(4, half[2])])
+        })
+        .collect();
+    Shape::ConvexHull {
+        hull: fixstep::rigid::convex::ConvexHull::new(&points).expect("a cube"),
+    }
+}
+
+/// The floor box: top face at y = 0.
+fn floor<R: Real>() -> (Shape<R>, Transform<R>) {
+    (cuboid([3.0, 0.5, 3.0]), at([0.0, -0.5, 0.0]))
+}
+
+/// A cylinder (r 0.5, h 1) lying along x, 1 cm into the ground plane and into a box's top:
+/// two points at the ends of the bottom line, each 1 cm deep, midway (y = −0.005).
+#[test]
+fn cylinder_lying_on_a_plane_and_on_a_box_gets_two_points() {
+    let c = cylinder::<Fx>(0.5, 1.0);
+    let xc = pose([0.0, 0.49, 0.0], [0.0, 0.0, 1.0], 90.0);
+    let expected = [([-1.0, -0.005, 0.0], -0.01), ([1.0, -0.005, 0.0], -0.01)];
+    expect(
+        &run(&ground(), &at([0.0; 3]), &c, &xc),
+        [0.0, 1.0, 0.0],
+        &expected,
+    );
+    let (f, xf) = floor::<Fx>();
+    expect(&run(&f, &xf, &c, &xc), [0.0, 1.0, 0.0], &expected);
+    assert_swap(&f, &xf, &c, &xc);
+    assert_ids_stable(&f, &xf, &c, &xc);
+}
+
+/// The four points of a face contact are on the rim (r from the axis), 1 cm deep, and
+/// spread over the cap (two of them a diameter apart).
+fn assert_rim_points(m: &Manifold<Fx>, radius: f64, depth: f64) {
+    assert_eq!(m.count, 4, "{:?}", m.points());
+    assert!(close(m.normal.to_f64(), [0.0, 1.0, 0.0], TOL));
+    let mut widest: f64 = 0.0;
+    for p in m.points() {
+        let q = p.point.to_f64();
+        assert!(
+            ((q[0] * q[0] + q[2] * q[2]).sqrt() - radius).abs() <= 1e-6,
+            "{q:?}"
+        );
+        assert!((q[1] + depth / 2.0).abs() <= TOL, "{q:?}");
+        assert!((p.separation.to_f64() + depth).abs() <= TOL);
+        for o in m.points() {
+            let r = o.point.to_f64();
+            widest = widest.max(((q[0] - r[0]).powi(2) + (q[2] - r[2]).powi(2)).sqrt());
+        }
+    }
+    assert!((widest - 2.0 * radius).abs() <= 1e-6, "widest {widest}");
+    assert_distinct_ids(m);
+}
+
+#[test]
+fn cylinder_standing_on_its_cap_gets_four_spread_points() {
+    let c = cylinder::<Fx>(0.5, 1.0);
+    let xc = at([0.0, 0.99, 0.0]);
+    assert_rim_points(&run(&ground(), &at([0.0; 3]), &c, &xc), 0.5, 0.01);
+    let (f, xf) = floor::<Fx>();
+    assert_rim_points(&run(&f, &xf, &c, &xc), 0.5, 0.01);
+    assert_swap(&f, &xf, &c, &xc);
+    assert_ids_stable(&f, &xf, &c, &xc);
+}
+
+#[test]
+fn cone_on_its_base_gets_four_points_and_on_its_apex_one() {
+    let k = cone::<Fx>(0.5, 1.0);
+    let (f, xf) = floor::<Fx>();
+    let base_down = at([0.0, 0.99, 0.0]);
+    assert_rim_points(&run(&f, &xf, &k, &base_down), 0.5, 0.01);
+    assert_rim_points(&run(&ground(), &at([0.0; 3]), &k, &base_down), 0.5, 0.01);
+    let apex_down = pose([0.0, 0.99, 0.0], [1.0, 0.0, 0.0], 180.0);
+    let expected = [([0.0, -0.005, 0.0], -0.01)];
+    expect(&run(&f, &xf, &k, &apex_down), [0.0, 1.0, 0.0], &expected);
+    expect(
+        &run(&ground(), &at([0.0; 3]), &k, &apex_down),
+        [0.0, 1.0, 0.0],
+        &expected,
+    );
+    assert_swap(&f, &xf, &k, &base_down);
+}
+
+/// A hull cube resting on a box face gives the manifold of the same box on that face: the
+/// same normal, four points at the same places and depths.
+#[test]
+fn hull_cube_on_a_box_matches_box_on_box() {
+    let (f, xf) = floor::<Fx>();
+    let xb = pose([0.2, 0.49, -0.1], [0.0, 1.0, 0.0], 20.0);
+    let as_box = run(&f, &xf, &cuboid([0.5, 0.5, 0.5]), &xb);
+    let hull = hull_cube([0.5, 0.5, 0.5]);
+    let as_hull = run(&f, &xf, &hull, &xb);
+    assert_eq!(as_box.count, 4);
+    let points: Vec<([f64; 3], f64)> = as_box
+        .points()
+        .iter()
+        .map(|p| (p.point.to_f64(), p.separation.to_f64()))
+        .collect();
+    expect(&as_hull, as_box.normal.to_f64(), &points);
+    assert_swap(&f, &xf, &hull, &xb);
+    assert_ids_stable(&f, &xf, &hull, &xb);
+    // On the ground plane too.
+    let on_plane = run(&ground(), &at([0.0; 3]), &hull, &xb);
+    expect(&on_plane, [0.0, 1.0, 0.0], &points);
+}
+
+/// A cylinder lying on another, crossed at right angles: one point between the sides; the
+/// two parallel: two points along the common line.
+#[test]
+fn cylinder_on_cylinder() {
+    let c = cylinder::<Fx>(0.5, 1.0);
+    let lower = pose([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 90.0);
+    let crossed = pose([0.0, 0.99, 0.0], [1.0, 0.0, 0.0], 90.0);
+    // Two curved surfaces: EPA and GJK converge on the curvature to about 10⁻⁴.
+    let m = run(&c, &lower, &c, &crossed);
+    assert_eq!(m.count, 1);
+    assert!(
+        close(m.normal.to_f64(), [0.0, 1.0, 0.0], 1e-4),
+        "{:?}",
+        m.normal
+    );
+    assert!(close(m.points[0].point.to_f64(), [0.0, 0.495, 0.0], 1e-4));
+    assert!((m.points[0].separation.to_f64() + 0.01).abs() <= 1e-6);
+    let parallel = pose([0.5, 0.99, 0.0], [0.0, 0.0, 1.0], 90.0);
+    let m = run(&c, &lower, &c, &parallel);
+    assert_eq!(m.count, 2);
+    assert!(
+        close(m.normal.to_f64(), [0.0, 1.0, 0.0], 1e-4),
+        "{:?}",
+        m.normal
+    );
+    for p in m.points() {
+        let q = p.point.to_f64();
+        assert!(
+            (q[0] + 0.5).abs() <= 1e-4 || (q[0] - 1.0).abs() <= 1e-4,
+            "{q:?}"
+        );
+        assert!(close(q, [q[0], 0.495, 0.0], 1e-4), "{q:?}");
+        assert!((p.separation.to_f64() + 0.01).abs() <= 1e-6);
+    }
+    assert_distinct_ids(&m);
+}
+
+/// A sphere and a capsule against a hull and a cylinder go through the same path.
+#[test]
+fn round_shapes_against_new_shapes() {
+    let hull = hull_cube([0.5, 0.5, 0.5]);
+    let s = sphere::<Fx>(0.25);
+    expect(
+        &run(&s, &at([0.0, 0.74, 0.1]), &hull, &at([0.0; 3])),
+        [0.0, -1.0, 0.0],
+        &[([0.0, 0.495, 0.1], -0.01)],
+    );
+    let c = cylinder::<Fx>(0.5, 1.0);
+    let cap = capsule::<Fx>(0.25, 0.5);
+    let lying = pose([0.0, 1.24, 0.0], [0.0, 0.0, 1.0], 90.0);
+    expect(
+        &run(&cap, &lying, &c, &at([0.0; 3])),
+        [0.0, -1.0, 0.0],
+        &[([-0.5, 0.995, 0.0], -0.01), ([0.5, 0.995, 0.0], -0.01)],
+    );
+}
+
+/// Cylinders, cones and a hull against every convex shape over a sweep of turned poses:
+/// unit normals, at most four points with distinct ids, separations within the margin and
+/// above −1 m, and, for shapes of different kinds, the swapped order flips the normal with
+/// the same number of points.
+#[test]
+fn sweep_of_new_shapes_keeps_the_invariants() {
+    let shapes: Vec<Shape<Fx>> = vec![
+        sphere(0.3),
+        capsule(0.2, 0.4),
+        cuboid([0.4, 0.3, 0.5]),
+        cylinder(0.3, 0.4),
+        cone(0.4, 0.5),
+        hull_cube([0.3, 0.4, 0.35]),
+    ];
+    let mut checked = 0;
+    for (i, a) in shapes.iter().enumerate() {
+        for b in &shapes[3.max(i)..] {
+            for k in 0..24 {
+                let kf = k as f64;
+                let xa = pose([0.0; 3], [0.0, 0.6, 0.8], 15.0 * kf);
+                let xb = pose(
+                    [
+                        0.1 * (kf * 0.7).sin(),
+                        0.45 + 0.02 * kf,
+                        0.1 * (kf * 1.3).cos(),
+                    ],
+                    [0.8, 0.0, 0.6],
+                    37.0 * kf,
+                );
+                let m = run(a, &xa, b, &xb);
+                let s = run(b, &xb, a, &xa);
+                // Shapes of different kinds are always computed in one order and flipped.
+                let exact = std::mem::discriminant(a) != std::mem::discriminant(b);
+                if exact {
+                    assert_eq!(m.count, s.count, "{a:?} {b:?} pose {k}");
+                }
+                assert!(m.count <= 4);
+                if m.count == 0 {
+                    continue;
+                }
+                checked += 1;
+                let n = m.normal.to_f64();
+                let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+                assert!((length - 1.0).abs() <= 1e-6, "{a:?} {b:?} pose {k}: {n:?}");
+                if exact {
+                    assert!(close(n, (-s.normal).to_f64(), 1e-6));
+                }
+                for p in m.points() {
+                    assert!(p.separation.to_f64() <= MARGIN + TOL);
+                    assert!(p.separation.to_f64() >= -1.0, "{a:?} {b:?} pose {k}: {p:?}");
+                }
+                assert_distinct_ids(&m);
+            }
+        }
+    }
+    assert!(checked > 50, "{checked}");
+}

@@ -10,12 +10,14 @@
 //! removed and the horizon is joined to w), until
 //!
 //! ```text
-//!   m · w − d ≤ 2⁻¹⁷ m + 2⁻²⁰ d
+//!   m · w − d ≤ 2⁻²⁴ m + 2⁻²² d
 //! ```
 //!
-//! (the face is on D's boundary to within about 8 µm), or [`MAX_ITERATIONS`] support
+//! (the face is on D's boundary to within about 0.06 µm, which on a curved boundary of
+//! radius ρ puts the normal within about √(2 · 2⁻²⁴ m / ρ) ≈ 3·10⁻⁴ rad for ρ = 1 m), or [`MAX_ITERATIONS`] support
 //! points were added, or the polytope would exceed [`MAX_FACES`] faces. The nearest face
-//! then gives the normal from A to B, −m, and the depth d. Faces are visited in creation
+//! then gives the depth d and the normal from A to B, m (D's points a − b reach farthest
+//! along m, so moving B by d m brings D's face to the origin). Faces are visited in creation
 //! order and ties go to the first, so the result is the same everywhere.
 //!
 //! Cores that only touch (GJK's "overlap" includes gaps under 2⁻¹² m) leave the origin on
@@ -30,11 +32,11 @@ use crate::math::{Real, Vec3};
 use crate::rigid::narrowphase::tolerance::{tiny_length_squared, unit};
 
 /// Most support points EPA adds beyond the starting tetrahedron.
-pub(crate) const MAX_ITERATIONS: usize = 32;
+pub(crate) const MAX_ITERATIONS: usize = 48;
 
 /// Most faces the polytope may ever create (removed faces count): each new point adds at
-/// most a handful, so 128 covers [`MAX_ITERATIONS`] on typical shapes.
-pub(crate) const MAX_FACES: usize = 128;
+/// most a handful, so 256 covers [`MAX_ITERATIONS`] on typical shapes.
+pub(crate) const MAX_FACES: usize = 256;
 
 /// The penetration found by [`epa`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,7 +130,7 @@ pub(crate) fn epa<R: Real>(pair: &CorePair<R>, simplex: &Simplex<R>) -> Option<P
     for _ in 0..MAX_ITERATIONS {
         let w = pair.support(best.normal).w;
         let gain = best.normal.dot(w) - best.distance;
-        let tolerance = R::from_ratio(1, 1 << 17) + best.distance.abs().mul_pow2_recip(20);
+        let tolerance = R::from_ratio(1, 1 << 24) + best.distance.abs().mul_pow2_recip(22);
         if gain <= tolerance || polytope.count == polytope.points.len() {
             break;
         }
@@ -144,7 +146,7 @@ pub(crate) fn epa<R: Real>(pair: &CorePair<R>, simplex: &Simplex<R>) -> Option<P
         }
     }
     Some(Penetration {
-        normal: -best.normal,
+        normal: best.normal,
         depth: best.distance,
     })
 }
@@ -242,4 +244,87 @@ fn complete<R: Real>(
             .find(|p| sized(p.w - w0).dot(normal).abs() > tiny)?;
     }
     Some(points.map(|p| p.w))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::{Fx, Quat};
+    use crate::rigid::convex::gjk::gjk_simplex;
+    use crate::rigid::convex::gjk::tests::{cube_hull, tetra_hull};
+    use crate::rigid::convex::support::{Convex, Rounded};
+    use crate::rigid::transform::Transform;
+
+    fn sharp(core: Convex<'_, Fx>) -> Rounded<'_, Fx> {
+        Rounded {
+            core,
+            radius: Fx::ZERO,
+        }
+    }
+
+    fn at(x: i64, y: i64, z: i64) -> Transform<Fx> {
+        let c = |v: i64| Fx::from_ratio(v, 100);
+        Transform::from_pose(Vec3::new(c(x), c(y), c(z)), Quat::IDENTITY)
+    }
+
+    fn penetration(
+        a: &Rounded<Fx>,
+        xa: &Transform<Fx>,
+        b: &Rounded<Fx>,
+        xb: &Transform<Fx>,
+    ) -> Penetration<Fx> {
+        let pair = CorePair::new(a, xa, b, xb);
+        let (g, simplex) = gjk_simplex(&pair);
+        assert!(g.overlap);
+        epa(&pair, &simplex).expect("a polytope")
+    }
+
+    fn near(x: Fx, y: Fx) -> bool {
+        (x - y).abs() <= Fx::from_ratio(1, 1 << 20)
+    }
+
+    #[test]
+    fn overlapping_boxes_push_apart_along_the_shallow_axis() {
+        let cube = sharp(Convex::Cuboid {
+            half_extents: Vec3::splat(Fx::ONE),
+        });
+        let p = penetration(&cube, &at(0, 0, 0), &cube, &at(150, 20, 10));
+        assert!(near(p.depth, Fx::HALF), "{p:?}");
+        assert!(near(p.normal.x, Fx::ONE), "{p:?}");
+        // Swapped: the normal reverses.
+        let q = penetration(&cube, &at(150, 20, 10), &cube, &at(0, 0, 0));
+        assert!(
+            near(q.depth, Fx::HALF) && near(q.normal.x, -Fx::ONE),
+            "{q:?}"
+        );
+    }
+
+    #[test]
+    fn a_point_inside_a_box_leaves_through_the_nearest_face() {
+        let point = sharp(Convex::Point);
+        let cube = sharp(Convex::Cuboid {
+            half_extents: Vec3::splat(Fx::ONE),
+        });
+        let p = penetration(&point, &at(30, 90, -20), &cube, &at(0, 0, 0));
+        assert!(near(p.depth, Fx::from_ratio(1, 10)), "{p:?}");
+        assert!(near(p.normal.y, -Fx::ONE), "{p:?}");
+    }
+
+    #[test]
+    fn hulls_and_touching_cores() {
+        let cube = cube_hull(Vec3::splat(Fx::HALF));
+        let tetra = tetra_hull(Fx::ONE);
+        let (a, b) = (sharp(Convex::Hull(&cube)), sharp(Convex::Hull(&tetra)));
+        // The tetrahedron's vertex (1, 0, −c) 0.2 m into the cube's +x face... from the
+        // cube's side: the cube at x = 1.3 overlaps it by 0.2 along x.
+        let p = penetration(&b, &at(0, 0, 0), &a, &at(130, 0, -60));
+        assert!(near(p.depth, Fx::from_ratio(2, 10)), "{p:?}");
+        assert!(near(p.normal.x, Fx::ONE), "{p:?}");
+        // Faces exactly touching: depth zero.
+        let p = penetration(&a, &at(0, 0, 0), &a, &at(0, 100, 0));
+        assert!(
+            near(p.depth, Fx::ZERO) && near(p.normal.y, Fx::ONE),
+            "{p:?}"
+        );
+    }
 }

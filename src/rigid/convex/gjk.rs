@@ -137,8 +137,6 @@ impl<R: Real> Simplex<R> {
 /// algorithm and its bounds.
 ///
 /// [`Convex::Point`]: super::support::Convex::Point
-// The shape queries' entry point; the narrowphase uses `gjk_simplex` for EPA's start.
-#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) fn gjk<R: Real>(
     a: &Rounded<R>,
     xf_a: &Transform<R>,

@@ -1,8 +1,10 @@
 //! Contacts of any pair with a cylinder, a cone or a hull (and of a plane with one).
 //!
 //! Normal and depth come from the cores: GJK while they are apart (separation
-//! s = d − r_A − r_B), EPA when they overlap (s = −depth − r_A − r_B), and, when EPA finds
-//! no polytope, the gap of the two support points along the line of centres. Points come
+//! s = d − r_A − r_B), EPA when they overlap (s = −depth − r_A − r_B, made exact by GJK on
+//! the cores moved apart along EPA's normal, see [`refine`]), and, when EPA finds no
+//! polytope or only a touching one (the origin on D's boundary, where its faces can
+//! mislead), [`refine`] from the line of centres. Points come
 //! from the supporting features of both cores along ±n (`supporting_face.rs`), as in Jolt:
 //!
 //! - one of them a face well aligned with the normal (n · m ≥ 1/2, the better one, A on
@@ -10,8 +12,9 @@
 //!   (`face_clip.rs`) and every clipped point p gets its own core gap t, the distance
 //!   along n from p to the reference plane m · x = m · r₀: t = m · (p − r₀) / (m · n) for
 //!   A's face, the same with −m for B's;
-//! - two segments (cylinder sides, capsules): B's segment clipped to the slab of A's and
-//!   each end's gap to A's segment;
+//! - two parallel segments (cylinder sides, capsules; within 1.8°): B's segment clipped to
+//!   the slab of A's and each end's gap to A's segment; two crossing segments: one point,
+//!   their closest points;
 //! - otherwise one point, GJK's closest points (or the features' points when EPA ran).
 //!
 //! Each point lies midway between the surfaces (cores grown by their radii) with
@@ -22,14 +25,15 @@
 //! bits 0–13 (see `face_clip.rs`).
 
 use super::clip::four_of;
-use super::face_clip::{Clipped, clip_to_face, clip_to_slab};
+use super::face_clip::{clip_to_face, clip_to_slab};
 use super::plane::WorldPlane;
+use super::segments::{Segment, closest_parameters};
 use super::supporting_face::{Feature, supporting_feature};
-use super::tolerance::unit;
+use super::tolerance::{lying_sine, unit};
 use crate::math::{Real, Vec3};
 use crate::rigid::convex::Rounded;
 use crate::rigid::convex::epa::epa;
-use crate::rigid::convex::gjk::{CorePair, gjk_simplex};
+use crate::rigid::convex::gjk::{CorePair, gjk, gjk_simplex};
 use crate::rigid::manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
 use crate::rigid::shape::Shape;
 use crate::rigid::transform::Transform;
@@ -40,7 +44,8 @@ fn depth_slack<R: Real>() -> R {
 }
 
 /// The manifold of two convex shapes, at least one a cylinder, a cone or a hull (see the
-/// [module](self)); empty beyond `margin` (m) or for a shape that is not convex.
+/// [module](self)); empty beyond `margin` (m) or for a shape that is not convex. Computed
+/// in the natural order of [`rank`] and flipped for the other.
 pub(super) fn convex_pair<R: Real>(
     a: &Shape<R>,
     xf_a: &Transform<R>,
@@ -48,21 +53,24 @@ pub(super) fn convex_pair<R: Real>(
     xf_b: &Transform<R>,
     margin: R,
 ) -> Manifold<R> {
+    if rank(b) < rank(a) {
+        return convex_pair(b, xf_b, a, xf_a, margin).flipped();
+    }
     let (Some(ra), Some(rb)) = (Rounded::of(a), Rounded::of(b)) else {
         return Manifold::EMPTY;
     };
     let pair = CorePair::new(&ra, xf_a, &rb, xf_b);
     let (g, simplex) = gjk_simplex(&pair);
-    let (normal, gap) = if g.overlap {
+    let (normal, gap, closest) = if g.overlap {
         match epa(&pair, &simplex) {
-            Some(p) => (p.normal, -p.depth),
-            None => {
+            Some(p) if p.depth >= R::ZERO => refine(&ra, xf_a, &rb, xf_b, p.normal, p.depth),
+            _ => {
                 let n = unit(xf_b.translation - xf_a.translation).map_or(Vec3::Y, |(n, _)| n);
-                (n, -n.dot(pair.support(n).w))
+                refine(&ra, xf_a, &rb, xf_b, n, R::ZERO)
             }
         }
     } else {
-        (g.normal, g.distance)
+        (g.normal, g.distance, Some((g.point_a, g.point_b)))
     };
     let radii = ra.radius + rb.radius;
     if gap - radii > margin {
@@ -93,21 +101,20 @@ pub(super) fn convex_pair<R: Real>(
                 points.add(p - normal * t, p, t, id);
             }
         }
-    } else if fa.count == 2 && fb.count == 2 {
-        let (a0, a1) = (fa.points[0], fa.points[1]);
-        let clipped: Clipped<R> = clip_to_slab(&fa, &fb);
-        let e = a1 - a0;
-        let ee = e.length_squared();
-        if ee > super::tolerance::tiny_length_squared() {
-            for (p, id) in clipped.iter() {
-                let s = (e.dot(p - a0) / ee).clamp(R::ZERO, R::ONE);
-                let on_a = a0 + e * s;
+    } else if let (Some(sa), Some(sb)) = (segment_of(&fa), segment_of(&fb)) {
+        if parallel(&sa, &sb) {
+            for (p, id) in clip_to_slab(&fa, &fb).iter() {
+                let on_a = sa.at(sa.closest_parameter(p));
                 points.add(on_a, p, normal.dot(p - on_a), id);
             }
+        } else {
+            let (s, t) = closest_parameters(&sa, &sb);
+            let (on_a, on_b) = (sa.at(s), sb.at(t));
+            points.add(on_a, on_b, normal.dot(on_b - on_a), 0);
         }
     }
     if points.count == 0 {
-        let (core_a, core_b) = if g.overlap {
+        let (core_a, core_b) = closest.unwrap_or_else(|| {
             let p = if fa.count == 1 {
                 fa.points[0]
             } else if fb.count == 1 {
@@ -116,12 +123,67 @@ pub(super) fn convex_pair<R: Real>(
                 centroid(&fa)
             };
             (p, p + normal * gap)
-        } else {
-            (g.point_a, g.point_b)
-        };
+        });
         points.add(core_a, core_b, gap, 0);
     }
     points.manifold(margin)
+}
+
+/// Distance (m) by which [`refine`] moves B beyond EPA's contact: 2⁻⁶ m ≈ 16 mm.
+fn refine_shift<R: Real>() -> R {
+    R::from_ratio(1, 1 << 6)
+}
+
+/// EPA's normal n and depth d sharpened on curved cores: B moved by (d + δ) n
+/// (δ = [`refine_shift`]) is apart from A, and GJK there gives the normal n' of the
+/// separated cores, with closest points (B's moved back). Of n and n', the one along which
+/// the cores overlap least, depth(u) = u · s_D(u) (D = A − B), is the penetration normal
+/// (the least overlap over directions defines it), n on ties; the result is that normal,
+/// the gap −depth (m) and n''s closest points when n' is chosen. (EPA's polytope
+/// approximates a curved boundary only to its tolerance, which leaves the normal off by up
+/// to √(2 tol / ρ); GJK on separated cores converges closer, but on flat contacts may stop
+/// a little off, where EPA is exact.)
+#[allow(clippy::type_complexity)]
+fn refine<R: Real>(
+    a: &Rounded<R>,
+    xf_a: &Transform<R>,
+    b: &Rounded<R>,
+    xf_b: &Transform<R>,
+    normal: Vec3<R>,
+    depth: R,
+) -> (Vec3<R>, R, Option<(Vec3<R>, Vec3<R>)>) {
+    let shift = depth + refine_shift();
+    let offset = normal * shift;
+    let moved = Transform {
+        translation: xf_b.translation + offset,
+        ..*xf_b
+    };
+    let g = gjk(a, xf_a, b, &moved);
+    let pair = CorePair::new(a, xf_a, b, xf_b);
+    let reach = |n: Vec3<R>| n.dot(pair.support(n).w);
+    if g.overlap || reach(g.normal) >= reach(normal) {
+        return (normal, -reach(normal), None);
+    }
+    (
+        g.normal,
+        -reach(g.normal),
+        Some((g.point_a, g.point_b - offset)),
+    )
+}
+
+/// The shape's place in the natural order of a pair (sphere, capsule, box, cylinder, cone,
+/// hull): the lower one is A, so that swapping two shapes of different kinds flips the
+/// manifold exactly.
+fn rank<R: Real>(shape: &Shape<R>) -> u8 {
+    match shape {
+        Shape::Sphere { .. } => 0,
+        Shape::Capsule { .. } => 1,
+        Shape::Box { .. } => 2,
+        Shape::Cylinder { .. } => 3,
+        Shape::Cone { .. } => 4,
+        Shape::ConvexHull { .. } => 5,
+        Shape::Plane { .. } | Shape::Compound { .. } => 6,
+    }
 }
 
 /// n · m for a face (3 or more points) with outward normal m seen along `towards`; −1 for
@@ -132,6 +194,28 @@ fn face_alignment<R: Real>(feature: &Feature<R>, towards: Vec3<R>) -> R {
     } else {
         -R::ONE
     }
+}
+
+/// A two-point feature as a [`Segment`]; `None` for other features or a segment too short
+/// to have a direction.
+fn segment_of<R: Real>(feature: &Feature<R>) -> Option<Segment<R>> {
+    if feature.count != 2 {
+        return None;
+    }
+    let (p0, p1) = (feature.points[0], feature.points[1]);
+    let (axis, length) = unit(p1 - p0)?;
+    Some(Segment {
+        centre: (p0 + p1) * R::HALF,
+        axis,
+        half_length: length * R::HALF,
+    })
+}
+
+/// Whether two segments are parallel enough to touch along a line: |u_a × u_b| within
+/// [`lying_sine`] (1.8°).
+fn parallel<R: Real>(a: &Segment<R>, b: &Segment<R>) -> bool {
+    let sine = lying_sine::<R>();
+    a.axis.cross(b.axis).length_squared() <= sine * sine
 }
 
 /// The mean of a feature's points, m.
@@ -169,11 +253,18 @@ impl<R: Real> Candidates<R> {
 
     /// A candidate from the core points `core_a`, `core_b` with core gap `gap` (m): the
     /// surfaces at core_a + r_A n and core_b − r_B n, the point midway, separation
-    /// gap − r_A − r_B.
+    /// gap − r_A − r_B. An id already taken (two cuts whose truncated feature codes
+    /// coincide, which is rare) is made distinct with bit 30 and the candidate's index in
+    /// bits 22–29.
     fn add(&mut self, core_a: Vec3<R>, core_b: Vec3<R>, gap: R, id: u32) {
         if self.count == MAX_CANDIDATES {
             return;
         }
+        let id = if self.ids[..self.count].contains(&id) {
+            1 << 30 | (self.count as u32) << 22 | (id & 0x3F_FFFF)
+        } else {
+            id
+        };
         let on_a = core_a + self.normal * self.radius_a;
         let on_b = core_b - self.normal * self.radius_b;
         self.positions[self.count] = (on_a + on_b) * R::HALF;
