@@ -667,7 +667,10 @@ mod tests {
         let rigid = RigidFields::of(scene.rigid.as_ref().expect("rigid bodies"));
         let missing = with_additions(
             &scene,
-            &[Addition::Rigid(rigid), Addition::RigidBullets(vec![99], vec![])],
+            &[
+                Addition::Rigid(rigid),
+                Addition::RigidBullets(vec![99], vec![]),
+            ],
         );
         assert!(rejection(&missing).contains("does not exist"));
     }

@@ -65,7 +65,11 @@ fn replays(scene: &Scene<Fx>) {
     let replay = record(scene, scene.ticks, NonZeroU32::new(5).expect("nonzero")).expect("records");
     let bytes = replay.to_bytes().expect("encodes");
     let read = fixstep::replay::Replay::from_bytes(&bytes, "ccd").expect("decodes");
-    assert_eq!(read.scene(), replay.scene(), "the bullet flags survive the file");
+    assert_eq!(
+        read.scene(),
+        replay.scene(),
+        "the bullet flags survive the file"
+    );
     assert_eq!(
         verify(&read).expect("verifies"),
         VerifyOutcome::Ok {
@@ -114,7 +118,11 @@ fn a_fast_ball_never_passes_a_thin_static_wall() {
     let scene = ball_and_wall();
     let path = track(&scene, 1);
     for (tick, p) in path.iter().enumerate() {
-        assert!(p[0] < -0.025, "tick {tick}: the ball's centre at x = {}", p[0]);
+        assert!(
+            p[0] < -0.025,
+            "tick {tick}: the ball's centre at x = {}",
+            p[0]
+        );
     }
     // It stopped at the wall: its surface within a centimetre of the near face.
     let last = path.last().expect("ticks");
