@@ -201,14 +201,14 @@ impl<R: Real> RigidSystem<R> {
         let transforms = &self.scratch.transforms;
         let mut sweeps: Vec<Sweep<R>> = Vec::new();
         let mut bullets = false;
-        for i in 0..bodies.len().min(transforms.len()) {
+        for (i, placement) in transforms.iter().enumerate().take(bodies.len()) {
             if !bodies.is_awake_dynamic(i) || bodies.sensor[i] {
                 continue;
             }
             let Some(extent) = core_extent(&bodies.shape[i]) else {
                 continue;
             };
-            let start = transforms[i].translation;
+            let start = placement.translation;
             let delta = bodies.position[i] - start;
             if !longer_than(delta, extent * fast_fraction::<R>()) {
                 continue;
