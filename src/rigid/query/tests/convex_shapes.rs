@@ -503,6 +503,26 @@ fn cylinders_cones_and_hulls_cast_onto_the_ground_and_overlap_a_box() {
             "{hit:?}"
         );
     }
+    // Sideways onto the box's −x face at x = 4.5: the cylinder's side (r = 0.5) arrives
+    // after 4 m, the normal out of the face.
+    let hit = sys
+        .cast_shape(
+            &cylinder(0.5, 0.25),
+            v(0.0, 1.0, 0.0),
+            Quat::IDENTITY,
+            v(1.0, 0.0, 0.0),
+            fx(10.0),
+            &f,
+        )
+        .expect("the cylinder reaches the box");
+    assert!(
+        (hit.distance.to_f64() - 4.0).abs() <= 2.0 * DISTANCE_TOLERANCE,
+        "{hit:?}"
+    );
+    assert!(
+        (hit.normal.to_f64()[0] + 1.0).abs() <= NORMAL_TOLERANCE,
+        "{hit:?}"
+    );
     // And they overlap what they touch.
     let over = sys.overlap(&cone(0.5, 0.75), v(4.2, 1.0, 0.0), Quat::IDENTITY, &f);
     assert_eq!(over.len(), 1);
