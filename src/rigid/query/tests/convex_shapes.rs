@@ -449,9 +449,10 @@ fn closest_points_of_cylinders_cones_and_hulls() {
     assert!(at(0.2, 0.2, 0.2).inside);
 }
 
-fn check_point(got: PointProjection<F>, distance: f64, point: D3, what: &str)
-// ok-det: f64 reference
-{
+/// A reference distance, m.
+type Metres = f64; // ok-det: f64 reference
+
+fn check_point(got: PointProjection<F>, distance: Metres, point: D3, what: &str) {
     if distance == 0.0 {
         assert!(got.inside, "{what}: {got:?}");
         return;
