@@ -149,7 +149,7 @@ fn scaled_up<R: Real>(v: Vec3<R>) -> (Vec3<R>, u32) {
 struct Triangle<R: Real> {
     /// Point indices, counter-clockwise seen from outside.
     corners: [u32; 3],
-    /// `neighbours[i]`: the triangle across the edge corners[i] → corners[i + 1].
+    /// `neighbours[i]`: the triangle across the edge `corners[i]` → `corners[i + 1]`.
     neighbours: [u32; 3],
     /// Outward unit normal in the scaled units (zero when the triangle has no area).
     normal: Vec3<R>,

@@ -412,27 +412,9 @@ pub(super) fn ray_capsule<R: Real>(radius: R, half_height: R, ray: &Ray<R>) -> O
         direction: ray.direction,
         max: ray.max - skip,
     };
-    let (o, d) = (near.origin, near.direction);
-    let mut best: Option<Crossing<R>> = None;
-    let a = d.x * d.x + d.z * d.z;
-    let b = o.x * d.x + o.z * d.z;
-    let k = o.x * o.x + o.z * o.z - radius * radius;
-    if k > R::ZERO && b < R::ZERO {
-        let discriminant = b * b - a * k;
-        if discriminant >= R::ZERO {
-            let t = clamped_ratio(k, discriminant.sqrt() - b, near.limit());
-            let p = near.at(t);
-            if t <= near.max && p.y.abs() <= half_height {
-                let normal = Vec3::new(p.x, R::ZERO, p.z)
-                    .try_normalize()
-                    .map_or(-d, |(n, _)| n);
-                best = Some(Crossing::Enters {
-                    distance: t,
-                    normal,
-                });
-            }
-        }
-    }
+    let d = near.direction;
+    let mut best: Option<Crossing<R>> = ray_tube(radius, half_height, &near)
+        .map(|(distance, normal)| Crossing::Enters { distance, normal });
     for end in [-half_height, half_height] {
         let centre = Vec3::new(R::ZERO, end, R::ZERO);
         if let Some(hit) = ray_sphere(centre, radius, &near)
@@ -450,6 +432,34 @@ pub(super) fn ray_capsule<R: Real>(radius: R, half_height: R, ray: &Ray<R>) -> O
             distance: skip + distance,
             normal,
         },
+    })
+}
+
+/// Where a ray from outside the infinite cylinder x² + z² ≤ r² (m) enters its side between
+/// y = −h and y = h: (o_x + t d_x)² + (o_z + t d_z)² = r², i.e. a t² + 2b t + k = 0 with
+/// a = d_x² + d_z², b = o_x d_x + o_z d_z, k = o_x² + o_z² − r² (m²), entered when k > 0,
+/// b < 0 and b² ≥ a k, at t = k / (−b + √(b² − a k)) (m, the form that does not cancel),
+/// kept when t is within the ray and |y| ≤ h there; the normal (x, 0, z)/r (−d when that
+/// is too short to normalise). The side of capsules and cylinders.
+pub(super) fn ray_tube<R: Real>(radius: R, half_height: R, ray: &Ray<R>) -> Option<(R, Vec3<R>)> {
+    let (o, d) = (ray.origin, ray.direction);
+    let a = d.x * d.x + d.z * d.z;
+    let b = o.x * d.x + o.z * d.z;
+    let k = o.x * o.x + o.z * o.z - radius * radius;
+    if k <= R::ZERO || b >= R::ZERO {
+        return None;
+    }
+    let discriminant = b * b - a * k;
+    if discriminant < R::ZERO {
+        return None;
+    }
+    let t = clamped_ratio(k, discriminant.sqrt() - b, ray.limit());
+    let p = ray.at(t);
+    (t <= ray.max && p.y.abs() <= half_height).then(|| {
+        let normal = Vec3::new(p.x, R::ZERO, p.z)
+            .try_normalize()
+            .map_or(-d, |(n, _)| n);
+        (t, normal)
     })
 }
 

@@ -11,7 +11,7 @@
 //! The answers follow [`ray`](super::ray): [`Crossing::Inside`] when the origin is in the
 //! solid (surface included), else the entry distance and the outward unit normal.
 
-use super::ray::{Crossing, Ray, clamped_ratio};
+use super::ray::{Crossing, Ray, clamped_ratio, ray_tube};
 use super::unit_direction;
 use crate::math::{Real, Vec3};
 
@@ -104,12 +104,9 @@ fn entered<R: Real>(skip: R, hit: Option<(R, Vec3<R>)>) -> Option<Crossing<R>> {
 
 /// Ray (in the cylinder frame) against the solid cylinder x² + z² ≤ r², |y| ≤ h (m).
 ///
-/// Inside when the origin is in it. Otherwise, from the skip point o: the side, where
-/// (o_x + t d_x)² + (o_z + t d_z)² = r², i.e. a t² + 2b t + k = 0 with a = d_x² + d_z²,
-/// b = o_x d_x + o_z d_z, k = o_x² + o_z² − r² (m²), entered (when k > 0, b < 0 and
-/// b² ≥ a k) at t = k / (−b + √(b² − a k)), kept when |y| ≤ h there, normal (x, 0, z)/r;
-/// and the caps y = ±h, normal ±y. A ray along the axis (a = 0) meets only the caps. The
-/// nearest wins, the side on ties (a ray through the rim).
+/// Inside when the origin is in it. Otherwise, from the skip point: the side
+/// ([`ray_tube`]) and the caps y = ±h, normal ±y. A ray along the axis meets only the
+/// caps. The nearest wins, the side on ties (a ray through the rim).
 pub(super) fn ray_cylinder<R: Real>(
     radius: R,
     half_height: R,
@@ -119,24 +116,7 @@ pub(super) fn ray_cylinder<R: Real>(
         return Some(Crossing::Inside);
     }
     let (skip, near) = skipped(ray, half_height + radius)?;
-    let (o, d) = (near.origin, near.direction);
-    let a = d.x * d.x + d.z * d.z;
-    let b = o.x * d.x + o.z * d.z;
-    let k = o.x * o.x + o.z * o.z - radius * radius;
-    let mut best = None;
-    if k > R::ZERO && b < R::ZERO {
-        let discriminant = b * b - a * k;
-        if discriminant >= R::ZERO {
-            let t = clamped_ratio(k, discriminant.sqrt() - b, near.limit());
-            let p = near.at(t);
-            if t <= near.max && p.y.abs() <= half_height {
-                let normal = Vec3::new(p.x, R::ZERO, p.z)
-                    .try_normalize()
-                    .map_or(-d, |(n, _)| n);
-                best = Some((t, normal));
-            }
-        }
-    }
+    let mut best = ray_tube(radius, half_height, &near);
     best = nearer(best, cap(&near, half_height, true, radius));
     best = nearer(best, cap(&near, -half_height, false, radius));
     entered(skip, best)
