@@ -125,13 +125,15 @@ fn core_of<R: Real>(shape: &Shape<R>) -> Option<(Vec3<R>, R)> {
 /// The core extent e of a body's shape (m): the smallest inscribed radius over its parts
 /// ([`core_of`]); `None` for a shape without one (a plane).
 fn core_extent<R: Real>(shape: &Shape<R>) -> Option<R> {
-    let mut extent: Option<R> = None;
-    for_each_part(shape, &Transform::IDENTITY, |_, part, _| {
-        if let Some((_, radius)) = core_of(part) {
-            extent = Some(extent.map_or(radius, |e| e.min(radius)));
-        }
-    });
-    extent
+    let radius = |part: &Shape<R>| core_of(part).map(|(_, radius)| radius);
+    match shape {
+        // Parts are never compounds (the scene checks refuse them).
+        Shape::Compound { parts } => parts
+            .iter()
+            .filter_map(|part| radius(&part.shape))
+            .reduce(R::min),
+        other => radius(other),
+    }
 }
 
 /// Whether a displacement `delta` (m) is longer than `threshold` (m ≥ 0), without squaring

@@ -374,6 +374,7 @@ pub(crate) mod tests {
     use crate::math::{Fx, Quat};
     use crate::rigid::convex::hull::{ConvexHull, HullFace};
     use crate::rigid::convex::support::Convex;
+    use crate::rigid::query::unit_direction;
 
     /// A hull built by hand from its vertices and faces (vertex loops counter-clockwise
     /// from outside), for tests before the quickhull lands.
@@ -383,7 +384,7 @@ pub(crate) mod tests {
         let mut edges = Vec::new();
         for face in loops {
             let [p0, p1, p2] = [0, 1, 2].map(|i| vertices[usize::from(face[i])]);
-            let (normal, _) = (p1 - p0).cross(p2 - p0).try_normalize().unwrap();
+            let normal = unit_direction((p1 - p0).cross(p2 - p0)).expect("a face");
             faces.push(HullFace {
                 normal,
                 offset: normal.dot(p0),

@@ -2,7 +2,7 @@
 //! answers in `f64`, and hulls against the boxes they equal.
 
 use super::*;
-use crate::rigid::convex::{ConvexHull, HullFace};
+use crate::rigid::convex::gjk;
 
 fn cylinder(r: f64, h: f64) -> Shape<F> // ok-det: f64 reference
 {
@@ -21,53 +21,19 @@ fn cone(r: f64, h: f64) -> Shape<F> // ok-det: f64 reference
 }
 
 /// A hull built by hand (the construction is not needed): `rings` lists each face's
-/// vertex indices counter-clockwise seen from outside; normals and offsets follow.
+/// vertex indices counter-clockwise seen from outside ([`gjk::tests::hand_hull`]).
 pub(super) fn hand_hull(vertices: Vec<Vec3<F>>, rings: &[&[u16]]) -> Shape<F> {
-    let mut faces = Vec::new();
-    let mut face_vertices = Vec::new();
-    let mut edges = Vec::new();
-    for ring in rings {
-        let at = |k: usize| vertices[usize::from(ring[k])];
-        let normal = unit_direction((at(1) - at(0)).cross(at(2) - at(0))).expect("a face");
-        faces.push(HullFace {
-            normal,
-            offset: normal.dot(at(0)),
-            first: face_vertices.len() as u16,
-            count: ring.len() as u16,
-        });
-        face_vertices.extend_from_slice(ring);
-        for k in 0..ring.len() {
-            let (i, j) = (ring[k], ring[(k + 1) % ring.len()]);
-            edges.push([i.min(j), i.max(j)]);
-        }
-    }
-    edges.sort_unstable();
-    edges.dedup();
     Shape::ConvexHull {
-        hull: ConvexHull {
-            vertices,
-            faces,
-            face_vertices,
-            edges,
-        },
+        hull: gjk::tests::hand_hull(&vertices, rings),
     }
 }
 
-/// The box |x_k| ≤ h_k as a hull, faces in the order −x, +x, −y, +y, −z, +z.
+/// The box |x_k| ≤ h_k as a hull, faces in the order −x, +x, −y, +y, −z, +z
+/// ([`gjk::tests::cube_hull`]).
 pub(super) fn cube_hull(h: Vec3<F>) -> Shape<F> {
-    let corner = |i: u16| {
-        let pick = |bit: u16, e: F| if i & bit == 0 { -e } else { e };
-        Vec3::new(pick(1, h.x), pick(2, h.y), pick(4, h.z))
-    };
-    let rings: [&[u16]; 6] = [
-        &[0, 4, 6, 2],
-        &[1, 3, 7, 5],
-        &[0, 1, 5, 4],
-        &[2, 6, 7, 3],
-        &[0, 2, 3, 1],
-        &[4, 5, 7, 6],
-    ];
-    hand_hull((0..8).map(corner).collect(), &rings)
+    Shape::ConvexHull {
+        hull: gjk::tests::cube_hull(h),
+    }
 }
 
 /// The tetrahedron with vertices (0,0,0), (1,0,0), (0,1,0), (0,0,1), scaled by `s`.
