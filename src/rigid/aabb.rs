@@ -73,6 +73,18 @@ impl<R: Real> Aabb<R> {
                 Rounded::of(shape).map(|convex| Self::of_convex(&convex.core, transform))
             }
             Shape::Plane { .. } => None,
+            Shape::TriMesh { .. } | Shape::HeightField { .. } => {
+                let bounds = shape.triangles()?.bounds();
+                let local_centre = (bounds.min + bounds.max) * R::HALF;
+                let h = (bounds.max - bounds.min) * R::HALF;
+                let [c0, c1, c2] = transform.rotation.cols;
+                let half = c0.abs() * h.x + c1.abs() * h.y + c2.abs() * h.z;
+                let centre = transform.point(local_centre);
+                Some(Self {
+                    min: centre - half,
+                    max: centre + half,
+                })
+            }
             Shape::Compound { parts } => parts
                 .iter()
                 .filter_map(|part| {

@@ -326,7 +326,8 @@ fn centred_on_mass<R: Real>(shape: Shape<R>, centre: Vec3<R>) -> Shape<R> {
     }
 }
 
-/// A plane only on a static body, not inside a compound; sizes positive and bounded; a
+/// A plane only on a static body, a mesh or a heightfield only on a static or kinematic
+/// one, neither inside a compound; sizes positive and bounded; a
 /// plane's normal of unit length (it is not normalised for the user).
 fn check_shape<R: Real>(shape: &Shape<R>, kind: BodyKind) -> Result<(), SceneError> {
     let limit = R::from_int(MAX_MAGNITUDE);
@@ -387,6 +388,21 @@ fn check_shape<R: Real>(shape: &Shape<R>, kind: BodyKind) -> Result<(), SceneErr
                 None => Ok(()),
             }
         }
+        Shape::TriMesh { .. } | Shape::HeightField { .. } => {
+            // The mesh checked its own data when it was made.
+            if kind == BodyKind::Dynamic {
+                let name = if matches!(shape, Shape::TriMesh { .. }) {
+                    "TriMesh"
+                } else {
+                    "HeightField"
+                };
+                return Err(SceneError::new(
+                    name,
+                    "a mesh or a heightfield can only be a static or kinematic body",
+                ));
+            }
+            Ok(())
+        }
         Shape::Plane { normal, offset } => {
             if kind != BodyKind::Static {
                 return Err(SceneError::new(
@@ -416,7 +432,13 @@ fn check_shape<R: Real>(shape: &Shape<R>, kind: BodyKind) -> Result<(), SceneErr
             }
             for (k, part) in parts.iter().enumerate() {
                 let field = format!("Compound.parts[{k}]");
-                if matches!(part.shape, Shape::Compound { .. } | Shape::Plane { .. }) {
+                if matches!(
+                    part.shape,
+                    Shape::Compound { .. }
+                        | Shape::Plane { .. }
+                        | Shape::TriMesh { .. }
+                        | Shape::HeightField { .. }
+                ) {
                     return Err(SceneError::new(
                         format!("{field}.shape"),
                         "a part must be a sphere, box, capsule, cylinder, cone or convex hull",

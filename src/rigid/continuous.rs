@@ -85,8 +85,8 @@ fn core_fraction<R: Real>() -> R {
 /// (0, −h/2, 0), the smaller of its height above the base, h/2, and its distance to the
 /// side, 3rh/(2√(r² + 4h²)), bounded below by 3rh/(2(r + 2h)) (√(r² + 4h²) ≤ r + 2h);
 /// hull: about its origin (its centre of mass once in a dynamic body), the nearest face
-/// offset, 0 when the origin is outside or the hull has no faces. `None` for a plane or a
-/// compound.
+/// offset, 0 when the origin is outside or the hull has no faces. `None` for a plane, a
+/// compound, a mesh or a heightfield.
 fn core_of<R: Real>(shape: &Shape<R>) -> Option<(Vec3<R>, R)> {
     let centred = |radius: R| Some((Vec3::ZERO, radius));
     match shape {
@@ -118,7 +118,10 @@ fn core_of<R: Real>(shape: &Shape<R>) -> Option<(Vec3<R>, R)> {
                 .reduce(|a, b| a.min(b));
             centred(nearest.unwrap_or(R::ZERO).max(R::ZERO))
         }
-        Shape::Plane { .. } | Shape::Compound { .. } => None,
+        Shape::Plane { .. }
+        | Shape::Compound { .. }
+        | Shape::TriMesh { .. }
+        | Shape::HeightField { .. } => None,
     }
 }
 

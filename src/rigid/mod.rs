@@ -12,7 +12,8 @@
 //! [`bodies`] structure-of-arrays storage · [`system`] the system and its step ·
 //! [`commands`] inputs · [`hashing`] canonical state · [`metrics`] reporting.
 //!
-//! Geometry: [`shape`] shapes · [`convex`] hulls and support mappings · [`mass`] mass properties · [`transform`] placements ·
+//! Geometry: [`shape`] shapes · [`convex`] hulls and support mappings · [`mesh`] triangle meshes and
+//! heightfields · [`mass`] mass properties · [`transform`] placements ·
 //! [`aabb`] bounding boxes · [`manifold`] contact manifolds · [`broadphase`] pairs ·
 //! [`narrowphase`] manifolds per shape pair.
 //!
@@ -47,12 +48,14 @@ pub mod joints;
 pub mod manifold;
 pub mod mass;
 pub mod material;
+pub mod mesh;
 mod metrics;
 pub mod narrowphase;
 pub mod query;
 mod recycle;
 mod sensors;
 pub mod shape;
+pub mod shape_serde;
 mod sleep;
 mod solve;
 pub(crate) mod solver;
@@ -70,6 +73,7 @@ pub use joints::{JointDesc, JointEvent, JointGrid, JointKind, JointsDesc, Limits
 pub use manifold::{MAX_MANIFOLD_POINTS, Manifold, ManifoldPoint};
 pub use mass::MassProperties;
 pub use material::Material;
+pub use mesh::{HeightField, MeshError, TriMesh};
 pub use metrics::RigidMetrics;
 pub use query::{PointProjection, RayHit};
 pub use shape::{Part, Shape};

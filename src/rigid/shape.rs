@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use super::convex::ConvexHull;
 use super::mass::MassProperties;
+use super::mesh::{HeightField, TriMesh};
 use crate::math::{Fx, Quat, Real, Vec3};
 
 /// A part of a compound shape: a shape placed in the body frame.
@@ -25,8 +26,13 @@ pub struct Part<R: Real = Fx> {
 }
 
 /// A collision shape.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(bound = "")]
+///
+/// Written and read as its source data (`shape_serde.rs`): a scene writes
+/// `Sphere(radius: 0.5)`, `ConvexHull(points: [...])`, `TriMesh(vertices: [...],
+/// triangles: [...])` or `TriMesh(file: "level.obj")`, `HeightField(rows: .., columns: ..,
+/// scale: .., heights: [...])`.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(bound = "", try_from = "super::shape_serde::ShapeSource<R>")]
 pub enum Shape<R: Real = Fx> {
     /// A ball of radius `radius` (m).
     Sphere { radius: R },
@@ -50,15 +56,28 @@ pub enum Shape<R: Real = Fx> {
     Cone { radius: R, half_height: R },
     /// The convex hull of a set of points (m), computed deterministically when the shape is
     /// made (see [`ConvexHull::new`]); a scene writes `ConvexHull(points: [...])`.
-    ConvexHull {
-        #[serde(rename = "points")]
-        hull: ConvexHull<R>,
-    },
+    ConvexHull { hull: ConvexHull<R> },
+    /// A triangle mesh (see [`TriMesh`]), for static or kinematic level geometry; it has no
+    /// finite mass and cannot be a compound's part.
+    TriMesh { mesh: TriMesh<R> },
+    /// A grid of heights (see [`HeightField`]), for static or kinematic terrain; it has no
+    /// finite mass and cannot be a compound's part.
+    HeightField { field: HeightField<R> },
 }
 
 impl<R: Real> Shape<R> {
-    /// The mass properties of the shape filled at `density` (kg/m³). A plane, which has
-    /// no finite volume, and a compound made only of planes give
+    /// The mesh of a triangle mesh or a heightfield, `None` for other shapes.
+    #[inline]
+    pub fn triangles(&self) -> Option<&TriMesh<R>> {
+        match self {
+            Self::TriMesh { mesh } => Some(mesh),
+            Self::HeightField { field } => Some(field.mesh()),
+            _ => None,
+        }
+    }
+
+    /// The mass properties of the shape filled at `density` (kg/m³). A plane, a mesh or a
+    /// heightfield, which have no finite volume, and a compound made only of planes give
     /// [`MassProperties::ZERO`]: a body with such a shape can only be static or kinematic.
     pub fn mass_properties(&self, density: R) -> MassProperties<R> {
         match self {
@@ -77,7 +96,9 @@ impl<R: Real> Shape<R> {
                 half_height,
             } => MassProperties::cone_from_density(density, *radius, *half_height),
             Self::ConvexHull { hull } => hull.mass_properties(density),
-            Self::Plane { .. } => MassProperties::ZERO,
+            Self::Plane { .. } | Self::TriMesh { .. } | Self::HeightField { .. } => {
+                MassProperties::ZERO
+            }
             Self::Compound { parts } => {
                 let placed: Vec<MassProperties<R>> = parts
                     .iter()

@@ -779,7 +779,9 @@ fn compile_collider<R: Real>(c: &ColliderDesc<R>) -> Result<Collider<R>, SceneEr
         Shape::Compound { .. }
         | Shape::Cylinder { .. }
         | Shape::Cone { .. }
-        | Shape::ConvexHull { .. } => {
+        | Shape::ConvexHull { .. }
+        | Shape::TriMesh { .. }
+        | Shape::HeightField { .. } => {
             return Err(SceneError::new(
                 "shape",
                 "a soft-body collider is a plane, a sphere, a box or a capsule",

@@ -99,9 +99,10 @@ pub fn info(path: &Path) -> Result<Status, String> {
 }
 
 /// Body count (lattice copies counted) and the count of each shape, in declaration order,
-/// with the vertices and faces of the convex hulls among them.
+/// with the vertices and faces of the convex hulls and the triangles, vertices and active
+/// edges of the meshes and heightfields among them.
 fn rigid_summary(desc: &RigidDesc<Fx>) -> String {
-    const KINDS: [&str; 8] = [
+    const KINDS: [&str; 10] = [
         "sphere",
         "box",
         "capsule",
@@ -110,9 +111,13 @@ fn rigid_summary(desc: &RigidDesc<Fx>) -> String {
         "cylinder",
         "cone",
         "convex hull",
+        "triangle mesh",
+        "heightfield",
     ];
-    let mut counts = [0u64; 8];
+    let mut counts = [0u64; 10];
     let (mut vertices, mut faces) = (0u64, 0u64);
+    // Triangles, vertices and active edges of the meshes, then of the heightfields.
+    let mut meshes = [[0u64; 3]; 2];
     for body in &desc.bodies {
         let copies = copies(body.grid.map(|g| g.count));
         let kind = match &body.shape {
@@ -128,6 +133,24 @@ fn rigid_summary(desc: &RigidDesc<Fx>) -> String {
                 faces = faces.saturating_add(hull.faces().len() as u64 * copies);
                 7
             }
+            Shape::TriMesh { .. } | Shape::HeightField { .. } => {
+                let kind = if matches!(body.shape, Shape::TriMesh { .. }) {
+                    8
+                } else {
+                    9
+                };
+                if let Some(mesh) = body.shape.triangles() {
+                    let stats = [
+                        mesh.triangles().len(),
+                        mesh.vertices().len(),
+                        mesh.active_edge_count(),
+                    ];
+                    for (total, n) in meshes[kind - 8].iter_mut().zip(stats) {
+                        *total = total.saturating_add(n as u64 * copies);
+                    }
+                }
+                kind
+            }
         };
         counts[kind] = counts[kind].saturating_add(copies);
     }
@@ -137,6 +160,10 @@ fn rigid_summary(desc: &RigidDesc<Fx>) -> String {
         .filter(|&(_, n)| n > 0)
         .map(|(kind, n)| match *kind {
             "convex hull" => format!("{n} {kind} ({vertices} vertices, {faces} faces)"),
+            "triangle mesh" | "heightfield" => {
+                let [t, v, e] = meshes[usize::from(*kind == "heightfield")];
+                format!("{n} {kind} ({t} triangles, {v} vertices, {e} active edges)")
+            }
             _ => format!("{n} {kind}"),
         })
         .collect();

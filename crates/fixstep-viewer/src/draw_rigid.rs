@@ -138,6 +138,18 @@ fn draw_shape<R: Real>(
                 .collect();
             push_faces(&faces, pose, colour, layer, out);
         }
+        Shape::TriMesh { .. } | Shape::HeightField { .. } => {
+            let Some(mesh) = shape.triangles() else {
+                return;
+            };
+            let vertices: Vec<P3> = mesh.vertices().iter().map(|v| v.to_f64()).collect();
+            let faces: Vec<Vec<P3>> = mesh
+                .triangles()
+                .iter()
+                .map(|t| t.iter().map(|&i| vertices[i as usize]).collect())
+                .collect();
+            push_faces(&faces, pose, colour, layer, out);
+        }
         // The half-space n · x ≤ offset in the body frame is n_w · x ≤ offset + n_w · t in
         // the world, with n_w = R n.
         Shape::Plane { normal, offset } => {

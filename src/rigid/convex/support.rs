@@ -43,8 +43,8 @@ pub struct Rounded<'a, R: Real> {
 }
 
 impl<'a, R: Real> Rounded<'a, R> {
-    /// The shape as a rounded core, or `None` for a plane or a compound (not convex, or
-    /// unbounded).
+    /// The shape as a rounded core, or `None` for a plane, a compound, a mesh or a
+    /// heightfield (not convex, or unbounded).
     pub fn of(shape: &'a Shape<R>) -> Option<Self> {
         let sharp = |core| Self {
             core,
@@ -82,7 +82,10 @@ impl<'a, R: Real> Rounded<'a, R> {
                 half_height: *half_height,
             }),
             Shape::ConvexHull { hull } => sharp(Convex::Hull(hull)),
-            Shape::Plane { .. } | Shape::Compound { .. } => return None,
+            Shape::Plane { .. }
+            | Shape::Compound { .. }
+            | Shape::TriMesh { .. }
+            | Shape::HeightField { .. } => return None,
         })
     }
 

@@ -182,7 +182,10 @@ fn rank<R: Real>(shape: &Shape<R>) -> u8 {
         Shape::Cylinder { .. } => 3,
         Shape::Cone { .. } => 4,
         Shape::ConvexHull { .. } => 5,
-        Shape::Plane { .. } | Shape::Compound { .. } => 6,
+        Shape::Plane { .. }
+        | Shape::Compound { .. }
+        | Shape::TriMesh { .. }
+        | Shape::HeightField { .. } => 6,
     }
 }
 

@@ -201,6 +201,8 @@ pub fn collide<R: Real>(
         )
         .flipped(),
         (Shape::Compound { .. }, _) | (_, Shape::Compound { .. }) => Manifold::EMPTY,
+        (Shape::TriMesh { .. } | Shape::HeightField { .. }, _)
+        | (_, Shape::TriMesh { .. } | Shape::HeightField { .. }) => Manifold::EMPTY,
         // Every other pair has a cylinder, a cone or a hull.
         _ => convex_pair::convex_pair(a, xf_a, b, xf_b, margin),
     }
@@ -223,6 +225,9 @@ fn plane_against<R: Real>(
         Shape::Cylinder { .. } | Shape::Cone { .. } | Shape::ConvexHull { .. } => {
             convex_pair::plane_convex(plane, shape, xf, margin)
         }
-        Shape::Plane { .. } | Shape::Compound { .. } => Manifold::EMPTY,
+        Shape::Plane { .. }
+        | Shape::Compound { .. }
+        | Shape::TriMesh { .. }
+        | Shape::HeightField { .. } => Manifold::EMPTY,
     }
 }

@@ -99,6 +99,11 @@ fn project_convex<R: Real>(shape: &Shape<R>, xf: &Transform<R>, p: Vec3<R>) -> P
                 None => inside,
             }
         }
+        Shape::TriMesh { .. } | Shape::HeightField { .. } => Projected {
+            point: p,
+            inside: false,
+            distance: R::MAX,
+        },
         Shape::Plane { normal, offset } => {
             let n = xf.vector(*normal);
             let s = n.dot(p) - (*offset + n.dot(xf.translation));

@@ -286,6 +286,7 @@ pub(super) fn ray_shape<R: Real>(
             half_height,
         } => local_to_world(xf, ray_cone(*radius, *half_height, &ray.local(xf))),
         Shape::ConvexHull { hull } => local_to_world(xf, ray_hull(hull, &ray.local(xf))),
+        Shape::TriMesh { .. } | Shape::HeightField { .. } => None,
         Shape::Plane { normal, offset } => {
             let n = xf.vector(*normal);
             ray_plane(n, *offset + n.dot(xf.translation), ray)
