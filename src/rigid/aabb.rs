@@ -34,6 +34,19 @@ impl<R: Real> Aabb<R> {
         }
     }
 
+    /// The box, given in the world frame, as seen from the frame placed by `xf`: the
+    /// smallest box in that frame holding it, centre Rᵀ(c − t) and half extents |Rᵀ| h.
+    pub fn seen_from(&self, xf: &Transform<R>) -> Self {
+        let centre = xf.inverse_point((self.min + self.max) * R::HALF);
+        let h = (self.max - self.min) * R::HALF;
+        let [r0, r1, r2] = xf.rotation.transpose().cols;
+        let half = r0.abs() * h.x + r1.abs() * h.y + r2.abs() * h.z;
+        Self {
+            min: centre - half,
+            max: centre + half,
+        }
+    }
+
     /// The box grown by `margin` (m) on every side.
     pub fn expanded(&self, margin: R) -> Self {
         let m = Vec3::splat(margin);

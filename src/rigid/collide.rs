@@ -12,7 +12,9 @@
 //!    to its last narrowphase carries last step's contact with the bodies
 //!    ([`super::recycle`]). For every other pair the narrowphase computes its manifold
 //!    (part by part for compounds); each point takes the impulses of the point with the
-//!    same feature id in last step's contact of the same key. Box–box pairs have their
+//!    same feature id in last step's contact of the same key. A mesh or a heightfield
+//!    collides triangle by triangle: each triangle under the other shape's box, from the
+//!    mesh's tree, is a part of its own ([`for_each_manifold`]). Box–box pairs have their
 //!    separating-axis tests done up to [`LANES`] at a time, with the same results as one by
 //!    one.
 //! 4. Contacts between two bodies that do not move (sleeping or static) are kept as they
@@ -25,8 +27,9 @@ use super::contact::{Contact, ContactKey};
 use super::desc::BodyKind;
 use super::filter::CollisionFilter;
 use super::manifold::Manifold;
+use super::mesh::TriMesh;
 use super::narrowphase::{
-    BoxPair, box_box_contact, collide as collide_convex, separating_axes_batch,
+    BoxPair, box_box_contact, collide as collide_convex, collide_triangle, separating_axes_batch,
 };
 use super::recycle::{PairFrame, PairPose, recyclable};
 use super::shape::Shape;
@@ -353,15 +356,43 @@ fn below_plane<R: Real>(plane: &Shape<R>, aabb: &Aabb<R>) -> bool {
 }
 
 /// Calls `emit(part_a, part_b, manifold)` for every part pair of the two shapes that has
-/// contact points; a shape that is not a compound is part 0.
+/// contact points, in ascending (part_a, part_b) order; a compound's parts and a mesh's or
+/// heightfield's triangles are numbered, any other shape is part 0. Two meshes never
+/// collide.
 pub(super) fn for_each_manifold<R: Real>(
     a: &Shape<R>,
     xf_a: &Transform<R>,
     b: &Shape<R>,
     xf_b: &Transform<R>,
     margin: R,
-    mut emit: impl FnMut(u16, u16, &Manifold<R>),
+    mut emit: impl FnMut(u32, u32, &Manifold<R>),
 ) {
+    match (a.triangles(), b.triangles()) {
+        (Some(_), Some(_)) => return,
+        (Some(mesh), None) => {
+            // Triangle-major keys, while B's parts come part by part: sorted here.
+            let mut found = Vec::new();
+            for_each_part(b, xf_b, |part, shape, placed| {
+                triangle_manifolds(mesh, xf_a, shape, placed, margin, |t, manifold| {
+                    found.push((t, part, manifold));
+                });
+            });
+            found.sort_unstable_by_key(|&(t, part, _)| (t, part));
+            for (t, part, manifold) in &found {
+                emit(*t, *part, manifold);
+            }
+            return;
+        }
+        (None, Some(mesh)) => {
+            for_each_part(a, xf_a, |part, shape, placed| {
+                triangle_manifolds(mesh, xf_b, shape, placed, margin, |t, manifold| {
+                    emit(part, t, &manifold.flipped());
+                });
+            });
+            return;
+        }
+        (None, None) => {}
+    }
     for_each_part(a, xf_a, |part_a, shape_a, placed_a| {
         for_each_part(b, xf_b, |part_b, shape_b, placed_b| {
             let manifold = collide_convex(shape_a, placed_a, shape_b, placed_b, margin);
@@ -372,17 +403,45 @@ pub(super) fn for_each_manifold<R: Real>(
     });
 }
 
+/// Calls `emit(t, manifold)` for each triangle t of `mesh` placed by `xf_mesh` whose box
+/// overlaps the box of the convex `shape` placed by `xf` grown by `margin` (m), and that
+/// touches it within `margin`, in ascending t; the normal points from the triangle to the
+/// shape.
+fn triangle_manifolds<R: Real>(
+    mesh: &TriMesh<R>,
+    xf_mesh: &Transform<R>,
+    shape: &Shape<R>,
+    xf: &Transform<R>,
+    margin: R,
+    mut emit: impl FnMut(u32, Manifold<R>),
+) {
+    let Some(aabb) = Aabb::of_shape(shape, xf) else {
+        return;
+    };
+    let mut triangles = Vec::new();
+    mesh.for_each_triangle_in(&aabb.expanded(margin).seen_from(xf_mesh), |t| {
+        triangles.push(t);
+    });
+    triangles.sort_unstable();
+    for t in triangles {
+        let manifold = collide_triangle(mesh, t, xf_mesh, shape, xf, margin);
+        if manifold.count > 0 {
+            emit(t, manifold);
+        }
+    }
+}
+
 /// Calls `f(part, shape, placement)` for each convex part of `shape` placed by `xf`.
 pub(super) fn for_each_part<R: Real>(
     shape: &Shape<R>,
     xf: &Transform<R>,
-    mut f: impl FnMut(u16, &Shape<R>, &Transform<R>),
+    mut f: impl FnMut(u32, &Shape<R>, &Transform<R>),
 ) {
     match shape {
         Shape::Compound { parts } => {
             for (k, part) in parts.iter().enumerate() {
                 let local = Transform::from_pose(part.translation, part.rotation);
-                f(k as u16, &part.shape, &xf.compose(&local));
+                f(k as u32, &part.shape, &xf.compose(&local));
             }
         }
         _ => f(0, shape, xf),

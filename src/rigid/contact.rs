@@ -10,15 +10,15 @@ use serde::{Deserialize, Serialize};
 use super::manifold::{MAX_MANIFOLD_POINTS, Manifold};
 use crate::math::{Real, Vec3};
 
-/// Which shapes touch: two body slots (`body_a < body_b`) and the compound parts involved
-/// (0 for a shape that is not a compound). Contacts are kept sorted by key, so the
+/// Which shapes touch: two body slots (`body_a < body_b`) and the parts involved: a
+/// compound's part, a mesh's or a heightfield's triangle, 0 for any other shape. Contacts are kept sorted by key, so the
 /// solver visits them in the same order on every machine.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
 pub(crate) struct ContactKey {
     pub body_a: u32,
     pub body_b: u32,
-    pub part_a: u16,
-    pub part_b: u16,
+    pub part_a: u32,
+    pub part_b: u32,
 }
 
 /// One contact point and its accumulated normal impulse.

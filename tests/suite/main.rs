@@ -38,6 +38,7 @@ mod rigid_gyroscopic;
 mod rigid_hull;
 mod rigid_joints;
 mod rigid_mass;
+mod rigid_mesh;
 mod rigid_narrowphase;
 mod rigid_scenes;
 mod soft_bodies;

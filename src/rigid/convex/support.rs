@@ -31,6 +31,11 @@ pub enum Convex<'a, R: Real> {
     Cone { radius: R, half_height: R },
     /// A convex hull.
     Hull(&'a ConvexHull<R>),
+    /// A triangle of a mesh: its corners (m) and unit face normal, in the mesh's frame.
+    Triangle {
+        corners: [Vec3<R>; 3],
+        normal: Vec3<R>,
+    },
 }
 
 /// A convex shape as a core grown by `radius` (m): the points within `radius` of the core.
@@ -146,8 +151,20 @@ impl<R: Real> Convex<'_, R> {
                 }
             }
             Self::Hull(hull) => hull.vertices[hull.support_index(direction)],
+            Self::Triangle { corners, .. } => corners[triangle_support_index(&corners, direction)],
         }
     }
+}
+
+/// The corner k of a triangle with the largest d · v_k, the lowest k on ties.
+pub(crate) fn triangle_support_index<R: Real>(corners: &[Vec3<R>; 3], direction: Vec3<R>) -> usize {
+    let mut best = 0;
+    for k in 1..3 {
+        if direction.dot(corners[k]) > direction.dot(corners[best]) {
+            best = k;
+        }
+    }
+    best
 }
 
 /// The point of the circle of radius r in the xz plane farthest along d: r (d_x, d_z) /

@@ -59,19 +59,49 @@ pub(super) fn convex_pair<R: Real>(
     let (Some(ra), Some(rb)) = (Rounded::of(a), Rounded::of(b)) else {
         return Manifold::EMPTY;
     };
-    let pair = CorePair::new(&ra, xf_a, &rb, xf_b);
+    let (normal, gap, closest) = core_contact(&ra, xf_a, &rb, xf_b);
+    manifold_along(&ra, xf_a, &rb, xf_b, (normal, gap, closest), margin)
+}
+
+/// Normal (unit, A to B), core gap (m, negative when the cores overlap) and, when known,
+/// the closest points of the cores of A and B: GJK while apart, EPA and [`refine`] when
+/// they overlap (see the [module](self)).
+pub(super) fn core_contact<R: Real>(
+    ra: &Rounded<R>,
+    xf_a: &Transform<R>,
+    rb: &Rounded<R>,
+    xf_b: &Transform<R>,
+) -> CoreContact<R> {
+    let pair = CorePair::new(ra, xf_a, rb, xf_b);
     let (g, simplex) = gjk_simplex(&pair);
-    let (normal, gap, closest) = if g.overlap {
+    if g.overlap {
         match epa(&pair, &simplex) {
-            Some(p) if p.depth >= R::ZERO => refine(&ra, xf_a, &rb, xf_b, p.normal, p.depth),
+            Some(p) if p.depth >= R::ZERO => refine(ra, xf_a, rb, xf_b, p.normal, p.depth),
             _ => {
                 let n = unit(xf_b.translation - xf_a.translation).map_or(Vec3::Y, |(n, _)| n);
-                refine(&ra, xf_a, &rb, xf_b, n, R::ZERO)
+                refine(ra, xf_a, rb, xf_b, n, R::ZERO)
             }
         }
     } else {
         (g.normal, g.distance, Some((g.point_a, g.point_b)))
-    };
+    }
+}
+
+/// A contact of two cores: unit normal from A to B, core gap (m) and, when known, the
+/// cores' closest points (m).
+pub(super) type CoreContact<R> = (Vec3<R>, R, Option<(Vec3<R>, Vec3<R>)>);
+
+/// The manifold of two rounded cores touching along `contact` (see [`core_contact`]):
+/// empty when the surfaces are more than `margin` (m) apart, else the points of the
+/// cores' supporting features along ±n (see the [module](self)).
+pub(super) fn manifold_along<R: Real>(
+    ra: &Rounded<R>,
+    xf_a: &Transform<R>,
+    rb: &Rounded<R>,
+    xf_b: &Transform<R>,
+    (normal, gap, closest): CoreContact<R>,
+    margin: R,
+) -> Manifold<R> {
     let radii = ra.radius + rb.radius;
     if gap - radii > margin {
         return Manifold::EMPTY;
@@ -143,15 +173,14 @@ fn refine_shift<R: Real>() -> R {
 /// approximates a curved boundary only to its tolerance, which leaves the normal off by up
 /// to √(2 tol / ρ); GJK on separated cores converges closer, but on flat contacts may stop
 /// a little off, where EPA is exact.)
-#[allow(clippy::type_complexity)]
-fn refine<R: Real>(
+pub(super) fn refine<R: Real>(
     a: &Rounded<R>,
     xf_a: &Transform<R>,
     b: &Rounded<R>,
     xf_b: &Transform<R>,
     normal: Vec3<R>,
     depth: R,
-) -> (Vec3<R>, R, Option<(Vec3<R>, Vec3<R>)>) {
+) -> CoreContact<R> {
     let shift = depth + refine_shift();
     let offset = normal * shift;
     let moved = Transform {

@@ -30,6 +30,7 @@
 //! | box–box | `box_box.rs` (with `clip.rs`; separating axes in `box_box/axes.rs`, eight pairs at a time in `box_box/avx512.rs`; a face contact's points to the world frame in `box_box/world_points.rs`) | 1 to 4 |
 //! | plane–sphere, plane–capsule, plane–box | `plane.rs` | 1, 1–2, 1–4 |
 //! | any pair with a cylinder, a cone or a hull; plane against one | `convex_pair.rs` (GJK and EPA on the cores, supporting features in `supporting_face.rs`, clipped in `face_clip.rs`) | 1 to 4 |
+//! | a triangle of a mesh or a heightfield against any convex shape | `triangle.rs` (the convex machinery, internal edges removed), called once per triangle under the shape by the collide stage | 1 to 4 |
 //!
 //! Shared helpers: `segments.rs` (closest points on segments), `clip.rs` (face clipping and
 //! the choice of four points), `tolerance.rs` (thresholds and guarded normalisation).
@@ -65,10 +66,12 @@ mod sphere_capsule;
 mod sphere_sphere;
 mod supporting_face;
 pub(crate) mod tolerance;
+mod triangle;
 
 pub(crate) use self::box_box::{BoxPair, contact as box_box_contact, separating_axes_batch};
 use self::plane::WorldPlane;
 use self::segments::Segment;
+pub(crate) use self::triangle::collide_triangle;
 use super::manifold::Manifold;
 use super::shape::Shape;
 use super::transform::Transform;

@@ -15,6 +15,10 @@
 //! - cone: the base octagon (ids 16 + k) when the direction is within the flat sine (1/4, see [`flat_sine_squared`]) of −y,
 //!   the side segment apex–rim (ids 1 and 64 + 2 × octant) when within it of the side's
 //!   normal, else the support point (apex 1, rim 64 + 2 × octant).
+//! - triangle: the whole triangle (ids 0, 1, 2, the corners) when the direction is within
+//!   the flat sine of ±its normal; else the edge from the support corner that the direction
+//!   is within the flat sine of perpendicular to (the nearer to perpendicular of the two),
+//!   else the support corner.
 //!
 //! Polygons of 3 or more points are counter-clockwise seen from outside and come with the
 //! face's outward unit normal.
@@ -140,6 +144,7 @@ pub(super) fn supporting_feature<R: Real>(
             radius,
             half_height,
         } => cone_feature(&mut local, radius, half_height, d, near_axis),
+        Convex::Triangle { corners, normal } => triangle_feature(&mut local, &corners, normal, d),
     }
     if local.count >= 3 {
         orient(&mut local);
@@ -245,6 +250,47 @@ fn cone_feature<R: Real>(
         out.push(apex, 1);
     } else {
         out.push(base, 64 + 2 * octant);
+    }
+}
+
+/// The triangle's supporting feature along local d (see the module).
+fn triangle_feature<R: Real>(
+    out: &mut Feature<R>,
+    corners: &[Vec3<R>; 3],
+    normal: Vec3<R>,
+    d: Vec3<R>,
+) {
+    let dn = d.dot(normal);
+    let d2 = d.length_squared();
+    if dn * dn >= (R::ONE - flat_sine_squared::<R>()) * d2 {
+        for (k, &corner) in corners.iter().enumerate() {
+            out.push(corner, k as u32);
+        }
+        out.normal = if dn >= R::ZERO { normal } else { -normal };
+        return;
+    }
+    let k = crate::rigid::convex::support::triangle_support_index(corners, d);
+    // The edges at corner k, as (other corner, |d · u|² / |u|²) with u the edge: the
+    // direction is across an edge when d · u is small against |d| |u|.
+    let mut best: Option<(usize, R, R)> = None;
+    for other in [(k + 1) % 3, (k + 2) % 3] {
+        let u = corners[other] - corners[k];
+        let (du, u2) = (d.dot(u), u.length_squared());
+        let across = du * du <= flat_sine_squared::<R>() * d2 * u2;
+        // Compare du²/u² between the two edges without dividing: du₁² u₂² < du₂² u₁².
+        let nearer =
+            best.is_none_or(|(_, du_best, u2_best)| du * du * u2_best < du_best * du_best * u2);
+        if across && nearer {
+            best = Some((other, du, u2));
+        }
+    }
+    match best {
+        Some((other, _, _)) => {
+            let (first, second) = if k < other { (k, other) } else { (other, k) };
+            out.push(corners[first], first as u32);
+            out.push(corners[second], second as u32);
+        }
+        None => out.push(corners[k], k as u32),
     }
 }
 

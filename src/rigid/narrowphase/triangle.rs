@@ -1,0 +1,120 @@
+//! A convex shape against one triangle of a mesh or a heightfield, with internal edges
+//! removed.
+//!
+//! The triangle is a flat convex core ([`Convex::Triangle`]) and the pair goes through
+//! the convex machinery of `convex_pair.rs`: GJK while the cores are apart, EPA when they
+//! overlap (for a sphere's or a capsule's core, a point or a segment, whose difference
+//! with a flat triangle has no volume for EPA to work on, the face normal instead, on the
+//! side of the shape's centre), then the supporting features along the normal.
+//!
+//! **Internal edges.** A normal that is not the face normal ±n_f (|n · n_f| below
+//! 1 − 2⁻¹⁴, about 0.9°) comes from an edge or a corner of the triangle: the corners
+//! whose support n · v_k is within 2⁻¹⁶ m of the highest. When that edge or corner is
+//! inactive (flat or concave with its neighbours, `mesh/edges.rs`), the neighbouring
+//! triangles already hold the surface there, and the normal is replaced by ±n_f (the side
+//! of the plane the shape's centre is on) with the core gap measured along it, s = ±n_f · (s_B(∓n_f) − v₀): a body sliding
+//! over a flat mesh sees one flat floor, without bumps at the seams.
+//!
+//! The triangle is shape A: the normal points from the triangle towards the shape; the
+//! ids are those of `convex_pair.rs` with the triangle's corners as vertex ids 0 to 2.
+
+use super::convex_pair::{CoreContact, manifold_along, refine};
+use crate::math::{Real, Vec3};
+use crate::rigid::convex::epa::epa;
+use crate::rigid::convex::gjk::{CorePair, gjk_simplex};
+use crate::rigid::convex::{Convex, Rounded};
+use crate::rigid::manifold::Manifold;
+use crate::rigid::mesh::{EDGE_ACTIVE, TriMesh, VERTEX_ACTIVE};
+use crate::rigid::shape::Shape;
+use crate::rigid::transform::Transform;
+
+/// 1 − |n · n_f| (dimensionless) below which a normal is the face normal: 2⁻¹⁴.
+fn face_slack<R: Real>() -> R {
+    R::from_ratio(1, 1 << 14)
+}
+
+/// Distance (m) within which corners tie for the support along a normal: 2⁻¹⁶ m.
+fn corner_slack<R: Real>() -> R {
+    R::from_ratio(1, 1 << 16)
+}
+
+/// The manifold of triangle `triangle` of `mesh` placed by `xf_mesh` (A) and the convex
+/// `shape` placed by `xf` (B), within `margin` (m); empty for a shape that is not convex
+/// (a plane, a compound, a mesh). See the [module](self).
+pub(crate) fn collide_triangle<R: Real>(
+    mesh: &TriMesh<R>,
+    triangle: u32,
+    xf_mesh: &Transform<R>,
+    shape: &Shape<R>,
+    xf: &Transform<R>,
+    margin: R,
+) -> Manifold<R> {
+    let Some(rb) = Rounded::of(shape) else {
+        return Manifold::EMPTY;
+    };
+    let corners = mesh.corners(triangle);
+    let local_normal = mesh.normal(triangle);
+    let ra = Rounded {
+        core: Convex::Triangle {
+            corners,
+            normal: local_normal,
+        },
+        radius: R::ZERO,
+    };
+    let face = xf_mesh.vector(local_normal);
+    let origin = xf_mesh.point(corners[0]);
+    // The core gap along ±n_f: from the triangle's plane to B's core's lowest point.
+    let along_face = |side: Vec3<R>| -> CoreContact<R> {
+        let lowest = xf.point(rb.core.support(xf.inverse_vector(-side)));
+        (side, side.dot(lowest - origin), None)
+    };
+    let side_of = |n: Vec3<R>| if n.dot(face) >= R::ZERO { face } else { -face };
+    // The side of the triangle's plane the shape's centre is on (+n_f when in it).
+    let centre_side = side_of(xf.translation - origin);
+    let flat_core = matches!(rb.core, Convex::Point | Convex::Segment { .. });
+    let pair = CorePair::new(&ra, xf_mesh, &rb, xf);
+    let (g, simplex) = gjk_simplex(&pair);
+    let mut contact = if !g.overlap {
+        (g.normal, g.distance, Some((g.point_a, g.point_b)))
+    } else if flat_core {
+        along_face(centre_side)
+    } else {
+        match epa(&pair, &simplex) {
+            Some(p) if p.depth >= R::ZERO => refine(&ra, xf_mesh, &rb, xf, p.normal, p.depth),
+            _ => along_face(centre_side),
+        }
+    };
+    if contact.1 - rb.radius > margin {
+        return Manifold::EMPTY;
+    }
+    let normal = contact.0;
+    let aligned = normal.dot(face).abs();
+    if aligned < R::ONE - face_slack::<R>() {
+        let flags = mesh.data.flags[triangle as usize];
+        if !feature_active(&corners, xf_mesh.inverse_vector(normal), flags) {
+            contact = along_face(centre_side);
+            if contact.1 - rb.radius > margin {
+                return Manifold::EMPTY;
+            }
+        }
+    }
+    manifold_along(&ra, xf_mesh, &rb, xf, contact, margin)
+}
+
+/// Whether the triangle's feature along local direction `d` (the corners whose d · v_k
+/// is within [`corner_slack`] of the highest, for a unit d) is active: an edge's bit for
+/// two corners, a corner's bit for one, true for all three (a face).
+fn feature_active<R: Real>(corners: &[Vec3<R>; 3], d: Vec3<R>, flags: u8) -> bool {
+    let reach = corners.map(|c| d.dot(c));
+    let top = reach[0].max(reach[1]).max(reach[2]);
+    let near = reach.map(|r| top - r <= corner_slack::<R>());
+    match near {
+        [true, true, true] => true,
+        [true, true, false] => flags & (EDGE_ACTIVE << 0) != 0,
+        [false, true, true] => flags & (EDGE_ACTIVE << 1) != 0,
+        [true, false, true] => flags & (EDGE_ACTIVE << 2) != 0,
+        [true, false, false] => flags & VERTEX_ACTIVE != 0,
+        [false, true, false] => flags & (VERTEX_ACTIVE << 1) != 0,
+        _ => flags & (VERTEX_ACTIVE << 2) != 0,
+    }
+}
