@@ -11,13 +11,14 @@ pub mod joints;
 pub mod particles;
 pub mod rigid;
 pub mod soft;
+pub mod terrain;
 
 use fixstep::fluid::FluidSolver;
 use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 23] = [
+pub const BUILTIN_SCENES: [(&str, &str); 24] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -42,6 +43,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 23] = [
     (
         "bullets",
         "fast steel balls at a thin static wall, and bullets at a stack of boxes: continuous collision keeps them from passing through",
+    ),
+    (
+        "terrain",
+        "boxes, balls, cylinders and rocks tumble down a heightfield hill into a triangle-mesh bowl",
     ),
     (
         "balls",
@@ -149,6 +154,10 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
         "bullets" => {
             scene.rigid = Some(bullets::bullets());
             scene.ticks = 240;
+        }
+        "terrain" => {
+            scene.rigid = Some(terrain::terrain());
+            scene.ticks = 600;
         }
         "balls" => {
             scene.rigid = Some(rigid::balls(16));
