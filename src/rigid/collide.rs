@@ -369,6 +369,12 @@ pub(super) fn for_each_manifold<R: Real>(
 ) {
     match (a.triangles(), b.triangles()) {
         (Some(_), Some(_)) => return,
+        (Some(mesh), None) if !matches!(b, Shape::Compound { .. }) => {
+            triangle_manifolds(mesh, xf_a, b, xf_b, margin, |t, manifold| {
+                emit(t, 0, &manifold);
+            });
+            return;
+        }
         (Some(mesh), None) => {
             // Triangle-major keys, while B's parts come part by part: sorted here.
             let mut found = Vec::new();
@@ -418,12 +424,25 @@ fn triangle_manifolds<R: Real>(
     let Some(aabb) = Aabb::of_shape(shape, xf) else {
         return;
     };
-    let mut triangles = Vec::new();
+    // The triangles under the box, on the stack unless there are many.
+    const FEW: usize = 64;
+    let (mut few, mut count, mut many) = ([0u32; FEW], 0, Vec::new());
     mesh.for_each_triangle_in(&aabb.expanded(margin).seen_from(xf_mesh), |t| {
-        triangles.push(t);
+        if count < FEW {
+            few[count] = t;
+            count += 1;
+        } else {
+            many.push(t);
+        }
     });
+    let triangles = if many.is_empty() {
+        &mut few[..count]
+    } else {
+        many.extend_from_slice(&few);
+        &mut many[..]
+    };
     triangles.sort_unstable();
-    for t in triangles {
+    for &t in triangles.iter() {
         let manifold = collide_triangle(mesh, t, xf_mesh, shape, xf, margin);
         if manifold.count > 0 {
             emit(t, manifold);

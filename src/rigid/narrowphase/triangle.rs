@@ -49,6 +49,9 @@ pub(crate) fn collide_triangle<R: Real>(
     xf: &Transform<R>,
     margin: R,
 ) -> Manifold<R> {
+    if let Shape::Sphere { radius } = shape {
+        return sphere_triangle(mesh, triangle, xf_mesh, xf.translation, *radius, margin);
+    }
     let Some(rb) = Rounded::of(shape) else {
         return Manifold::EMPTY;
     };
@@ -99,6 +102,86 @@ pub(crate) fn collide_triangle<R: Real>(
         }
     }
     manifold_along(&ra, xf_mesh, &rb, xf, contact, margin)
+}
+
+/// Triangle A against the sphere of centre `centre` and `radius` (m) B, in closed form:
+/// the closest point q of the triangle to the centre c, in the mesh's frame — c's
+/// projection c − n_f (n_f · (c − v₀)) when it lies inside all three edges
+/// ((v_{k+1} − v_k) × (q − v_k) · n_f ≥ 0), else the nearest of the closest points on the
+/// three edges (v_k + t e_k, t = clamp((c − v_k) · e_k / e_k · e_k, 0, 1), the lowest k on
+/// ties). On the face, or on an inactive edge or corner (see the [module](self)), the
+/// normal is ±n_f on c's side and the separation |n_f · (c − v₀)| − r; on an active edge
+/// or corner, the normal is (c − q)/|c − q| and the separation |c − q| − r. One point, id
+/// 0, midway between the surfaces; empty beyond `margin` (m).
+fn sphere_triangle<R: Real>(
+    mesh: &TriMesh<R>,
+    triangle: u32,
+    xf_mesh: &Transform<R>,
+    centre: Vec3<R>,
+    radius: R,
+    margin: R,
+) -> Manifold<R> {
+    let c = xf_mesh.inverse_point(centre);
+    let v = mesh.corners(triangle);
+    let n = mesh.normal(triangle);
+    let height = n.dot(c - v[0]);
+    let reach = radius + margin;
+    if height.abs() > reach {
+        return Manifold::EMPTY;
+    }
+    let inside = (0..3).all(|k| {
+        let edge = v[(k + 1) % 3] - v[k];
+        edge.cross(c - v[k]).dot(n) >= R::ZERO
+    });
+    // The closest point and whether its feature pushes along the face normal.
+    let (q, flat) = if inside {
+        (c - n * height, true)
+    } else {
+        let flags = mesh.data.flags[triangle as usize];
+        let mut best: Option<(R, Vec3<R>, bool)> = None;
+        for k in 0..3 {
+            let (a, b) = (v[k], v[(k + 1) % 3]);
+            let e = b - a;
+            let along = (c - a).dot(e);
+            let length2 = e.length_squared();
+            let (point, active) = if along <= R::ZERO {
+                (a, flags & (VERTEX_ACTIVE << k) != 0)
+            } else if along >= length2 {
+                (b, flags & (VERTEX_ACTIVE << ((k + 1) % 3)) != 0)
+            } else {
+                (a + e * (along / length2), flags & (EDGE_ACTIVE << k) != 0)
+            };
+            let distance2 = (c - point).length_squared();
+            if best.is_none_or(|(d2, _, _)| distance2 < d2) {
+                best = Some((distance2, point, !active));
+            }
+        }
+        let (_, point, inactive) = best.unwrap_or((R::ZERO, v[0], true));
+        (point, inactive)
+    };
+    let side = if height >= R::ZERO { n } else { -n };
+    let (local_normal, separation) = if flat {
+        (side, height.abs() - radius)
+    } else {
+        match super::tolerance::unit(c - q) {
+            Some((u, distance)) => (u, distance - radius),
+            None => (side, height.abs() - radius),
+        }
+    };
+    if separation > margin {
+        return Manifold::EMPTY;
+    }
+    let normal = xf_mesh.vector(local_normal);
+    let mut manifold = Manifold {
+        normal,
+        ..Manifold::EMPTY
+    };
+    manifold.push(crate::rigid::manifold::ManifoldPoint {
+        point: centre - normal * (radius + separation * R::HALF),
+        separation,
+        id: 0,
+    });
+    manifold
 }
 
 /// Whether the triangle's feature along local direction `d` (the corners whose d · v_k
