@@ -60,7 +60,7 @@ pub(super) fn convex_pair<R: Real>(
         return Manifold::EMPTY;
     };
     let (normal, gap, closest) = core_contact(&ra, xf_a, &rb, xf_b);
-    manifold_along(&ra, xf_a, &rb, xf_b, (normal, gap, closest), margin)
+    manifold_along(&ra, xf_a, &rb, xf_b, (normal, gap, closest), margin, true)
 }
 
 /// Normal (unit, A to B), core gap (m, negative when the cores overlap) and, when known,
@@ -93,7 +93,9 @@ pub(super) type CoreContact<R> = (Vec3<R>, R, Option<(Vec3<R>, Vec3<R>)>);
 
 /// The manifold of two rounded cores touching along `contact` (see [`core_contact`]):
 /// empty when the surfaces are more than `margin` (m) apart, else the points of the
-/// cores' supporting features along ±n (see the [module](self)).
+/// cores' supporting features along ±n (see the [module](self)). When the features give
+/// no point, one point from the closest points (or the features) if `single_point`, else
+/// none.
 pub(super) fn manifold_along<R: Real>(
     ra: &Rounded<R>,
     xf_a: &Transform<R>,
@@ -101,6 +103,7 @@ pub(super) fn manifold_along<R: Real>(
     xf_b: &Transform<R>,
     (normal, gap, closest): CoreContact<R>,
     margin: R,
+    single_point: bool,
 ) -> Manifold<R> {
     let radii = ra.radius + rb.radius;
     if gap - radii > margin {
@@ -143,7 +146,7 @@ pub(super) fn manifold_along<R: Real>(
             points.add(on_a, on_b, normal.dot(on_b - on_a), 0);
         }
     }
-    if points.count == 0 {
+    if points.count == 0 && single_point {
         let (core_a, core_b) = closest.unwrap_or_else(|| {
             let p = if fa.count == 1 {
                 fa.points[0]

@@ -11,9 +11,12 @@
 //! 1 − 2⁻¹⁴, about 0.9°) comes from an edge or a corner of the triangle: the corners
 //! whose support n · v_k is within 2⁻¹⁶ m of the highest. When that edge or corner is
 //! inactive (flat or concave with its neighbours, `mesh/edges.rs`), the neighbouring
-//! triangles already hold the surface there, and the normal is replaced by ±n_f (the side
-//! of the plane the shape's centre is on) with the core gap measured along it, s = ±n_f · (s_B(∓n_f) − v₀): a body sliding
-//! over a flat mesh sees one flat floor, without bumps at the seams.
+//! triangles already hold the surface there: the normal is replaced by ±n_f (on the side
+//! of the plane the shape's centre is on), the core gap is measured along it,
+//! s = ±n_f · (s_B(∓n_f) − v₀), and only the points of the shape's supporting feature
+//! that lie over the triangle are kept (past the edge, the neighbour's face holds the
+//! shape). A body sliding over a flat mesh sees one flat floor, without bumps at the
+//! seams.
 //!
 //! The triangle is shape A: the normal points from the triangle towards the shape; the
 //! ids are those of `convex_pair.rs` with the triangle's corners as vertex ids 0 to 2.
@@ -99,9 +102,12 @@ pub(crate) fn collide_triangle<R: Real>(
             if contact.1 - rb.radius > margin {
                 return Manifold::EMPTY;
             }
+            // Only the points over this triangle: past its inactive edge, the
+            // neighbour's face holds the shape.
+            return manifold_along(&ra, xf_mesh, &rb, xf, contact, margin, false);
         }
     }
-    manifold_along(&ra, xf_mesh, &rb, xf, contact, margin)
+    manifold_along(&ra, xf_mesh, &rb, xf, contact, margin, true)
 }
 
 /// Triangle A against the sphere of centre `centre` and `radius` (m) B, in closed form:
