@@ -16,7 +16,8 @@
 //! s = ±n_f · (s_B(∓n_f) − v₀), and only the points of the shape's supporting feature
 //! that lie over the triangle are kept (past the edge, the neighbour's face holds the
 //! shape). A body sliding over a flat mesh sees one flat floor, without bumps at the
-//! seams.
+//! seams. A triangle none of whose edges and corners is active (most of a smooth
+//! terrain) therefore always gives the face normal, and skips GJK and EPA.
 //!
 //! The triangle is shape A: the normal points from the triangle towards the shape; the
 //! ids are those of `convex_pair.rs` with the triangle's corners as vertex ids 0 to 2.
@@ -77,6 +78,16 @@ pub(crate) fn collide_triangle<R: Real>(
     let side_of = |n: Vec3<R>| if n.dot(face) >= R::ZERO { face } else { -face };
     // The side of the triangle's plane the shape's centre is on (+n_f when in it).
     let centre_side = side_of(xf.translation - origin);
+    let flags = mesh.data.flags[triangle as usize];
+    if flags == 0 {
+        // No active edge or corner: whatever GJK found, the normal would become the face
+        // normal, so it is used from the start.
+        let contact = along_face(centre_side);
+        if contact.1 - rb.radius > margin {
+            return Manifold::EMPTY;
+        }
+        return manifold_along(&ra, xf_mesh, &rb, xf, contact, margin, false);
+    }
     let flat_core = matches!(rb.core, Convex::Point | Convex::Segment { .. });
     let pair = CorePair::new(&ra, xf_mesh, &rb, xf);
     let (g, simplex) = gjk_simplex(&pair);
@@ -96,7 +107,6 @@ pub(crate) fn collide_triangle<R: Real>(
     let normal = contact.0;
     let aligned = normal.dot(face).abs();
     if aligned < R::ONE - face_slack::<R>() {
-        let flags = mesh.data.flags[triangle as usize];
         if !feature_active(&corners, xf_mesh.inverse_vector(normal), flags) {
             contact = along_face(centre_side);
             if contact.1 - rb.radius > margin {
