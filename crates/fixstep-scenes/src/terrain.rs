@@ -11,13 +11,22 @@ use super::rigid::ground;
 /// Rows and columns of the hill's grid: 33 × 33 samples, 2048 triangles.
 const HILL_SAMPLES: u32 = 33;
 
-/// Cells along each side of the bowl: 24 × 24 squares, 1152 triangles.
+/// Cells of the bowl along x; along z it has as many as the hill (32), so that their
+/// edges meet sample for sample.
 const BOWL_CELLS: u32 = 24;
 
+/// How the level rises towards z = ±12 m, in metres, for w = z / 12 m ∈ [−1, 1] given as
+/// w = k / 16: 8 w⁴ = 8 k⁴ / 16⁴. The hill's east edge and the bowl's west edge both rise
+/// so, and meet.
+fn banks<R: Real>(k: i64) -> R {
+    R::from_ratio(8 * k.pow(4), 16i64.pow(4))
+}
+
 /// The hill: a 24 m × 24 m heightfield centred at x = −7 m (spanning x from −19 to 5 m),
-/// falling from 8 m at its west edge to 0 at its east edge as 8 (1 − u)² m, u = c / 32,
-/// with bumps of up to 0.25 m, (4 − |r mod 8 − 4|)(4 − |c mod 8 − 4|) / 64 m, that vanish
-/// on every eighth row and column, so that the east edge meets the bowl's rim at 0.
+/// falling from 8 m at its west edge as 8 (1 − u)² m, u = c / 32, with bumps of up to
+/// 0.25 m, (4 − |r mod 8 − 4|)(4 − |c mod 8 − 4|) / 64 m, that vanish on every eighth row
+/// and column, and banks rising towards its sides as u² times the [`banks`] profile, so
+/// that its east edge meets the bowl's west edge.
 pub fn hill<R: Real>() -> BodyDesc<R> {
     let n = HILL_SAMPLES;
     let last = i64::from(n - 1);
@@ -25,8 +34,11 @@ pub fn hill<R: Real>() -> BodyDesc<R> {
     let mut heights = Vec::with_capacity((n * n) as usize);
     for r in 0..n {
         for c in 0..n {
-            let fall = R::from_ratio(8 * (last - i64::from(c)).pow(2), last * last);
-            heights.push(fall + R::from_ratio(wave(r) * wave(c), 64));
+            let c64 = i64::from(c);
+            let fall = R::from_ratio(8 * (last - c64).pow(2), last * last);
+            let bumps = R::from_ratio(wave(r) * wave(c), 64);
+            let bank = banks::<R>(i64::from(r) - last / 2) * R::from_ratio(c64 * c64, last * last);
+            heights.push(fall + bumps + bank);
         }
     }
     let scale = Vec3::new(R::from_int(24), R::ONE, R::from_int(24));
@@ -38,31 +50,34 @@ pub fn hill<R: Real>() -> BodyDesc<R> {
     .fixed()
 }
 
-/// The bowl: a triangle mesh over a 14 m square (1152 triangles facing up) of the surface
-/// y = x²/8 + z²/6 m on its west half (x < 0) and y = x²/3 + z²/6 m on its east half,
-/// steeper so that what rolls in stays in, placed with its lowest point at
-/// (12, −6.125, 0) m: the middle of its west edge, 6.125 m up at x = 5 m, meets the foot of
-/// the hill at y = 0.
+/// The bowl: a triangle mesh over 14 m (x) by 24 m (z), 24 × 32 cells of two triangles
+/// facing up, placed at x = 5 m beside the hill. With u = x / 14 m ∈ [0, 1] from its west
+/// edge and w = z / 12 m ∈ [−1, 1], its surface is
+/// y = 10 u² − 12 u (1 − u) + 12 u w² + 8 w⁴ m: along its west edge (u = 0) the hill's
+/// east edge, dipping to −1.6 m at u = 3/11, rising to 10 m at the east edge and to 8 m
+/// and more at the sides, so that what rolls down the hill stays in.
 pub fn bowl<R: Real>() -> BodyDesc<R> {
-    let n = BOWL_CELLS;
-    let half = i64::from(n / 2);
-    // x = 7 d_i / 12 m with d_i = i − 12, so x² = 49 d_i² / 144 m², and likewise z.
-    let mut vertices = Vec::with_capacity(((n + 1) * (n + 1)) as usize);
-    for j in 0..=n {
+    let (n, rows) = (i64::from(BOWL_CELLS), i64::from(HILL_SAMPLES - 1));
+    let m = rows / 2;
+    let mut vertices = Vec::with_capacity(((n + 1) * (rows + 1)) as usize);
+    for j in 0..=rows {
         for i in 0..=n {
-            let (di, dj) = (i64::from(i) - half, i64::from(j) - half);
-            let steepness = if di < 0 { 8 } else { 3 };
-            let y =
-                R::from_ratio(49 * di * di, 144 * steepness) + R::from_ratio(49 * dj * dj, 144 * 6);
+            // u = i / n and w = (j − m) / m: y = (10 i² − 12 i (n − i)) / n² +
+            // 12 i (j − m)² / (n m²) + banks.
+            let k = j - m;
+            let y = R::from_ratio(10 * i * i - 12 * i * (n - i), n * n)
+                + R::from_ratio(12 * i * k * k, n * m * m)
+                + banks::<R>(k);
             vertices.push(Vec3::new(
-                R::from_ratio(7 * di, half),
+                R::from_ratio(14 * i, n),
                 y,
-                R::from_ratio(7 * dj, half),
+                R::from_ratio(12 * k, m),
             ));
         }
     }
-    let mut triangles = Vec::with_capacity((2 * n * n) as usize);
-    for j in 0..n {
+    let (n, rows) = (BOWL_CELLS, HILL_SAMPLES - 1);
+    let mut triangles = Vec::with_capacity((2 * n * rows) as usize);
+    for j in 0..rows {
         for i in 0..n {
             let v = j * (n + 1) + i;
             let (next_row, diagonal) = (v + n + 1, v + n + 2);
@@ -73,7 +88,7 @@ pub fn bowl<R: Real>() -> BodyDesc<R> {
     let mesh = TriMesh::new(vertices, triangles).expect("the bowl is a valid mesh");
     BodyDesc::new(
         Shape::TriMesh { mesh },
-        Vec3::new(R::from_int(12), R::from_ratio(-49, 8), R::ZERO),
+        Vec3::new(R::from_int(5), R::ZERO, R::ZERO),
     )
     .fixed()
 }
@@ -109,21 +124,21 @@ fn rock<R: Real>() -> ConvexHull<R> {
     ConvexHull::new(&points).expect("the rock's points span a volume")
 }
 
-/// A 3 × 4 lattice of `shape` bodies with friction 0.3, 1.2 m apart along x from x = −17 m and 0.9 m apart
+/// A 3 × 4 lattice of `shape` bodies with friction 0.3, 1.2 m apart along x from x = −17 m and 0.75 m apart
 /// along z from `z` (m), 8 m up, over the top of the hill.
 fn lattice<R: Real>(shape: Shape<R>, z: R) -> BodyDesc<R> {
     let mut body = BodyDesc::new(shape, Vec3::new(R::from_int(-17), R::from_int(8), z));
     body.material.friction = R::from_ratio(3, 10);
     body.grid = Some(Grid {
         count: (3, 1, 4),
-        spacing: Vec3::new(R::from_ratio(6, 5), R::ZERO, R::from_ratio(9, 10)),
+        spacing: Vec3::new(R::from_ratio(6, 5), R::ZERO, R::from_ratio(3, 4)),
     });
     body
 }
 
-/// The bodies: the ground plane 2 m below the bowl's bottom (for anything that leaves the
-/// level, at y = −8 m), the hill, the bowl, and 12 each of boxes (30 cm), balls (radius 15 cm),
-/// cylinders (radius 15 cm, 30 cm long) and rocks, in four bands across z.
+/// The bodies: the ground plane at y = −8 m (for anything that leaves the level), the hill, the bowl, and 12 each of boxes (30 cm), balls (radius 15 cm),
+/// cylinders (radius 15 cm, 30 cm long) and rocks, in four bands 2.7 m apart across z
+/// from z = −5.4 m.
 pub fn terrain<R: Real>() -> RigidDesc<R> {
     let mut floor = ground::<R>();
     floor.position = Vec3::new(R::ZERO, R::from_int(-8), R::ZERO);
@@ -141,7 +156,7 @@ pub fn terrain<R: Real>() -> RigidDesc<R> {
     ];
     let mut bodies = vec![floor, hill(), bowl()];
     for (band, shape) in shapes.into_iter().enumerate() {
-        let z = R::from_ratio(-63 + 36 * band as i64, 10);
+        let z = R::from_ratio(-54 + 27 * band as i64, 10);
         bodies.push(lattice(shape, z));
     }
     RigidDesc {

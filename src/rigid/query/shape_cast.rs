@@ -16,8 +16,10 @@
 //! is at most 2⁻²⁰ m, or the overlap at most that deep (to rounding). Shapes that already
 //! touch or overlap at the start hit at distance 0.
 
+use super::super::aabb::Aabb;
 use super::super::manifold::Manifold;
-use super::super::narrowphase::collide;
+use super::super::mesh::TriMesh;
+use super::super::narrowphase::{collide, collide_triangle};
 use super::super::shape::Shape;
 use super::super::transform::Transform;
 use super::ray::{Crossing, Ray, clamped_ratio, ray_capsule, ray_sphere};
@@ -42,9 +44,10 @@ pub(crate) struct CastHit<R: Real> {
     pub normal: Vec3<R>,
 }
 
-/// The convex `cast` (any shape but a plane or a compound) placed by `start`, moved along unit
-/// `direction` by up to `max` (m), against `target` placed by `xf`: a compound answers for
-/// its nearest part (the first on ties), a plane for its half-space.
+/// The convex `cast` (any shape but a plane, a compound or a mesh) placed by `start`, moved
+/// along unit `direction` by up to `max` (m), against `target` placed by `xf`: a compound
+/// answers for its nearest part (the first on ties), a plane for its half-space, a mesh or
+/// a heightfield for its nearest triangle (the lowest index on ties).
 pub(crate) fn cast_shape<R: Real>(
     cast: &Shape<R>,
     start: &Transform<R>,
@@ -67,9 +70,52 @@ pub(crate) fn cast_shape<R: Real>(
             }
             best
         }
-        _ => analytic(cast, start, direction, max, target, xf)
-            .unwrap_or_else(|| advance(cast, start, direction, max, target, xf)),
+        Shape::TriMesh { .. } | Shape::HeightField { .. } => {
+            let mesh = target.triangles()?;
+            cast_against_triangles(cast, start, direction, max, mesh, xf)
+        }
+        _ => analytic(cast, start, direction, max, target, xf).unwrap_or_else(|| {
+            advance(start, direction, max, |placed, margin| {
+                collide(cast, placed, target, xf, margin)
+            })
+        }),
     }
+}
+
+/// The convex `cast` against the triangles of `mesh` placed by `xf` whose boxes overlap
+/// the box swept by the cast (its boxes at the start and at `max`): conservative
+/// advancement against each, with the triangle's manifold (internal edges removed,
+/// `narrowphase/triangle.rs`); the nearest hit, the lowest triangle index on ties.
+fn cast_against_triangles<R: Real>(
+    cast: &Shape<R>,
+    start: &Transform<R>,
+    direction: Vec3<R>,
+    max: R,
+    mesh: &TriMesh<R>,
+    xf: &Transform<R>,
+) -> Option<CastHit<R>> {
+    let end = Transform {
+        translation: start.translation.add_scaled(direction, max),
+        ..*start
+    };
+    let swept = Aabb::of_shape(cast, start)?
+        .union(&Aabb::of_shape(cast, &end)?)
+        .expanded(cast_tolerance::<R>() * R::TWO);
+    let mut triangles = Vec::new();
+    mesh.for_each_triangle_in(&swept.seen_from(xf), |t| triangles.push(t));
+    triangles.sort_unstable();
+    let mut best: Option<CastHit<R>> = None;
+    for t in triangles {
+        let hit = advance(start, direction, max, |placed, margin| {
+            collide_triangle(mesh, t, xf, cast, placed, margin).flipped()
+        });
+        if let Some(hit) = hit
+            && best.is_none_or(|b| hit.distance < b.distance)
+        {
+            best = Some(hit);
+        }
+    }
+    best
 }
 
 /// A sphere of radius ρ against a sphere or capsule of radius r: the ray of the sphere's
@@ -122,14 +168,14 @@ fn analytic<R: Real>(
     }
 }
 
-/// Conservative advancement (see the [module](self)).
+/// Conservative advancement (see the [module](self)), with `contact(placement, margin)`
+/// the manifold of the cast shape at that placement against the target (normal from the
+/// cast shape towards the target).
 fn advance<R: Real>(
-    cast: &Shape<R>,
     start: &Transform<R>,
     direction: Vec3<R>,
     max: R,
-    target: &Shape<R>,
-    xf: &Transform<R>,
+    contact: impl Fn(&Transform<R>, R) -> Manifold<R>,
 ) -> Option<CastHit<R>> {
     let tolerance = cast_tolerance::<R>();
     let max = max.clamp(R::ZERO, R::MAX * R::HALF);
@@ -145,7 +191,7 @@ fn advance<R: Real>(
         };
         // Points farther apart than the rest of the travel cannot be reached.
         let margin = (max - t) + tolerance;
-        let manifold = collide(cast, &placed, target, xf, margin);
+        let manifold = contact(&placed, margin);
         let (separation, point) = deepest(&manifold)?;
         let touching = separation <= tolerance && (separation >= -tolerance || t == R::ZERO);
         if touching || iteration + 1 == MAX_ITERATIONS {
