@@ -145,8 +145,8 @@ impl<R: Real> RigidSystem<R> {
         for c in &self.contacts {
             h.write_u32(c.key.body_a);
             h.write_u32(c.key.body_b);
-            h.write_u32(u32::from(c.key.part_a));
-            h.write_u32(u32::from(c.key.part_b));
+            h.write_u32(c.key.part_a);
+            h.write_u32(c.key.part_b);
             h.write_vec3(c.normal);
             h.write_u8(c.count);
             for p in c.points() {

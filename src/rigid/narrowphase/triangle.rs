@@ -106,16 +106,16 @@ pub(crate) fn collide_triangle<R: Real>(
     }
     let normal = contact.0;
     let aligned = normal.dot(face).abs();
-    if aligned < R::ONE - face_slack::<R>() {
-        if !feature_active(&corners, xf_mesh.inverse_vector(normal), flags) {
-            contact = along_face(centre_side);
-            if contact.1 - rb.radius > margin {
-                return Manifold::EMPTY;
-            }
-            // Only the points over this triangle: past its inactive edge, the
-            // neighbour's face holds the shape.
-            return manifold_along(&ra, xf_mesh, &rb, xf, contact, margin, false);
+    if aligned < R::ONE - face_slack::<R>()
+        && !feature_active(&corners, xf_mesh.inverse_vector(normal), flags)
+    {
+        contact = along_face(centre_side);
+        if contact.1 - rb.radius > margin {
+            return Manifold::EMPTY;
         }
+        // Only the points over this triangle: past its inactive edge, the neighbour's face
+        // holds the shape.
+        return manifold_along(&ra, xf_mesh, &rb, xf, contact, margin, false);
     }
     manifold_along(&ra, xf_mesh, &rb, xf, contact, margin, true)
 }
@@ -209,7 +209,7 @@ fn feature_active<R: Real>(corners: &[Vec3<R>; 3], d: Vec3<R>, flags: u8) -> boo
     let near = reach.map(|r| top - r <= corner_slack::<R>());
     match near {
         [true, true, true] => true,
-        [true, true, false] => flags & (EDGE_ACTIVE << 0) != 0,
+        [true, true, false] => flags & EDGE_ACTIVE != 0,
         [false, true, true] => flags & (EDGE_ACTIVE << 1) != 0,
         [true, false, true] => flags & (EDGE_ACTIVE << 2) != 0,
         [true, false, false] => flags & VERTEX_ACTIVE != 0,
