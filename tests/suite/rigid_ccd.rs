@@ -227,3 +227,53 @@ fn a_box_sliding_fast_on_the_ground_is_not_held_back() {
     assert!(last[0] > 4.5, "{last:?}");
     assert!(last[1] > 0.09 && last[1] < 0.11, "{last:?}");
 }
+
+/// A 4 m × 4 m heightfield of 0.25 m cells with gentle bumps (up to 2 cm, so the box meets
+/// faces, edges and corners), its surface at y = h(x, z) ∈ [0, 0.02] m.
+fn bumpy_heightfield() -> BodyDesc<Fx> {
+    let n = 17u32;
+    let heights = (0..n * n)
+        .map(|k| Fx::from_ratio(i64::from((k * 7) % 5), 200))
+        .collect();
+    let field =
+        fixstep::rigid::HeightField::new(n, n, v(4.0, 1.0, 4.0), heights).expect("a valid grid");
+    BodyDesc::new(Shape::HeightField { field }, Vec3::ZERO).fixed()
+}
+
+#[test]
+fn a_fast_small_box_never_passes_a_heightfield() {
+    let scene = box_onto(bumpy_heightfield());
+    // The surface is at least 0 everywhere: the centre of a 2 cm box resting on it is at
+    // y ≥ 0.01 − (rounding), and without the sweep it ends a tick up to 1.7 m below.
+    for (tick, p) in track(&scene, 1).iter().enumerate() {
+        assert!(p[1] > 0.0, "tick {tick}: the box's centre at y = {}", p[1]);
+    }
+    replays(&scene);
+    restored_matches(&scene, &scene, 1);
+}
+
+#[test]
+fn a_fast_ball_never_passes_a_thin_triangle_mesh_wall() {
+    // A wall of two triangles across x = 0, 4 m square, facing −x (towards the ball).
+    let corner = |y: f64, z: f64| v(0.0, y, z);
+    let mesh = fixstep::rigid::TriMesh::new(
+        vec![
+            corner(-2.0, -2.0),
+            corner(-2.0, 2.0),
+            corner(2.0, 2.0),
+            corner(2.0, -2.0),
+        ],
+        vec![[0, 1, 2], [0, 2, 3]],
+    )
+    .expect("a valid mesh");
+    let wall = BodyDesc::new(Shape::TriMesh { mesh }, v(0.0, 1.0, 0.0)).fixed();
+    let mut scene = scene_of(
+        vec![wall, ball(0.05, v(-3.0, 1.2, 0.1), v(300.0, 0.0, 0.0))],
+        20,
+    );
+    scene.gravity = Vec3::ZERO;
+    for (tick, p) in track(&scene, 1).iter().enumerate() {
+        assert!(p[0] < 0.0, "tick {tick}: the ball's centre at x = {}", p[0]);
+    }
+    replays(&scene);
+}
