@@ -443,7 +443,7 @@ fn triangle_manifolds<R: Real>(
     };
     triangles.sort_unstable();
     for &t in triangles.iter() {
-        let manifold = collide_triangle(mesh, t, xf_mesh, shape, xf, margin);
+        let manifold = collide_triangle(mesh, t, xf_mesh, shape, xf, margin, true);
         if manifold.count > 0 {
             emit(t, manifold);
         }

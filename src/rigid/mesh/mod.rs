@@ -12,12 +12,14 @@
 //! shape with the triangles under its bounding box (`narrowphase/triangle.rs`).
 
 mod bvh;
+mod closest;
 mod edges;
 mod error;
 mod heightfield;
 mod obj;
 mod trimesh;
 
+pub(crate) use self::closest::{TriangleFeature, closest_point};
 pub(crate) use self::edges::{EDGE_ACTIVE, VERTEX_ACTIVE};
 pub use self::error::MeshError;
 pub use self::heightfield::HeightField;

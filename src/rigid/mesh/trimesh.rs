@@ -142,6 +142,12 @@ impl<R: Real> TriMesh<R> {
         self.data.bvh.for_each_overlap(aabb, visit);
     }
 
+    /// Visits the mesh's tree: `enter(bounds)` (mesh frame) decides whether a node's subtree
+    /// is searched, `leaf(triangles)` receives each leaf entered (see `bvh.rs`).
+    pub(crate) fn walk_tree(&self, enter: impl FnMut(&Aabb<R>) -> bool, leaf: impl FnMut(&[u32])) {
+        self.data.bvh.walk(enter, leaf);
+    }
+
     /// How many edges are active (corners of the surface; see `edges.rs`), counting an
     /// edge shared by two triangles once per triangle.
     pub fn active_edge_count(&self) -> usize {

@@ -28,7 +28,7 @@ use crate::rigid::convex::epa::epa;
 use crate::rigid::convex::gjk::{CorePair, gjk_simplex};
 use crate::rigid::convex::{Convex, Rounded};
 use crate::rigid::manifold::Manifold;
-use crate::rigid::mesh::{EDGE_ACTIVE, TriMesh, VERTEX_ACTIVE};
+use crate::rigid::mesh::{EDGE_ACTIVE, TriMesh, TriangleFeature, VERTEX_ACTIVE, closest_point};
 use crate::rigid::shape::Shape;
 use crate::rigid::transform::Transform;
 
@@ -44,7 +44,11 @@ fn corner_slack<R: Real>() -> R {
 
 /// The manifold of triangle `triangle` of `mesh` placed by `xf_mesh` (A) and the convex
 /// `shape` placed by `xf` (B), within `margin` (m); empty for a shape that is not convex
-/// (a plane, a compound, a mesh). See the [module](self).
+/// (a plane, a compound, a mesh). With `smooth`, internal edges are removed (see the
+/// [module](self)), as contacts need; without, every edge and corner counts as active,
+/// so that the separation is the true distance to this triangle alone, as a shape cast's
+/// conservative advancement needs (far from the mesh, the shape need not lie over the
+/// triangle whose surface it will reach).
 pub(crate) fn collide_triangle<R: Real>(
     mesh: &TriMesh<R>,
     triangle: u32,
@@ -52,9 +56,24 @@ pub(crate) fn collide_triangle<R: Real>(
     shape: &Shape<R>,
     xf: &Transform<R>,
     margin: R,
+    smooth: bool,
 ) -> Manifold<R> {
+    // Without `smooth`, every feature is active.
+    let flags = if smooth {
+        mesh.data.flags[triangle as usize]
+    } else {
+        u8::MAX
+    };
     if let Shape::Sphere { radius } = shape {
-        return sphere_triangle(mesh, triangle, xf_mesh, xf.translation, *radius, margin);
+        return sphere_triangle(
+            mesh,
+            triangle,
+            flags,
+            xf_mesh,
+            xf.translation,
+            *radius,
+            margin,
+        );
     }
     let Some(rb) = Rounded::of(shape) else {
         return Manifold::EMPTY;
@@ -78,7 +97,6 @@ pub(crate) fn collide_triangle<R: Real>(
     let side_of = |n: Vec3<R>| if n.dot(face) >= R::ZERO { face } else { -face };
     // The side of the triangle's plane the shape's centre is on (+n_f when in it).
     let centre_side = side_of(xf.translation - origin);
-    let flags = mesh.data.flags[triangle as usize];
     if flags == 0 {
         // No active edge or corner: whatever GJK found, the normal would become the face
         // normal, so it is used from the start.
@@ -120,18 +138,17 @@ pub(crate) fn collide_triangle<R: Real>(
     manifold_along(&ra, xf_mesh, &rb, xf, contact, margin, true)
 }
 
-/// Triangle A against the sphere of centre `centre` and `radius` (m) B, in closed form:
-/// the closest point q of the triangle to the centre c, in the mesh's frame — c's
-/// projection c − n_f (n_f · (c − v₀)) when it lies inside all three edges
-/// ((v_{k+1} − v_k) × (q − v_k) · n_f ≥ 0), else the nearest of the closest points on the
-/// three edges (v_k + t e_k, t = clamp((c − v_k) · e_k / e_k · e_k, 0, 1), the lowest k on
-/// ties). On the face, or on an inactive edge or corner (see the [module](self)), the
+/// Triangle A against the sphere of centre `centre` and `radius` (m) B, in closed form,
+/// with the triangle's active-feature `flags` (all set: every feature active):
+/// the closest point q of the triangle to the centre c, in the mesh's frame
+/// ([`closest_point`]). On the face, or on an inactive edge or corner (see the [module](self)), the
 /// normal is ±n_f on c's side and the separation |n_f · (c − v₀)| − r; on an active edge
 /// or corner, the normal is (c − q)/|c − q| and the separation |c − q| − r. One point, id
 /// 0, midway between the surfaces; empty beyond `margin` (m).
 fn sphere_triangle<R: Real>(
     mesh: &TriMesh<R>,
     triangle: u32,
+    flags: u8,
     xf_mesh: &Transform<R>,
     centre: Vec3<R>,
     radius: R,
@@ -145,35 +162,12 @@ fn sphere_triangle<R: Real>(
     if height.abs() > reach {
         return Manifold::EMPTY;
     }
-    let inside = (0..3).all(|k| {
-        let edge = v[(k + 1) % 3] - v[k];
-        edge.cross(c - v[k]).dot(n) >= R::ZERO
-    });
     // The closest point and whether its feature pushes along the face normal.
-    let (q, flat) = if inside {
-        (c - n * height, true)
-    } else {
-        let flags = mesh.data.flags[triangle as usize];
-        let mut best: Option<(R, Vec3<R>, bool)> = None;
-        for k in 0..3 {
-            let (a, b) = (v[k], v[(k + 1) % 3]);
-            let e = b - a;
-            let along = (c - a).dot(e);
-            let length2 = e.length_squared();
-            let (point, active) = if along <= R::ZERO {
-                (a, flags & (VERTEX_ACTIVE << k) != 0)
-            } else if along >= length2 {
-                (b, flags & (VERTEX_ACTIVE << ((k + 1) % 3)) != 0)
-            } else {
-                (a + e * (along / length2), flags & (EDGE_ACTIVE << k) != 0)
-            };
-            let distance2 = (c - point).length_squared();
-            if best.is_none_or(|(d2, _, _)| distance2 < d2) {
-                best = Some((distance2, point, !active));
-            }
-        }
-        let (_, point, inactive) = best.unwrap_or((R::ZERO, v[0], true));
-        (point, inactive)
+    let (q, feature) = closest_point(&v, n, c);
+    let flat = match feature {
+        TriangleFeature::Face => true,
+        TriangleFeature::Edge(k) => flags & (EDGE_ACTIVE << k) == 0,
+        TriangleFeature::Corner(k) => flags & (VERTEX_ACTIVE << k) == 0,
     };
     let side = if height >= R::ZERO { n } else { -n };
     let (local_normal, separation) = if flat {

@@ -12,7 +12,8 @@
 //! # Files
 //!
 //! [`ray`] rays against shapes · [`ray_round`] rays against cylinders and cones ·
-//! [`ray_hull`] rays against convex hulls · [`shape_cast`] swept shapes · [`overlap`]
+//! [`ray_hull`] rays against convex hulls · [`ray_mesh`] and [`point_mesh`] rays and
+//! closest points on meshes and heightfields · [`shape_cast`] swept shapes · [`overlap`]
 //! shared points · [`point`] closest points · [`point_hull`] closest points of hulls ·
 //! [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
 //! kept current by the step.
@@ -22,8 +23,10 @@ mod overlap;
 mod parts;
 mod point;
 mod point_hull;
+mod point_mesh;
 mod ray;
 mod ray_hull;
+mod ray_mesh;
 mod ray_round;
 mod shape_cast;
 #[cfg(test)]

@@ -4,6 +4,7 @@ use super::super::shape::Shape;
 use super::super::transform::Transform;
 use super::parts::for_each_part;
 use super::point_hull::project_hull;
+use super::point_mesh::project_mesh;
 use super::ray_round::{Slant, cone_contains, cylinder_contains};
 use crate::math::{Real, Vec3};
 
@@ -52,7 +53,8 @@ pub(super) fn project_point<R: Real>(
 /// - capsule: the ball rule around the segment point (0, clamp(p_y, −h, h), 0);
 /// - cylinder (cylinder frame): inside when p_x² + p_z² ≤ r² and |p_y| ≤ h, else the point
 ///   with y clamped to [−h, h] and (x, z) pulled in to radius r when farther out;
-/// - cone: [`project_cone`]; convex hull: [`project_hull`];
+/// - cone: [`project_cone`]; convex hull: [`project_hull`]; mesh or heightfield: the
+///   nearest point of its triangles ([`project_mesh`]), never inside (a surface);
 /// - half-space n·x ≤ c: with s = n·p − c, inside when s ≤ 0, else p − s·n at distance s.
 fn project_convex<R: Real>(shape: &Shape<R>, xf: &Transform<R>, p: Vec3<R>) -> Projected<R> {
     let inside = Projected {
@@ -99,11 +101,21 @@ fn project_convex<R: Real>(shape: &Shape<R>, xf: &Transform<R>, p: Vec3<R>) -> P
                 None => inside,
             }
         }
-        Shape::TriMesh { .. } | Shape::HeightField { .. } => Projected {
-            point: p,
-            inside: false,
-            distance: R::MAX,
-        },
+        Shape::TriMesh { .. } | Shape::HeightField { .. } => {
+            let Some(mesh) = shape.triangles() else {
+                return Projected {
+                    point: p,
+                    inside: false,
+                    distance: R::MAX,
+                };
+            };
+            let (q, d2) = project_mesh(mesh, xf.inverse_point(p));
+            Projected {
+                point: xf.point(q),
+                inside: false,
+                distance: if d2 == R::MAX { R::MAX } else { d2.sqrt() },
+            }
+        }
         Shape::Plane { normal, offset } => {
             let n = xf.vector(*normal);
             let s = n.dot(p) - (*offset + n.dot(xf.translation));

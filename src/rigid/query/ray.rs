@@ -15,6 +15,7 @@
 use super::super::shape::Shape;
 use super::super::transform::Transform;
 use super::ray_hull::ray_hull;
+use super::ray_mesh::ray_mesh;
 use super::ray_round::{ray_cone, ray_cylinder};
 use crate::math::{Real, Vec3};
 
@@ -263,7 +264,8 @@ pub(super) fn ray_reaches_box<R: Real>(
 
 /// The ray against `shape` placed by `xf` (m): see the [module](self) for the answers
 /// (cylinders and cones: [`ray_round`](super::ray_round), hulls:
-/// [`ray_hull`](super::ray_hull)). A compound answers for its nearest part (the first on ties); a plane body is the
+/// [`ray_hull`](super::ray_hull); meshes and heightfields:
+/// [`ray_mesh`](super::ray_mesh)). A compound answers for its nearest part (the first on ties); a plane body is the
 /// half-space below its plane.
 pub(super) fn ray_shape<R: Real>(
     shape: &Shape<R>,
@@ -286,7 +288,9 @@ pub(super) fn ray_shape<R: Real>(
             half_height,
         } => local_to_world(xf, ray_cone(*radius, *half_height, &ray.local(xf))),
         Shape::ConvexHull { hull } => local_to_world(xf, ray_hull(hull, &ray.local(xf))),
-        Shape::TriMesh { .. } | Shape::HeightField { .. } => None,
+        Shape::TriMesh { .. } | Shape::HeightField { .. } => {
+            local_to_world(xf, ray_mesh(shape.triangles()?, &ray.local(xf)))
+        }
         Shape::Plane { normal, offset } => {
             let n = xf.vector(*normal);
             ray_plane(n, *offset + n.dot(xf.translation), ray)

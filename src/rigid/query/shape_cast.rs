@@ -84,8 +84,9 @@ pub(crate) fn cast_shape<R: Real>(
 
 /// The convex `cast` against the triangles of `mesh` placed by `xf` whose boxes overlap
 /// the box swept by the cast (its boxes at the start and at `max`): conservative
-/// advancement against each, with the triangle's manifold (internal edges removed,
-/// `narrowphase/triangle.rs`); the nearest hit, the lowest triangle index on ties.
+/// advancement against each, with the triangle's manifold as a lone triangle (every edge
+/// active: its separation is then the true distance, which the advancement needs); the
+/// nearest hit, the lowest triangle index on ties.
 fn cast_against_triangles<R: Real>(
     cast: &Shape<R>,
     start: &Transform<R>,
@@ -107,7 +108,7 @@ fn cast_against_triangles<R: Real>(
     let mut best: Option<CastHit<R>> = None;
     for t in triangles {
         let hit = advance(start, direction, max, |placed, margin| {
-            collide_triangle(mesh, t, xf, cast, placed, margin).flipped()
+            collide_triangle(mesh, t, xf, cast, placed, margin, false).flipped()
         });
         if let Some(hit) = hit
             && best.is_none_or(|b| hit.distance < b.distance)
