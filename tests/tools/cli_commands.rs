@@ -323,3 +323,21 @@ fn an_unknown_simd_cap_is_refused() {
         run.stderr
     );
 }
+
+#[test]
+fn info_gives_mesh_statistics() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    let run = fixstep(&[
+        "info",
+        root.join("replays/terrain.replay").to_str().expect("UTF-8"),
+    ]);
+    assert_eq!(run.code, 0, "{run:?}");
+    // The bowl: 24 × 32 cells of 2 triangles on 25 × 33 vertices; the hill: 32 × 32 cells
+    // on 33 × 33 samples. Active edges: the boundaries and the convex creases.
+    for expected in [
+        "1 triangle mesh (1536 triangles, 825 vertices, ",
+        "1 heightfield (2048 triangles, 1089 vertices, ",
+    ] {
+        assert!(run.stdout.contains(expected), "{expected:?} in {}", run.stdout);
+    }
+}
