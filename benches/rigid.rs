@@ -1,6 +1,7 @@
 //! Rigid-body step time on the scenes Rapier 0.36 was measured on (docs/PERFORMANCE.md):
 //! `pyramid` (210 boxes, 500 steps), `balls` (4096 spheres in a box, 500 steps) and
-//! `falling` (1000 free spheres, 1000 steps), at 60 Hz, one thread. Each sample runs the
+//! `falling` (1000 free spheres, 1000 steps), and `terrain` (48 bodies down a heightfield
+//! into a triangle-mesh bowl, 600 steps), at 60 Hz, one thread. Each sample runs the
 //! whole sequence from the scene's start, so settling, piling and sleeping are all in the
 //! mean; the figure is the time per step.
 //!
@@ -59,7 +60,12 @@ fn bench_scene<R: Real>(
 fn rigid(c: &mut Criterion) {
     let mut group = c.benchmark_group("rigid_step");
     group.sample_size(10);
-    for (name, steps) in [("pyramid", 500), ("balls", 500), ("falling", 1000)] {
+    for (name, steps) in [
+        ("pyramid", 500),
+        ("balls", 500),
+        ("falling", 1000),
+        ("terrain", 600),
+    ] {
         bench_scene::<Fx>(&mut group, name, steps, false);
         bench_scene::<f64>(&mut group, name, steps, false);
     }

@@ -338,6 +338,10 @@ fn info_gives_mesh_statistics() {
         "1 triangle mesh (1536 triangles, 825 vertices, ",
         "1 heightfield (2048 triangles, 1089 vertices, ",
     ] {
-        assert!(run.stdout.contains(expected), "{expected:?} in {}", run.stdout);
+        assert!(
+            run.stdout.contains(expected),
+            "{expected:?} in {}",
+            run.stdout
+        );
     }
 }
