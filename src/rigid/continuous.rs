@@ -61,7 +61,7 @@
 
 use super::collide::for_each_part;
 use super::desc::BodyKind;
-use super::query::{CastHit, cast_shape, cast_tolerance, unit_direction};
+use super::query::{CastHit, cast_tolerance, sweep_shape, unit_direction};
 use super::shape::Shape;
 use super::system::RigidSystem;
 use super::transform::Transform;
@@ -312,9 +312,18 @@ impl<R: Real> RigidSystem<R> {
             if super::Aabb::of_shape(target, &xf).is_some_and(|b| !b.overlaps(&swept)) {
                 continue;
             }
+            let centre_path = (sweep.start.translation, end.translation);
             for_each_part(shape, &sweep.start, |_, part, placed| {
                 let cast = |cast: &Shape<R>, from: &Transform<R>, depth: R| {
-                    let hit = cast_shape(cast, from, sweep.direction, sweep.length, target, &xf);
+                    let hit = sweep_shape(
+                        cast,
+                        from,
+                        sweep.direction,
+                        sweep.length,
+                        target,
+                        &xf,
+                        centre_path,
+                    );
                     impact(hit, sweep.direction, sweep.length, slop, depth)
                 };
                 let travel = match cast(part, placed, depth) {

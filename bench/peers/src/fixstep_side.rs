@@ -35,7 +35,14 @@ fn run<R: Real>(scene: Scene) -> RigidRun {
 
 /// [`run`], every body given `filter` when there is one.
 fn run_with<R: Real>(scene: Scene, filter: Option<CollisionFilter>) -> RigidRun {
-    let mut description = builtin_scene::<R>(scene.name).expect("a built-in scene");
+    let mut description = match scene.name {
+        "hills" | "hills_mesh" => {
+            let mut landing = fixstep::scene::Scene::empty(scene.name);
+            landing.rigid = Some(fixstep_scenes::terrain::landing(scene.name == "hills_mesh"));
+            landing
+        }
+        name => builtin_scene::<R>(name).expect("a built-in scene"),
+    };
     if let Some(rigid) = &mut description.rigid {
         rigid.solver.sleeping = scene.sleeping;
         if let Some(filter) = filter {

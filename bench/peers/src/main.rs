@@ -74,6 +74,7 @@ fn quality_text(scene: Scene, value: Option<f64>) -> String {
         "pyramid" => "max drift",
         "balls" => "deepest overlap",
         "falling" => "max free-fall error",
+        "hills" | "hills_mesh" => "lowest centre",
         _ => "",
     };
     value.map_or_else(|| "—".into(), |v| format!("{what} {v:.4} m"))
@@ -105,7 +106,7 @@ fn main() {
             && !OTHER_BENCHES.contains(&w.as_str())
     }) {
         eprintln!(
-            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, water, dam_break, queries, filters"
+            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, hills, hills_mesh, water, dam_break, queries, filters"
         );
         std::process::exit(2);
     }

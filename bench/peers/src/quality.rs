@@ -42,6 +42,7 @@ pub fn rigid(scene: Scene, run: &RigidRun) -> Option<f64> {
                 .map(|(a, b)| (b[1] - (a[1] - 0.5 * 9.81 * t * t)).abs())
                 .fold(0.0, f64::max)
         }
+        "hills" | "hills_mesh" => run.end.iter().map(|p| p[1]).fold(f64::MAX, f64::min),
         _ => return None,
     })
 }

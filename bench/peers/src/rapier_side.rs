@@ -84,6 +84,67 @@ fn falling(world: &mut PhysicsWorld, sleeping: bool) {
 }
 
 /// The positions of the dynamic bodies, in the order they were created.
+/// `hills` and `hills_mesh`: fixstep's landing (`fixstep_scenes::terrain::landing`) from
+/// the same exact numbers: a 64 m square terrain of 256 × 256 samples, as a heightfield
+/// (parry's rows run along z and its columns along x, centred, `scale` the whole extent:
+/// fixstep's layout, its height matrix being column-major) or as the triangle mesh of
+/// fixstep's triangles (two per cell, split along the same diagonal); 1000 hulls of the
+/// rock's 12 points and 1000 balls of radius 0.2 m in the same lattices. Sleeping off.
+fn hills(world: &mut PhysicsWorld, as_mesh: bool) {
+    use fixstep_scenes::terrain::{LANDING_SAMPLES, landing_height, rock_centimetres};
+    let n = LANDING_SAMPLES as usize;
+    let height = |r: usize, c: usize| {
+        let (num, den) = landing_height(r as u32, c as u32);
+        num as f32 / den as f32
+    };
+    let ground = if as_mesh {
+        let at = |k: usize| -32.0 + 64.0 * k as f32 / (n - 1) as f32;
+        let mut vertices = Vec::with_capacity(n * n);
+        for r in 0..n {
+            for c in 0..n {
+                vertices.push(Vector::new(at(c), height(r, c), at(r)));
+            }
+        }
+        let mut triangles = Vec::with_capacity(2 * (n - 1) * (n - 1));
+        for r in 0..n - 1 {
+            for c in 0..n - 1 {
+                let v = (r * n + c) as u32;
+                let (v01, v10, v11) = (v + 1, v + n as u32, v + n as u32 + 1);
+                triangles.push([v, v10, v11]);
+                triangles.push([v, v11, v01]);
+            }
+        }
+        ColliderBuilder::trimesh(vertices, triangles).expect("a valid mesh")
+    } else {
+        let mut column_major = vec![0.0; n * n];
+        for r in 0..n {
+            for c in 0..n {
+                column_major[r + c * n] = height(r, c);
+            }
+        }
+        ColliderBuilder::heightfield(
+            Array2::new(n, n, column_major),
+            Vector::new(64.0, 1.0, 64.0),
+        )
+    };
+    world.insert(RigidBodyBuilder::fixed(), ground);
+    let points: Vec<Vector> = rock_centimetres()
+        .iter()
+        .map(|&(x, y, z)| Vector::new(x as f32 / 100.0, y as f32 / 100.0, z as f32 / 100.0))
+        .collect();
+    for i in 0..10 {
+        for j in 0..10 {
+            for k in 0..10 {
+                let (x, y, z) = (i as f32 * 1.2, j as f32 * 1.2, k as f32 * 1.2);
+                let rock = ColliderBuilder::convex_hull(&points).expect("a hull");
+                dynamic(world, [-6.0 + x, 3.0 + y, -6.0 + z], rock, false);
+                let ball = ColliderBuilder::ball(0.2);
+                dynamic(world, [-5.4 + x, 3.5 + y, -5.4 + z], ball, false);
+            }
+        }
+    }
+}
+
 fn positions(world: &PhysicsWorld) -> Vec<[f64; 3]> {
     world
         .bodies
@@ -110,6 +171,8 @@ pub fn run(scene: Scene, friction: FrictionModel) -> RigidRun {
         "pyramid" => pyramid(&mut world, scene.sleeping),
         "balls" => balls(&mut world, scene.sleeping),
         "falling" => falling(&mut world, scene.sleeping),
+        "hills" => hills(&mut world, false),
+        "hills_mesh" => hills(&mut world, true),
         other => unreachable!("no Rapier version of {other}"),
     }
     let start = positions(&world);

@@ -10,8 +10,10 @@ pub struct Scene {
 }
 
 /// The rigid-body scenes: issue #6's benchmark table, sleeping off, then the two scenes
-/// that come to rest with sleeping on.
-pub const SCENES: [Scene; 5] = [
+/// that come to rest with sleeping on, then issue #35's landing: 1000 hulls and 1000
+/// balls dropped on a 256 × 256 heightfield (`hills`) and on the same terrain as a
+/// triangle mesh (`hills_mesh`), sleeping off.
+pub const SCENES: [Scene; 7] = [
     Scene {
         name: "pyramid",
         steps: 500,
@@ -36,6 +38,16 @@ pub const SCENES: [Scene; 5] = [
         name: "balls",
         steps: 500,
         sleeping: true,
+    },
+    Scene {
+        name: "hills",
+        steps: 300,
+        sleeping: false,
+    },
+    Scene {
+        name: "hills_mesh",
+        steps: 300,
+        sleeping: false,
     },
 ];
 

@@ -93,25 +93,27 @@ pub fn bowl<R: Real>() -> BodyDesc<R> {
     .fixed()
 }
 
+/// The rock's points, in centimetres.
+const ROCK_CM: [(i64, i64, i64); 12] = [
+    (20, 12, 0),
+    (-18, 11, 0),
+    (17, -13, 0),
+    (-19, -10, 0),
+    (0, 19, 12),
+    (0, -16, 11),
+    (0, 18, -13),
+    (0, -17, -10),
+    (12, 0, 18),
+    (-11, 0, 17),
+    (13, 0, -20),
+    (-10, 0, -16),
+];
+
 /// A rock: the hull of 12 points on an irregular cuboctahedron about 0.3 m across each
 /// way, in centimetres: (±a, ±b, 0), (0, ±a, ±b), (±b, 0, ±a) with a and b varying from
-/// corner to corner between 14 and 20 cm.
+/// corner to corner between 10 and 20 cm.
 fn rock<R: Real>() -> ConvexHull<R> {
-    const CM: [(i64, i64, i64); 12] = [
-        (20, 12, 0),
-        (-18, 11, 0),
-        (17, -13, 0),
-        (-19, -10, 0),
-        (0, 19, 12),
-        (0, -16, 11),
-        (0, 18, -13),
-        (0, -17, -10),
-        (12, 0, 18),
-        (-11, 0, 17),
-        (13, 0, -20),
-        (-10, 0, -16),
-    ];
-    let points: Vec<Vec3<R>> = CM
+    let points: Vec<Vec3<R>> = ROCK_CM
         .iter()
         .map(|&(x, y, z)| {
             Vec3::new(
@@ -161,6 +163,77 @@ pub fn terrain<R: Real>() -> RigidDesc<R> {
     }
     RigidDesc {
         bodies,
+        ..RigidDesc::default()
+    }
+}
+
+/// Samples along each side of the benchmark landing's grid (`bench/peers`): 256, so
+/// 255 × 255 cells and 130 050 triangles.
+pub const LANDING_SAMPLES: u32 = 256;
+
+/// The landing's height at sample (r, c), as an exact ratio (numerator, denominator) in
+/// metres: gentle hills of up to 1 m, w(r) w(c) / 256 with w(k) = 16 − |k mod 32 − 16|, so
+/// that every engine builds the same terrain.
+pub fn landing_height(r: u32, c: u32) -> (i64, i64) {
+    let wave = |k: u32| 16 - (i64::from(k % 32) - 16).abs();
+    (wave(r) * wave(c), 256)
+}
+
+/// The rock's points, in centimetres (see [`rock`]), for engines that build it themselves.
+pub fn rock_centimetres() -> [(i64, i64, i64); 12] {
+    ROCK_CM
+}
+
+/// The benchmark landing (not a built-in scene; `bench/peers` builds the same one in
+/// Rapier): a 64 m × 64 m terrain of [`LANDING_SAMPLES`]² samples ([`landing_height`]), as
+/// a heightfield or, with `as_mesh`, as the triangle mesh of the same triangles; 1000
+/// rocks in a 10 × 10 × 10 lattice 1.2 m apart from (−6, 3, −6) m and 1000 balls of radius
+/// 0.2 m in the same lattice moved by (0.6, 0.5, 0.6) m.
+pub fn landing<R: Real>(as_mesh: bool) -> RigidDesc<R> {
+    let n = LANDING_SAMPLES;
+    let heights: Vec<R> = (0..n * n)
+        .map(|k| {
+            let (num, den) = landing_height(k / n, k % n);
+            R::from_ratio(num, den)
+        })
+        .collect();
+    let scale = Vec3::new(R::from_int(64), R::ONE, R::from_int(64));
+    let field = HeightField::new(n, n, scale, heights).expect("the landing's grid is valid");
+    let shape = if as_mesh {
+        let mesh = field.mesh().clone();
+        Shape::TriMesh { mesh }
+    } else {
+        Shape::HeightField { field }
+    };
+    let ground = BodyDesc::new(shape, Vec3::ZERO).fixed();
+    let lattice = |shape: Shape<R>, start: Vec3<R>| {
+        let mut body = BodyDesc::new(shape, start);
+        body.grid = Some(Grid {
+            count: (10, 10, 10),
+            spacing: Vec3::new(
+                R::from_ratio(6, 5),
+                R::from_ratio(6, 5),
+                R::from_ratio(6, 5),
+            ),
+        });
+        body
+    };
+    let rocks = lattice(
+        Shape::ConvexHull { hull: rock() },
+        Vec3::new(R::from_int(-6), R::from_int(3), R::from_int(-6)),
+    );
+    let balls = lattice(
+        Shape::Sphere {
+            radius: R::from_ratio(1, 5),
+        },
+        Vec3::new(
+            R::from_ratio(-27, 5),
+            R::from_ratio(7, 2),
+            R::from_ratio(-27, 5),
+        ),
+    );
+    RigidDesc {
+        bodies: vec![ground, rocks, balls],
         ..RigidDesc::default()
     }
 }

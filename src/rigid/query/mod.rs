@@ -39,7 +39,7 @@ pub(crate) use self::index::QueryIndex;
 use self::overlap::shapes_overlap;
 use self::point::project_point;
 use self::ray::{BoxProbe, Crossing, Ray, ray_shape};
-pub(crate) use self::shape_cast::{CastHit, cast_shape, cast_tolerance};
+pub(crate) use self::shape_cast::{CastHit, cast_shape, cast_tolerance, sweep_shape};
 use super::aabb::Aabb;
 use super::filter::QueryFilter;
 use super::shape::Shape;

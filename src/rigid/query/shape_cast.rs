@@ -17,6 +17,7 @@
 //! touch or overlap at the start hit at distance 0.
 
 use super::super::aabb::Aabb;
+use super::super::convex::Rounded;
 use super::super::manifold::Manifold;
 use super::super::mesh::TriMesh;
 use super::super::narrowphase::{collide, collide_triangle};
@@ -72,7 +73,7 @@ pub(crate) fn cast_shape<R: Real>(
         }
         Shape::TriMesh { .. } | Shape::HeightField { .. } => {
             let mesh = target.triangles()?;
-            cast_against_triangles(cast, start, direction, max, mesh, xf)
+            cast_against_triangles(cast, start, direction, max, mesh, xf, None)
         }
         _ => analytic(cast, start, direction, max, target, xf).unwrap_or_else(|| {
             advance(start, direction, max, |placed, margin| {
@@ -82,11 +83,35 @@ pub(crate) fn cast_shape<R: Real>(
     }
 }
 
+/// [`cast_shape`] for continuous collision: against a mesh or a heightfield, only the
+/// triangles whose plane the body's centre crosses or touches on its way from
+/// `centre_path.0` to `centre_path.1` (m) are swept, as Box2D v3 sweeps a fast body
+/// against a segment only when its centroid passes through it: a body whose centre stays
+/// on one side of a triangle's plane cannot end past the triangle. Any other target as
+/// [`cast_shape`].
+pub(crate) fn sweep_shape<R: Real>(
+    cast: &Shape<R>,
+    start: &Transform<R>,
+    direction: Vec3<R>,
+    max: R,
+    target: &Shape<R>,
+    xf: &Transform<R>,
+    centre_path: (Vec3<R>, Vec3<R>),
+) -> Option<CastHit<R>> {
+    match target.triangles() {
+        Some(mesh) => {
+            cast_against_triangles(cast, start, direction, max, mesh, xf, Some(centre_path))
+        }
+        None => cast_shape(cast, start, direction, max, target, xf),
+    }
+}
+
 /// The convex `cast` against the triangles of `mesh` placed by `xf` whose boxes overlap
 /// the box swept by the cast (its boxes at the start and at `max`): conservative
 /// advancement against each, with the triangle's manifold as a lone triangle (every edge
 /// active: its separation is then the true distance, which the advancement needs); the
-/// nearest hit, the lowest triangle index on ties.
+/// nearest hit, the lowest triangle index on ties. With a `centre_path`, only the triangles
+/// whose plane it crosses or touches (see [`sweep_shape`]).
 fn cast_against_triangles<R: Real>(
     cast: &Shape<R>,
     start: &Transform<R>,
@@ -94,6 +119,7 @@ fn cast_against_triangles<R: Real>(
     max: R,
     mesh: &TriMesh<R>,
     xf: &Transform<R>,
+    centre_path: Option<(Vec3<R>, Vec3<R>)>,
 ) -> Option<CastHit<R>> {
     let end = Transform {
         translation: start.translation.add_scaled(direction, max),
@@ -105,8 +131,23 @@ fn cast_against_triangles<R: Real>(
     let mut triangles = Vec::new();
     mesh.for_each_triangle_in(&swept.seen_from(xf), |t| triangles.push(t));
     triangles.sort_unstable();
+    let Some(rounded) = Rounded::of(cast) else {
+        return None;
+    };
+    let tolerance = cast_tolerance::<R>();
     let mut best: Option<CastHit<R>> = None;
     for t in triangles {
+        if !crosses_plane(&rounded, start, direction, max, mesh, t, xf, tolerance) {
+            continue;
+        }
+        if let Some((from, to)) = centre_path {
+            let n = xf.vector(mesh.normal(t));
+            let v0 = xf.point(mesh.corners(t)[0]);
+            let (a, b) = (n.dot(from - v0), n.dot(to - v0));
+            if (a > R::ZERO && b > R::ZERO) || (a < R::ZERO && b < R::ZERO) {
+                continue;
+            }
+        }
         let hit = advance(start, direction, max, |placed, margin| {
             collide_triangle(mesh, t, xf, cast, placed, margin, false).flipped()
         });
@@ -167,6 +208,37 @@ fn analytic<R: Real>(
             normal,
         })),
     }
+}
+
+/// Whether the cast can touch triangle `t`'s plane at all: with the plane's world normal
+/// n and a point v₀ on it, the gap of the shape's lowest point below the plane's front,
+/// g(s) = n · (x_B(−n) − v₀) + s (n · d) − r at travel s, and of its highest point behind
+/// it, likewise with x_B(+n), are linear in s; a shape whose front gap stays above
+/// `tolerance` (m), or whose back gap stays below −`tolerance`, over s ∈ [0, max] never
+/// meets the plane, so neither the triangle: the advancement is skipped.
+#[allow(clippy::too_many_arguments)]
+fn crosses_plane<R: Real>(
+    cast: &Rounded<R>,
+    start: &Transform<R>,
+    direction: Vec3<R>,
+    max: R,
+    mesh: &TriMesh<R>,
+    t: u32,
+    xf: &Transform<R>,
+    tolerance: R,
+) -> bool {
+    let n = xf.vector(mesh.normal(t));
+    let v0 = xf.point(mesh.corners(t)[0]);
+    let travel = n.dot(direction) * max;
+    let reach = |towards: Vec3<R>| {
+        let core = start.point(cast.core.support(start.inverse_vector(towards)));
+        n.dot(core - v0)
+    };
+    let front = reach(-n) - cast.radius;
+    let back = reach(n) + cast.radius;
+    let front_min = front.min(front + travel);
+    let back_max = back.max(back + travel);
+    front_min <= tolerance && back_max >= -tolerance
 }
 
 /// Conservative advancement (see the [module](self)), with `contact(placement, margin)`
