@@ -6,10 +6,13 @@ use ron::extensions::Extensions;
 
 use super::description::Scene;
 use crate::math::Real;
+use crate::rigid::shape_serde::with_scene_directory;
 
 /// Parses a scene from RON text. `origin` names the file in error messages.
 ///
-/// `Some(…)` may be left out around optional sections (RON's `implicit_some`).
+/// `Some(…)` may be left out around optional sections (RON's `implicit_some`). Mesh files
+/// (`TriMesh(file: ...)`) are named relative to the current directory, or to the one set
+/// by [`with_scene_directory`](crate::rigid::shape_serde::with_scene_directory).
 pub fn parse_scene<R: Real>(text: &str, origin: &str) -> Result<Scene<R>, String> {
     let options = ron::Options::default().with_default_extension(Extensions::IMPLICIT_SOME);
     options.from_str::<Scene<R>>(text).map_err(|e| {
@@ -18,7 +21,8 @@ pub fn parse_scene<R: Real>(text: &str, origin: &str) -> Result<Scene<R>, String
     })
 }
 
-/// Reads and parses a scene file, and checks that it builds a world.
+/// Reads and parses a scene file, and checks that it builds a world. Mesh files
+/// (`TriMesh(file: ...)`) are named relative to the scene file's directory.
 pub fn load_scene_file<R: Real>(path: &Path) -> Result<Scene<R>, String> {
     let origin = path.display().to_string();
     if path.is_dir() {
@@ -31,7 +35,8 @@ pub fn load_scene_file<R: Real>(path: &Path) -> Result<Scene<R>, String> {
             e.utf8_error().valid_up_to()
         )
     })?;
-    let scene = parse_scene(&text, &origin)?;
+    let directory = path.parent().unwrap_or(Path::new(""));
+    let scene = with_scene_directory(directory, || parse_scene(&text, &origin))?;
     scene.build().map_err(|e| format!("{origin}: {e}"))?;
     Ok(scene)
 }

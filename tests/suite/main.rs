@@ -4,6 +4,7 @@
 //! from 4.9 to 2.4 minutes). Run one file's tests with `cargo test --test suite FILE::`, for
 //! example `cargo test --test suite rigid_scenes::`.
 
+mod mesh_obj;
 mod property_cases;
 
 mod fluid_dam_break;

@@ -23,7 +23,7 @@ pub(crate) use self::closest::{TriangleFeature, closest_point};
 pub(crate) use self::edges::{EDGE_ACTIVE, VERTEX_ACTIVE};
 pub use self::error::MeshError;
 pub use self::heightfield::HeightField;
-pub use self::obj::read_obj_file;
+pub use self::obj::{read_obj, read_obj_file};
 pub use self::trimesh::TriMesh;
 
 /// The most triangles a mesh or a heightfield may have: 2²² = 4 194 304. Contacts name a
