@@ -7,7 +7,8 @@
 #                                         target for SECONDS
 #   scripts/fuzz.sh run TARGET [SECONDS]  fuzz one target (default: until stopped)
 #
-# Targets: replay_decode, scene_ron, snapshot_decode, world_step (see fuzz/src/lib.rs).
+# Targets: mesh_obj, replay_decode, scene_ron, snapshot_decode, world_step (see
+# fuzz/src/lib.rs).
 # The working corpus is fuzz/corpus/TARGET (not committed), started from fuzz/seeds/TARGET.
 # A crash lands in fuzz/artifacts/TARGET/; once fixed, copy it to fuzz/regressions/TARGET/,
 # where `cargo test --test suite fuzz_regressions::` runs it for ever after.
@@ -17,7 +18,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-TARGETS=(replay_decode scene_ron snapshot_decode world_step)
+TARGETS=(mesh_obj replay_decode scene_ron snapshot_decode world_step)
 
 # cargo-fuzz has no --locked: check first that fuzz/Cargo.lock needs no change, so that
 # every run builds the dependency versions committed there.
@@ -46,6 +47,7 @@ seeds() {
       >"fuzz/seeds/world_step/$name"
   done
   for f in scenes/*.ron; do cp "$f" "fuzz/seeds/scene_ron/$(basename "$f" .ron)"; done
+  for f in scenes/meshes/*.obj; do cp "$f" "fuzz/seeds/mesh_obj/$(basename "$f" .obj)"; done
   for name in $("$bin" scenes | cut -d' ' -f1); do
     case "$SEEDLESS_SCENES" in *" $name "*) continue ;; esac
     for ticks in 0 45; do

@@ -122,6 +122,20 @@ pub fn scene_ron(data: &[u8]) -> bool {
     }
 }
 
+/// An OBJ mesh file's bytes: reading never panics, and every refusal names the file.
+pub fn mesh_obj(data: &[u8]) -> bool {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return false;
+    };
+    match fixstep::rigid::mesh::read_obj::<Fx>(text, "fuzz.obj") {
+        Ok(_) => true,
+        Err(message) => {
+            assert!(message.starts_with("fuzz.obj: "), "{message}");
+            false
+        }
+    }
+}
+
 /// A snapshot file's bytes: decoding never panics; an accepted snapshot encodes back to the
 /// same bytes and continues without a panic.
 pub fn snapshot_decode(data: &[u8]) -> bool {

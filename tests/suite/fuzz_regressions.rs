@@ -50,6 +50,11 @@ fn replay_decode_inputs() {
 }
 
 #[test]
+fn mesh_obj_inputs() {
+    run_all("mesh_obj", targets::mesh_obj);
+}
+
+#[test]
 fn scene_ron_inputs() {
     run_all("scene_ron", targets::scene_ron);
 }

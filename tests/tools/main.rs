@@ -8,6 +8,7 @@ mod replay_support;
 mod bench_accuracy;
 mod bench_stability;
 mod cli_commands;
+mod cli_mesh_files;
 mod cli_query;
 mod cli_run_outputs;
 mod cli_scene_files;

@@ -131,9 +131,7 @@ fn cast_against_triangles<R: Real>(
     let mut triangles = Vec::new();
     mesh.for_each_triangle_in(&swept.seen_from(xf), |t| triangles.push(t));
     triangles.sort_unstable();
-    let Some(rounded) = Rounded::of(cast) else {
-        return None;
-    };
+    let rounded = Rounded::of(cast)?;
     let tolerance = cast_tolerance::<R>();
     let mut best: Option<CastHit<R>> = None;
     for t in triangles {
