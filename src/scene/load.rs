@@ -12,7 +12,7 @@ use crate::rigid::shape_serde::with_scene_directory;
 ///
 /// `Some(…)` may be left out around optional sections (RON's `implicit_some`). Mesh files
 /// (`TriMesh(file: ...)`) are named relative to the current directory, or to the one set
-/// by [`with_scene_directory`](crate::rigid::shape_serde::with_scene_directory).
+/// by [`crate::rigid::shape_serde::with_scene_directory`].
 pub fn parse_scene<R: Real>(text: &str, origin: &str) -> Result<Scene<R>, String> {
     let options = ron::Options::default().with_default_extension(Extensions::IMPLICIT_SOME);
     options.from_str::<Scene<R>>(text).map_err(|e| {
