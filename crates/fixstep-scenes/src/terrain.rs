@@ -25,7 +25,7 @@ fn banks<R: Real>(k: i64) -> R {
 /// The hill: a 24 m × 24 m heightfield centred at x = −7 m (spanning x from −19 to 5 m),
 /// falling from 8 m at its west edge as 8 (1 − u)² m, u = c / 32, with bumps of up to
 /// 0.25 m, (4 − |r mod 8 − 4|)(4 − |c mod 8 − 4|) / 64 m, that vanish on every eighth row
-/// and column, and banks rising towards its sides as u² times the [`banks`] profile, so
+/// and column, and banks rising towards its sides as u² times the `banks` profile, so
 /// that its east edge meets the bowl's west edge.
 pub fn hill<R: Real>() -> BodyDesc<R> {
     let n = HILL_SAMPLES;
@@ -179,7 +179,7 @@ pub fn landing_height(r: u32, c: u32) -> (i64, i64) {
     (wave(r) * wave(c), 256)
 }
 
-/// The rock's points, in centimetres (see [`rock`]), for engines that build it themselves.
+/// The rock's points, in centimetres (see `rock`), for engines that build it themselves.
 pub fn rock_centimetres() -> [(i64, i64, i64); 12] {
     ROCK_CM
 }
