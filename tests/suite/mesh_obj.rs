@@ -29,7 +29,7 @@ fn a_quad_is_two_triangles() {
 fn a_cube_in_two_groups_is_one_mesh() {
     let cube = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
                 o a\nf 1 4 3 2\nf 5 6 7 8\ng b\nf 1 2 6 5\nf 2 3 7 6\nusemtl x\n\
-                f 3/1/1 4/1/1 8/1/1 7/1/1\nf -8 -3 -4 -7\n";
+                f 3/1/1 4/1/1 8/1/1 7/1/1\nf -8 -4 -1 -5\n";
     let mesh = read(cube).expect("reads");
     assert_eq!(mesh.vertices().len(), 8);
     assert_eq!(mesh.triangles().len(), 12);
