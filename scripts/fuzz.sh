@@ -47,7 +47,7 @@ seeds() {
       >"fuzz/seeds/world_step/$name"
   done
   for f in scenes/*.ron; do cp "$f" "fuzz/seeds/scene_ron/$(basename "$f" .ron)"; done
-  for f in scenes/meshes/*.obj; do cp "$f" "fuzz/seeds/mesh_obj/$(basename "$f" .obj)"; done
+  for f in docs/scenes/*.obj; do cp "$f" "fuzz/seeds/mesh_obj/$(basename "$f" .obj)"; done
   for name in $("$bin" scenes | cut -d' ' -f1); do
     case "$SEEDLESS_SCENES" in *" $name "*) continue ;; esac
     for ticks in 0 45; do

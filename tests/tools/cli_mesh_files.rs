@@ -55,9 +55,7 @@ fn the_example_level_reads_its_mesh_beside_it() {
     let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
     let run = fixstep(&[
         "run",
-        root.join("scenes/meshes/level.ron")
-            .to_str()
-            .expect("UTF-8"),
+        root.join("docs/scenes/level.ron").to_str().expect("UTF-8"),
         "--ticks",
         "5",
     ]);

@@ -272,15 +272,18 @@ fn scaled_points<R: Real>(simplex: &Simplex<R>) -> [Vec3<R>; 4] {
     core::array::from_fn(|i| simplex.points[i].w * factor)
 }
 
-/// 2ᵏ such that 2ᵏ x ∈ [low, 2 low) for x > 0 (k bounded by ±64); 1 for x = 0.
+/// 2ᵏ such that 2ᵏ x ∈ [low, 2 low) for x > 0, with k at most 30 (so that 2ᵏ stays inside
+/// I32F32's range: for the smallest values, 2³⁰ x stays below `low`) and at least −64; 1
+/// for x = 0.
 fn power_of_two_scale<R: Real>(x: R, low: R) -> R {
     let mut factor = R::ONE;
     let mut y = x;
     if y <= R::ZERO {
         return factor;
     }
+    let largest = R::from_int(1 << 30);
     for _ in 0..64 {
-        if y >= low {
+        if y >= low || factor >= largest {
             break;
         }
         y *= R::TWO;
