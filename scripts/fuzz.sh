@@ -13,18 +13,26 @@
 # A crash lands in fuzz/artifacts/TARGET/; once fixed, copy it to fuzz/regressions/TARGET/,
 # where `cargo test --test suite fuzz_regressions::` runs it for ever after.
 #
-# Installs cargo-fuzz (crates.io) when missing. `-s none`: no sanitizer, so stable works;
-# with nightly, `cargo +nightly fuzz run -s address TARGET` adds AddressSanitizer.
+# The targets are built with cargo itself, with the flags cargo-fuzz 0.13 gives `cargo fuzz
+# run -s none` (libFuzzer's coverage instrumentation, no sanitizer, so stable works), less its
+# single codegen unit: installing cargo-fuzz and compiling in one unit cost CI more than the
+# fuzzing itself. With nightly and cargo-fuzz, `cargo +nightly fuzz run -s address TARGET`
+# (in fuzz/) adds AddressSanitizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 TARGETS=(mesh_obj replay_decode scene_ron snapshot_decode world_step)
 
-# cargo-fuzz has no --locked: check first that fuzz/Cargo.lock needs no change, so that
-# every run builds the dependency versions committed there.
-ensure_cargo_fuzz() {
-  cargo fuzz --version >/dev/null 2>&1 || cargo install cargo-fuzz --locked --version 0.13.2
-  (cd fuzz && cargo fetch --locked --quiet)
+# libFuzzer's instrumentation, as cargo-fuzz 0.13 sets it by default on Linux.
+FUZZ_RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4
+  -Cllvm-args=-sanitizer-coverage-inline-8bit-counters -Cllvm-args=-sanitizer-coverage-pc-table
+  -Cllvm-args=-sanitizer-coverage-trace-compares -Cllvm-args=-sanitizer-coverage-stack-depth
+  -Cllvm-args=-simplifycfg-branch-fold-threshold=0 --cfg fuzzing"
+HOST=$(rustc -vV | sed -n 's/^host: //p')
+# --target keeps the flags off build scripts; --locked builds the versions in fuzz/Cargo.lock.
+build_targets() {
+  (cd fuzz && RUSTFLAGS="$(echo $FUZZ_RUSTFLAGS)" cargo build --quiet --locked --release \
+     --target "$HOST" --config 'profile.release.debug="line-tables-only"' --bins)
 }
 
 # The replay format (src/replay/format.rs): for the I32F32 header the scene section's length
@@ -64,7 +72,7 @@ run_target() {
   local inputs=("corpus/$t" "seeds/$t")
   mkdir -p "fuzz/corpus/$t"
   # The kept inputs are replayed, and mutated only by an open-ended run (`run TARGET`
-  # without seconds): a timed run (the test command's 15 s) that mutates a kept time-out
+  # without seconds): a timed run (the test command's 10 s) that mutates a kept time-out
   # can find a variant slower still, failing the test command for a known reason that no
   # change under test caused.
   if [[ -d fuzz/regressions/$t && ( $mode == replay || $mode == forever ) ]]; then
@@ -75,21 +83,22 @@ run_target() {
     forever) ;;
     *) limits=(-max_total_time="$mode") ;;
   esac
-  (cd fuzz && cargo fuzz run -s none "$t" "${inputs[@]}" -- \
+  mkdir -p "fuzz/artifacts/$t"
+  (cd fuzz && "target/$HOST/release/$t" -artifact_prefix="artifacts/$t/" "${inputs[@]}" \
      "${limits[@]}" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1)
 }
 
 case "${1:-}" in
   seeds) seeds ;;
   smoke)
-    ensure_cargo_fuzz
+    build_targets
     for t in "${TARGETS[@]}"; do run_target "$t" replay; done
     if [[ -n ${2:-} ]]; then for t in "${TARGETS[@]}"; do run_target "$t" "$2"; done; fi
     echo "fuzz smoke: ${#TARGETS[@]} targets passed"
     ;;
   run)
     [[ -n ${2:-} ]] || { echo "usage: $0 run TARGET [SECONDS]" >&2; exit 2; }
-    ensure_cargo_fuzz
+    build_targets
     run_target "$2" "${3:-forever}"
     ;;
   *) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
