@@ -4,6 +4,7 @@
 //! Errors name the field relative to the particle description (`emitters[2].rate`); the
 //! scene prefixes `particles.`.
 
+use super::collisions::GroupCollision;
 use super::damping::Damping;
 use super::desc::{
     EmitterDesc, ForceDesc, Interval, MAX_CAPACITY, MAX_EMISSION_RATE, ParticlesDesc, Spread,
@@ -137,12 +138,28 @@ impl<R: Real> ParticleSystem<R> {
                 .map_err(|e| e.within(&format!("forces[{i}]")))?;
         }
 
+        let mut collisions = Vec::with_capacity(desc.collisions.len());
+        for (i, collision) in desc.collisions.iter().enumerate() {
+            let compiled = GroupCollision::compile(collision)
+                .map_err(|e| e.within(&format!("collisions[{i}]")))?;
+            ensure(
+                !collisions
+                    .iter()
+                    .any(|c: &GroupCollision<R>| c.group == compiled.group),
+                || format!("collisions[{i}].group"),
+                || format!("group {} already has an entry", compiled.group),
+            )?;
+            collisions.push(compiled);
+        }
+        collisions.sort_by_key(|c| c.group);
+
         Ok(Self {
             integrator: desc.integrator,
             storage,
             templates,
             emitters,
             forces,
+            collisions,
             accelerations_current: false,
             last_gravity: Vec3::ZERO,
             external_forces_pending: false,

@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 pub use crate::math::integration::Integrator;
 pub use crate::math::spring::SpringDesc;
 use crate::math::{Fx, Real, Vec3};
+use crate::rigid::CollisionFilter;
 
 /// Capacity of a particle system whose scene does not give one.
 pub const DEFAULT_CAPACITY: u32 = 1024;
@@ -60,6 +61,10 @@ pub struct ParticlesDesc<R: Real = Fx> {
     /// Force generators, evaluated in this order.
     #[serde(default)]
     pub forces: Vec<ForceDesc<R>>,
+    /// The groups whose particles collide with the rigid bodies, at most one entry per
+    /// group. Default none: particles pass through everything.
+    #[serde(default)]
+    pub collisions: Vec<CollisionDesc<R>>,
 }
 
 impl<R: Real> Default for ParticlesDesc<R> {
@@ -72,6 +77,7 @@ impl<R: Real> Default for ParticlesDesc<R> {
             templates: Vec::new(),
             emitters: Vec::new(),
             forces: Vec::new(),
+            collisions: Vec::new(),
         }
     }
 }
@@ -119,6 +125,49 @@ impl<R: Real> Default for ParticleTemplate<R> {
             mass: R::ONE,
             group: 0,
             lifetime: R::ZERO,
+        }
+    }
+}
+
+/// How the particles of one group collide with the rigid bodies (of every shape, level
+/// meshes and heightfields included): as points that bounce with restitution `e` and
+/// Coulomb friction `μ` relative to the surface's own velocity (see
+/// [`collisions`](super::collisions)).
+///
+/// ```ron
+/// collisions: [(group: 0, restitution: 0.4, friction: 0.3, push: true)]
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "", deny_unknown_fields)]
+pub struct CollisionDesc<R: Real = Fx> {
+    /// The particle group this entry is for.
+    pub group: u16,
+    /// e in [0, 1]: the fraction of the approaching normal speed kept after a bounce.
+    /// Default 0.5.
+    #[serde(default = "half")]
+    pub restitution: R,
+    /// μ ≥ 0: the tangential impulse is at most μ times the normal one. Default 0.3.
+    #[serde(default = "three_tenths")]
+    pub friction: R,
+    /// Whether each bounce pushes a dynamic body back with the opposite impulse. Default
+    /// false: the particles bounce off bodies without moving them.
+    #[serde(default)]
+    pub push: bool,
+    /// The layers the particles are on and collide with (a body is hit when the two filters
+    /// interact; sensors never are). Default all.
+    #[serde(default)]
+    pub filter: CollisionFilter,
+}
+
+impl<R: Real> CollisionDesc<R> {
+    /// Group `group` with the defaults: e = 0.5, μ = 0.3, no push, every layer.
+    pub fn new(group: u16) -> Self {
+        Self {
+            group,
+            restitution: half(),
+            friction: three_tenths(),
+            push: false,
+            filter: CollisionFilter::ALL,
         }
     }
 }
@@ -291,6 +340,14 @@ fn default_capacity() -> u32 {
 
 fn one<R: Real>() -> R {
     R::ONE
+}
+
+fn half<R: Real>() -> R {
+    R::HALF
+}
+
+fn three_tenths<R: Real>() -> R {
+    R::from_ratio(3, 10)
 }
 
 fn yes() -> bool {

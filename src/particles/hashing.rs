@@ -27,7 +27,11 @@
 //!    bytes);
 //! 7. the dampings: count, then each one's kept-per-second fraction and group;
 //! 8. the accelerations-current flag, the external-forces-pending flag, the gravity of the
-//!    last step.
+//!    last step;
+//! 9. only when some group collides with the rigid bodies (so that a system without
+//!    collisions hashes as before they existed): their count, then per group in ascending
+//!    order the group (`u32`), restitution, friction, push flag, the filter's layers and
+//!    mask (`u32`).
 //!
 //! Not hashed, because they do not influence the future: the lowest-free-slot cache and the
 //! live count (functions of the alive flags), the dampings' cached d^Δt (a function of d and
@@ -234,6 +238,18 @@ impl<R: Real> ParticleSystem<R> {
         write_flag(h, self.accelerations_current);
         write_flag(h, self.external_forces_pending);
         h.write_vec3(self.last_gravity);
+
+        if !self.collisions.is_empty() {
+            h.write_len(self.collisions.len());
+            for c in &self.collisions {
+                h.write_u32(u32::from(c.group));
+                h.write_real(c.restitution);
+                h.write_real(c.friction);
+                write_flag(h, c.push);
+                h.write_u32(c.filter.layers);
+                h.write_u32(c.filter.mask);
+            }
+        }
     }
 
     /// The first slot, in ascending index, whose state (as hashed) differs between `self`

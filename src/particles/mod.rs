@@ -34,10 +34,11 @@
 //! [`emitter`] emission and its random draws · `forces` force generators and a(x, v) ·
 //! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the six schemes ·
 //! `fused_euler` their one-pass semi-implicit Euler for linear fields ·
-//! `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
+//! [`collisions`] bouncing off the rigid bodies · `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
 //! order.
 
 mod build;
+pub(crate) mod collisions;
 mod commands;
 mod damping;
 pub mod desc;
@@ -56,8 +57,8 @@ pub mod user_force;
 mod validate;
 
 pub use desc::{
-    DEFAULT_CAPACITY, EmitterDesc, ForceDesc, Interval, MAX_CAPACITY, MAX_EMISSION_RATE,
-    ParticleDesc, ParticleTemplate, ParticlesDesc, Spread, SpringDesc,
+    CollisionDesc, DEFAULT_CAPACITY, EmitterDesc, ForceDesc, Interval, MAX_CAPACITY,
+    MAX_EMISSION_RATE, ParticleDesc, ParticleTemplate, ParticlesDesc, Spread, SpringDesc,
 };
 pub use integrators::Integrator;
 pub use system::{ParticleSystem, StepReport};

@@ -2,6 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::collisions::GroupCollision;
 use super::emitter::Emitter;
 use super::forces::{ForceField, ForceGenerator, ForceSet};
 use super::integrators::{self, Integrator, Scratch, StepContext};
@@ -32,6 +33,8 @@ pub struct ParticleSystem<R: Real = Fx> {
     pub(super) templates: Vec<SpawnTemplate<R>>,
     pub(super) emitters: Vec<Emitter<R>>,
     pub(super) forces: ForceSet<R>,
+    /// The groups that collide with the rigid bodies, ascending by group.
+    pub(super) collisions: Vec<GroupCollision<R>>,
     /// Whether `storage.kinematics.accelerations` holds a(x, v) of the current state, so
     /// that velocity Verlet can reuse it.
     pub(super) accelerations_current: bool,

@@ -27,13 +27,20 @@
 //! A scene with bullets adds [`Addition::RigidBullets`]: the indices, each list ascending,
 //! of the bullet bodies and of the bullet templates, never both empty and never naming one
 //! that does not exist.
+//!
+//! Particles are written as format 1 wrote them ([`ParticlesFields`]: all but the
+//! collisions), and a scene whose particle groups collide adds
+//! [`Addition::ParticleCollisions`], never empty and never without particles.
 
 use serde::{Deserialize, Serialize};
 
 use crate::codec::{self, CodecError};
 use crate::fluid::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
-use crate::particles::ParticlesDesc;
+use crate::particles::{
+    CollisionDesc, EmitterDesc, ForceDesc, Integrator, ParticleDesc, ParticleTemplate,
+    ParticlesDesc,
+};
 use crate::rigid::{
     BodyDesc, BodyKind, BodyTemplate, CollisionFilter, Grid, JointTemplate, JointsDesc, Material,
     RigidDesc, Shape, SolverSettings,
@@ -53,7 +60,7 @@ struct BaseRef<'a, R: Real> {
     substeps: u32,
     seed: u64,
     ticks: u64,
-    particles: &'a Option<ParticlesDesc<R>>,
+    particles: Option<ParticlesFields<R>>,
     script: &'a Vec<TickInput<R>>,
 }
 
@@ -68,8 +75,48 @@ struct Base<R: Real> {
     substeps: u32,
     seed: u64,
     ticks: u64,
-    particles: Option<ParticlesDesc<R>>,
+    particles: Option<ParticlesFields<R>>,
     script: Vec<TickInput<R>>,
+}
+
+/// [`ParticlesDesc`]'s fields as format 1 wrote them, in that order: all but the
+/// collisions.
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct ParticlesFields<R: Real> {
+    integrator: Integrator,
+    capacity: u32,
+    particles: Vec<ParticleDesc<R>>,
+    templates: Vec<ParticleTemplate<R>>,
+    emitters: Vec<EmitterDesc<R>>,
+    forces: Vec<ForceDesc<R>>,
+}
+
+impl<R: Real> ParticlesFields<R> {
+    /// The fields of `desc` but its collisions.
+    fn of(desc: &ParticlesDesc<R>) -> Self {
+        Self {
+            integrator: desc.integrator,
+            capacity: desc.capacity,
+            particles: desc.particles.clone(),
+            templates: desc.templates.clone(),
+            emitters: desc.emitters.clone(),
+            forces: desc.forces.clone(),
+        }
+    }
+
+    /// The description without collisions.
+    fn into_desc(self) -> ParticlesDesc<R> {
+        ParticlesDesc {
+            integrator: self.integrator,
+            capacity: self.capacity,
+            particles: self.particles,
+            templates: self.templates,
+            emitters: self.emitters,
+            forces: self.forces,
+            collisions: Vec::new(),
+        }
+    }
 }
 
 /// A subsystem description added to the scene after format 1. Variants are only ever
@@ -92,6 +139,8 @@ enum Addition<R: Real> {
     RigidTemplates(Vec<TemplateFields<R>>, Vec<JointTemplate<R>>),
     /// The bullet bodies and the bullet templates, by index, when there are any.
     RigidBullets(Vec<u32>, Vec<u32>),
+    /// The particle groups that collide with the rigid bodies, when there are any.
+    ParticleCollisions(Vec<CollisionDesc<R>>),
 }
 
 /// [`BodyTemplate`]'s fields as state version 5 wrote them, in that order: all but the
@@ -234,6 +283,7 @@ impl<R: Real> Addition<R> {
             Self::RigidBodyFlags(_) => 6,
             Self::RigidTemplates(..) => 7,
             Self::RigidBullets(..) => 8,
+            Self::ParticleCollisions(_) => 9,
         }
     }
 }
@@ -363,7 +413,7 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
         substeps: scene.substeps,
         seed: scene.seed,
         ticks: scene.ticks,
-        particles: &scene.particles,
+        particles: scene.particles.as_ref().map(ParticlesFields::of),
         script: &scene.script,
     })?;
     let mut additions = Vec::new();
@@ -408,6 +458,13 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
             additions.push(Addition::RigidBullets(bodies, templates));
         }
     }
+    if let Some(particles) = scene
+        .particles
+        .as_ref()
+        .filter(|p| !p.collisions.is_empty())
+    {
+        additions.push(Addition::ParticleCollisions(particles.collisions.clone()));
+    }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
     }
@@ -427,7 +484,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         substeps: base.substeps,
         seed: base.seed,
         ticks: base.ticks,
-        particles: base.particles,
+        particles: base.particles.map(ParticlesFields::into_desc),
         rigid: None,
         fluid: None,
         soft: None,
@@ -546,6 +603,16 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                     };
                     template.bullet = true;
                 }
+            }
+            Addition::ParticleCollisions(collisions) => {
+                let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
+                let Some(particles) = &mut scene.particles else {
+                    return not_canonical("particle collisions without particles");
+                };
+                if collisions.is_empty() {
+                    return not_canonical("an empty list of particle collisions");
+                }
+                particles.collisions = collisions;
             }
         }
     }

@@ -130,6 +130,47 @@ impl<R: Real> RigidSystem<R> {
         }
     }
 
+    /// A push from outside the rigid stage (a particle's bounce) on the awake dynamic body
+    /// in slot `i`: impulse J (N·s) at world point p, applied at once as
+    /// [`apply_impulse`](Self::apply_impulse) applies it. Returns false, applying nothing,
+    /// when the body sleeps: its pushes are gathered and given to
+    /// [`push_sleeping_body`](Self::push_sleeping_body) once the stage ends.
+    pub(crate) fn push_body(&mut self, i: usize, impulse: Vec3<R>, point: Vec3<R>) -> bool {
+        let b = &self.bodies;
+        if b.kind[i] != BodyKind::Dynamic {
+            return true;
+        }
+        if b.asleep[i] {
+            return false;
+        }
+        self.apply_impulse(i, impulse, Some(point));
+        true
+    }
+
+    /// The pushes a sleeping dynamic body gathered during a stage: total impulse J (N·s) and
+    /// total moment L = Σ (pₖ − c) × Jₖ (N·m·s) about its centre c. The body wakes and
+    /// takes Δv = J/m, Δω = I⁻¹ L only when |J|/m reaches its linear sleep speed; weaker
+    /// pushes leave it asleep and unmoved, so that particles resting on a crate do not
+    /// keep it awake.
+    pub(crate) fn push_sleeping_body(&mut self, i: usize, impulse: Vec3<R>, moment: Vec3<R>) {
+        let b = &self.bodies;
+        if b.kind[i] != BodyKind::Dynamic
+            || impulse.length() * b.inv_mass[i] < self.settings.linear_sleep_speed
+        {
+            return;
+        }
+        self.wake_body(i);
+        let b = &mut self.bodies;
+        b.linear_velocity[i] += impulse * b.inv_mass[i];
+        let inv_inertia = b.orientation[i].to_mat3().rotate_inertia(b.inv_inertia[i]);
+        b.angular_velocity[i] += inv_inertia * moment;
+    }
+
+    /// The centre of mass of the body in slot `i`, m.
+    pub(crate) fn centre_of_slot(&self, i: usize) -> Vec3<R> {
+        self.bodies.position[i]
+    }
+
     /// Sets the linear velocity (m/s) of a dynamic or kinematic body.
     fn set_velocity(&mut self, i: usize, velocity: Vec3<R>) {
         if self.bodies.kind[i] == BodyKind::Static {

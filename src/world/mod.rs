@@ -3,6 +3,7 @@
 pub mod checksum;
 pub mod difference;
 pub mod divergence;
+mod particle_coupling;
 mod pipeline;
 mod queries;
 pub mod snapshot;

@@ -4,6 +4,7 @@ use serde::{Deserialize, Serialize};
 
 use super::checksum::Checksum;
 use super::divergence::{Divergence, DivergenceMonitor};
+use super::particle_coupling::step_colliding_particles;
 use super::stage::StageTimings;
 use crate::fluid::FluidSystem;
 use crate::math::rng::Pcg32;
@@ -125,6 +126,28 @@ impl<R: Real> WorldState<R> {
         keep_unsimulated(&mut self.rigid, current.rigid.take());
         keep_unsimulated(&mut self.soft, current.soft.take());
         keep_unsimulated(&mut self.fluid, current.fluid.take());
+    }
+}
+
+impl<R: Real> WorldState<R> {
+    /// The particle stage, when some particle group collides with the rigid bodies: steps
+    /// it with the bodies in view ([`particle_coupling`](super::particle_coupling)) and
+    /// returns true; otherwise does nothing and returns false.
+    fn step_coupled_particles(
+        &mut self,
+        timings: &mut Option<Box<StageTimings>>,
+        substep_dt: R,
+    ) -> bool {
+        let (Some(particles), Some(rigid)) = (&mut self.particles, &mut self.rigid) else {
+            return false;
+        };
+        if !particles.collides() {
+            return false;
+        }
+        timed(timings, Stage::Particles, || {
+            step_colliding_particles(particles, rigid, &self.settings, &mut self.rng, substep_dt);
+        });
+        true
     }
 }
 
@@ -342,8 +365,12 @@ impl<R: Real> World<R> {
                 self.apply_inputs(input)
             });
             let substep_dt = self.substep_dt;
+            let coupled = self.state.step_coupled_particles(&mut timings, substep_dt);
             let (settings, rng, subsystems) = self.state.split_mut();
             for subsystem in subsystems.into_iter().flatten() {
+                if coupled && subsystem.stage() == Stage::Particles {
+                    continue;
+                }
                 timed(&mut timings, subsystem.stage(), || {
                     step_subsystem(subsystem, settings, rng, substep_dt);
                 });

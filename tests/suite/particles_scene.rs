@@ -69,6 +69,7 @@ fn valid() -> ParticlesDesc<Fx> {
                 group: None,
             },
         ],
+        collisions: Vec::new(),
     }
 }
 

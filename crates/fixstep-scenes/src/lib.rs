@@ -5,6 +5,7 @@
 //! pieces the scenes are made of, per subsystem, for tests and benchmarks to reuse.
 
 pub mod bullets;
+pub mod debris;
 pub mod fluid;
 pub mod game;
 pub mod joints;
@@ -18,7 +19,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 24] = [
+pub const BUILTIN_SCENES: [(&str, &str); 25] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -47,6 +48,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 24] = [
     (
         "terrain",
         "boxes, balls, cylinders and rocks tumble down a heightfield hill into a triangle-mesh bowl",
+    ),
+    (
+        "debris",
+        "an emitter sprays pellets at a stack of crates beside a ledge: the pellets bounce off every body and push the crates until the stack falls",
     ),
     (
         "balls",
@@ -158,6 +163,11 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
         "terrain" => {
             scene.rigid = Some(terrain::terrain());
             scene.ticks = 600;
+        }
+        "debris" => {
+            scene.rigid = Some(debris::debris_bodies());
+            scene.particles = Some(debris::debris_pellets());
+            scene.ticks = 480;
         }
         "balls" => {
             scene.rigid = Some(rigid::balls(16));

@@ -61,6 +61,7 @@ pub fn fountain<R: Real>() -> ParticlesDesc<R> {
                 group: None,
             },
         ],
+        collisions: Vec::new(),
     }
 }
 
@@ -124,6 +125,7 @@ pub fn orbits<R: Real>() -> ParticlesDesc<R> {
             softening: ratio(1, 20),
             group: None,
         }],
+        collisions: Vec::new(),
     }
 }
 
@@ -226,5 +228,6 @@ pub fn showcase_particles<R: Real>() -> ParticlesDesc<R> {
                 group: Some(2),
             },
         ],
+        collisions: Vec::new(),
     }
 }

@@ -15,10 +15,11 @@
 //! [`ray_hull`] rays against convex hulls · [`ray_mesh`] and [`point_mesh`] rays and
 //! closest points on meshes and heightfields · [`shape_cast`] swept shapes · [`overlap`]
 //! shared points · [`point`] closest points · [`point_hull`] closest points of hulls ·
-//! [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
+//! [`moving_point`] a particle's path against moving bodies · [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
 //! kept current by the step.
 
 mod index;
+mod moving_point;
 mod overlap;
 mod parts;
 mod point;
