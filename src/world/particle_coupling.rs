@@ -15,16 +15,15 @@ use crate::math::rng::Pcg32;
 use crate::math::{Real, Vec3};
 use crate::particles::ParticleSystem;
 use crate::particles::collisions::{SurfaceHit, Surfaces};
+use crate::rigid::query::BodiesInMotion;
 use crate::rigid::{CollisionFilter, RigidSystem};
 use crate::types::Subsystem;
 
 /// The rigid bodies as the particles' surfaces during one substep.
 struct Bodies<'a, R: Real> {
     rigid: &'a mut RigidSystem<R>,
-    /// Seconds from the tick's start to the substep's.
-    elapsed: R,
-    /// How far a body moves by the substep's end, m.
-    reach: R,
+    /// Where the bodies are during the substep.
+    motion: BodiesInMotion<R>,
     /// The pushes on sleeping bodies so far this tick, by slot: total impulse (N·s) and
     /// total moment about the centre (N·m·s).
     sleeping: &'a mut BTreeMap<usize, (Vec3<R>, Vec3<R>)>,
@@ -40,7 +39,7 @@ impl<R: Real> Surfaces<R> for Bodies<'_, R> {
     ) -> Option<SurfaceHit<R>> {
         let hit = self
             .rigid
-            .cast_moving_point(from, to, dt, self.elapsed, self.reach, filter)?;
+            .cast_moving_point(&self.motion, from, to, dt, filter)?;
         Some(SurfaceHit {
             body: hit.slot as u32,
             fraction: hit.fraction,
@@ -82,9 +81,8 @@ pub(super) fn step_colliding_particles<R: Real>(
         particles.path_starts(&mut starts);
         particles.step(dt, settings.gravity, rng);
         let mut bodies = Bodies {
-            reach: rigid.moving_reach(elapsed + dt),
+            motion: rigid.in_motion(elapsed, dt),
             rigid: &mut *rigid,
-            elapsed,
             sleeping: &mut sleeping,
         };
         particles.collide(dt, &starts, &mut bodies);

@@ -37,6 +37,7 @@ mod tree;
 use core::cell::Cell;
 
 pub(crate) use self::index::QueryIndex;
+pub(crate) use self::moving_point::BodiesInMotion;
 use self::overlap::shapes_overlap;
 use self::point::project_point;
 use self::ray::{BoxProbe, Crossing, Ray, ray_shape};

@@ -10,13 +10,22 @@
 //! this tick). A path that starts inside a body ([`Crossing::Inside`]) does not hit it, so
 //! a particle that a body has overtaken leaves it freely.
 
-use super::ray::{BoxProbe, Crossing, Ray, ray_shape};
+use super::ray::{Crossing, Ray, ray_shape};
 use super::{prune_pad, unit_direction};
 use crate::math::{Real, Vec3};
 use crate::rigid::aabb::Aabb;
 use crate::rigid::filter::CollisionFilter;
 use crate::rigid::system::RigidSystem;
 use crate::rigid::transform::Transform;
+
+/// Every body's placement `elapsed` seconds into the tick (its centre carried by its
+/// velocity, its orientation at the tick's start), by slot, and how far any point of a
+/// moving body travels by the end of the path's step: the largest (|vᵢ| + |ωᵢ| rᵢ)·(elapsed +
+/// Δt), with rᵢ the half diagonal of the body's bounding box (0 for planes), m.
+pub(crate) struct BodiesInMotion<R: Real> {
+    placements: Vec<Transform<R>>,
+    reach: R,
+}
 
 /// Where a point's path first enters a body.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,37 +41,37 @@ pub(crate) struct PathHit<R: Real> {
 }
 
 impl<R: Real> RigidSystem<R> {
-    /// How far any point of a moving body can travel in `time` seconds at the current
-    /// velocities, m: the largest (|vᵢ| + |ωᵢ| rᵢ)·time, with rᵢ the half diagonal of the
-    /// body's bounding box (0 for planes).
-    pub(crate) fn moving_reach(&self, time: R) -> R {
+    /// The bodies as a particle stage sees them `elapsed` seconds into the tick, for
+    /// paths of up to `dt` seconds ([`cast_moving_point`](Self::cast_moving_point)).
+    pub(crate) fn in_motion(&self, elapsed: R, dt: R) -> BodiesInMotion<R> {
         let b = &self.bodies;
+        let mut placements = Vec::with_capacity(b.len());
         let mut reach = R::ZERO;
         for i in 0..b.len() {
             if !b.is_moving(i) {
+                placements.push(Transform::from_pose(b.position[i], b.orientation[i]));
                 continue;
             }
-            let xf = Transform::from_pose(b.position[i], b.orientation[i]);
+            let (v, w) = (b.linear_velocity[i], b.angular_velocity[i]);
+            let xf = Transform::from_pose(b.position[i].add_scaled(v, elapsed), b.orientation[i]);
             let radius = Aabb::of_shape(&b.shape[i], &xf)
                 .map_or(R::ZERO, |a| (a.max - a.min).length() * R::HALF);
-            let speed = b.linear_velocity[i].length() + b.angular_velocity[i].length() * radius;
-            reach = reach.max(speed * time);
+            reach = reach.max((v.length() + w.length() * radius) * (elapsed + dt));
+            placements.push(xf);
         }
-        reach
+        BodiesInMotion { placements, reach }
     }
 
     /// The first non-sensor body `filter` interacts with that the point moving from `from`
-    /// to `to` (m) in `dt` seconds enters, each body placed `elapsed` seconds into the tick
-    /// and seen moving with its velocity at `from` (module documentation). `reach` (m)
-    /// bounds how far any body moves by then ([`moving_reach`](Self::moving_reach) of
-    /// `elapsed + dt`). Ties in fraction go to the lower handle.
+    /// to `to` (m) in `dt` seconds enters, each body placed as in `motion` and seen moving
+    /// with its velocity at `from` (module documentation). Ties in fraction go to the lower
+    /// handle.
     pub(crate) fn cast_moving_point(
         &self,
+        motion: &BodiesInMotion<R>,
         from: Vec3<R>,
         to: Vec3<R>,
         dt: R,
-        elapsed: R,
-        reach: R,
         filter: CollisionFilter,
     ) -> Option<PathHit<R>> {
         let b = &self.bodies;
@@ -70,7 +79,9 @@ impl<R: Real> RigidSystem<R> {
             min: from.min_elem(to),
             max: from.max_elem(to),
         }
-        .expanded(reach + prune_pad::<R>());
+        .expanded(motion.reach + prune_pad::<R>());
+        // The path itself, for the bodies that do not move (most of a level): formed once.
+        let still = ray_along(from, to - from);
         let mut best: Option<(PathHit<R>, crate::types::Handle)> = None;
         self.for_each_candidate(
             |aabb| aabb.overlaps(&path),
@@ -78,27 +89,21 @@ impl<R: Real> RigidSystem<R> {
                 if !b.alive[i] || b.sensor[i] || !filter.interacts(b.filter[i]) {
                     return;
                 }
-                let moving = b.is_moving(i);
-                let (v, w) = if moving {
-                    (b.linear_velocity[i], b.angular_velocity[i])
+                let Some(xf) = motion.placements.get(i) else {
+                    return;
+                };
+                let (velocity, ray) = if b.is_moving(i) {
+                    let (v, w) = (b.linear_velocity[i], b.angular_velocity[i]);
+                    let velocity = v + w.cross(from - xf.translation);
+                    (velocity, ray_along(from, to - velocity * dt - from))
                 } else {
-                    (Vec3::ZERO, Vec3::ZERO)
+                    (Vec3::ZERO, still)
                 };
-                let centre = b.position[i].add_scaled(v, elapsed);
-                let velocity = v + w.cross(from - centre);
-                let relative = to - velocity * dt - from;
-                let Some(direction) = unit_direction(relative) else {
+                let Some((ray, length)) = ray else {
                     return;
                 };
-                let length = relative.length();
-                let ray = Ray::new(from, direction, length);
-                let xf = Transform::from_pose(centre, b.orientation[i]);
-                let shape = &b.shape[i];
-                let probe = BoxProbe::new(&ray, prune_pad::<R>());
-                if !Aabb::of_shape(shape, &xf).is_none_or(|a| probe.reaches(&a, ray.max)) {
-                    return;
-                }
-                let Some(Crossing::Enters { distance, normal }) = ray_shape(shape, &xf, &ray)
+                let Some(Crossing::Enters { distance, normal }) =
+                    ray_shape(&b.shape[i], xf, &ray)
                 else {
                     return;
                 };
@@ -119,4 +124,11 @@ impl<R: Real> RigidSystem<R> {
         );
         best.map(|(hit, _)| hit)
     }
+}
+
+/// The ray along `path` from `from` and the path's length (m), or `None` for no motion.
+fn ray_along<R: Real>(from: Vec3<R>, path: Vec3<R>) -> Option<(Ray<R>, R)> {
+    let direction = unit_direction(path)?;
+    let length = path.length();
+    Some((Ray::new(from, direction, length), length))
 }
