@@ -743,6 +743,31 @@ mod tests {
     }
 
     #[test]
+    fn particle_collisions_survive_the_round_trip_and_are_never_empty_or_alone() {
+        let scene = builtin_scene::<Fx>("debris").expect("a built-in scene");
+        let bytes = encode_scene(&scene).expect("encodes");
+        assert_eq!(decode_scene(&bytes).expect("decodes"), scene);
+        let mut bare = scene.clone();
+        bare.particles
+            .as_mut()
+            .expect("particles")
+            .collisions
+            .clear();
+        let plain = encode_scene(&bare).expect("encodes");
+        assert!(plain.len() < bytes.len());
+        assert_eq!(decode_scene(&plain).expect("decodes"), bare);
+        let empty = with_additions(&bare, &[Addition::ParticleCollisions(Vec::new())]);
+        assert!(rejection(&empty).contains("an empty list of particle collisions"));
+        let mut none = bare.clone();
+        none.particles = None;
+        let alone = with_additions(
+            &none,
+            &[Addition::ParticleCollisions(vec![CollisionDesc::new(0)])],
+        );
+        assert!(rejection(&alone).contains("without particles"));
+    }
+
+    #[test]
     fn a_cfl_number_without_a_fluid_is_refused() {
         let scene = adaptive_dam_break();
         let bytes = with_additions(&scene, &[Addition::FluidCfl(Fx::from_ratio(1, 5))]);

@@ -259,8 +259,16 @@ fn debris_restored_mid_contact_continues_like_an_uninterrupted_run() {
     for tick in at..ticks {
         world.step(&TickInput::default());
         fresh.step(&TickInput::default());
-        assert_eq!(world.checksum(), uninterrupted[tick as usize], "restored, tick {tick}");
-        assert_eq!(fresh.checksum(), uninterrupted[tick as usize], "decoded, tick {tick}");
+        assert_eq!(
+            world.checksum(),
+            uninterrupted[tick as usize],
+            "restored, tick {tick}"
+        );
+        assert_eq!(
+            fresh.checksum(),
+            uninterrupted[tick as usize],
+            "decoded, tick {tick}"
+        );
     }
     let particles = reference.particles().expect("particles");
     assert!(particles.alive().iter().filter(|&&a| a).count() > 100);

@@ -325,6 +325,22 @@ fn an_unknown_simd_cap_is_refused() {
 }
 
 #[test]
+fn info_names_the_colliding_particle_groups() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    let run = fixstep(&[
+        "info",
+        root.join("replays/debris.replay").to_str().expect("UTF-8"),
+    ]);
+    assert_eq!(run.code, 0, "{run:?}");
+    let expected = "colliding with rigid bodies: group 0 (e 0.3, μ 0.4, pushing)";
+    assert!(
+        run.stdout.contains(expected),
+        "{expected:?} in {}",
+        run.stdout
+    );
+}
+
+#[test]
 fn info_gives_mesh_statistics() {
     let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
     let run = fixstep(&[

@@ -362,3 +362,25 @@ fn adaptive_fluid_substeps_record_verify_and_report() {
     let most = *counts.iter().max().expect("rows");
     assert!((3..=8).contains(&most), "{counts:?}");
 }
+
+#[test]
+fn particle_collision_errors_name_the_field() {
+    let with = |entries: &str| {
+        format!("(name: \"x\", particles: Some((collisions: [{entries}])))").into_bytes()
+    };
+    assert_scene_rejected(
+        &with("(group: 0, restitution: 1.5)"),
+        &["particles.collisions[0].restitution", "must be 0 to 1"],
+    );
+    assert_scene_rejected(
+        &with("(group: 2, friction: -0.1)"),
+        &["particles.collisions[0].friction", "must be ≥ 0"],
+    );
+    assert_scene_rejected(
+        &with("(group: 1), (group: 1)"),
+        &[
+            "particles.collisions[1].group",
+            "group 1 already has an entry",
+        ],
+    );
+}

@@ -264,13 +264,14 @@ fn fluid_summary(desc: &FluidDesc<Fx>) -> String {
     )
 }
 
-/// Particle count, templates, emitters and forces of the scene's particle section.
+/// Particle count, templates, emitters, forces and colliding groups of the scene's particle
+/// section.
 fn particles_summary(particles: Option<&ParticlesDesc<Fx>>) -> String {
     let Some(desc) = particles else {
         return "none".to_owned();
     };
     let forces: Vec<&str> = desc.forces.iter().map(force_name).collect();
-    format!(
+    let mut summary = format!(
         "{} initial, {} templates, {} emitters, {} forces ({}), {:?} integrator, capacity {}",
         desc.particles.len(),
         desc.templates.len(),
@@ -279,7 +280,25 @@ fn particles_summary(particles: Option<&ParticlesDesc<Fx>>) -> String {
         forces.join(", "),
         desc.integrator,
         desc.capacity
-    )
+    );
+    if !desc.collisions.is_empty() {
+        let groups: Vec<String> = desc
+            .collisions
+            .iter()
+            .map(|c| {
+                let push = if c.push { ", pushing" } else { "" };
+                format!(
+                    "group {} (e {}, μ {}{push})",
+                    c.group, c.restitution, c.friction
+                )
+            })
+            .collect();
+        summary.push_str(&format!(
+            "; colliding with rigid bodies: {}",
+            groups.join(", ")
+        ));
+    }
+    summary
 }
 
 /// A force generator's kind, for the summary.

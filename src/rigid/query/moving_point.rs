@@ -102,8 +102,7 @@ impl<R: Real> RigidSystem<R> {
                 let Some((ray, length)) = ray else {
                     return;
                 };
-                let Some(Crossing::Enters { distance, normal }) =
-                    ray_shape(&b.shape[i], xf, &ray)
+                let Some(Crossing::Enters { distance, normal }) = ray_shape(&b.shape[i], xf, &ray)
                 else {
                     return;
                 };
