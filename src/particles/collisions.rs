@@ -222,13 +222,17 @@ impl<R: Real> ParticleSystem<R> {
                 let u = hit.velocity;
                 let f = hit.fraction;
                 let relative_end = to - u * time;
+                // The hit in the frame that moves with the surface, and in the world (where
+                // the surface has moved on by u f Δt since the path began).
                 let point = from + (relative_end - from) * f;
+                let world_point = point + u * (time * f);
                 let impact = velocity + change * f;
                 let reflection =
                     Bounce::new(impact - u, hit.normal, rule.restitution, rule.friction);
                 let after = u + reflection.reflect(impact - u);
                 if rule.push {
-                    surfaces.push(hit.body, (impact - after) * attributes.masses[i], point);
+                    let impulse = (impact - after) * attributes.masses[i];
+                    surfaces.push(hit.body, impulse, world_point);
                 }
                 let last = bounce + 1 == MAX_BOUNCES;
                 time *= R::ONE - f;
@@ -238,7 +242,7 @@ impl<R: Real> ParticleSystem<R> {
                 } else {
                     ((after - u) + change * R::HALF) * time
                 };
-                from = point.add_scaled(hit.normal, skin());
+                from = world_point.add_scaled(hit.normal, skin());
                 to = from + rest + u * time;
                 velocity = after;
                 if last {

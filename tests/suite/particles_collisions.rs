@@ -273,3 +273,60 @@ fn debris_restored_mid_contact_continues_like_an_uninterrupted_run() {
     let particles = reference.particles().expect("particles");
     assert!(particles.alive().iter().filter(|&&a| a).count() > 100);
 }
+
+/// A kinematic wall moving at u = 2 m/s meets a particle at rest (no gravity): the particle
+/// leaves at u + e u = (1 + e) u, Newton's restitution in the wall's frame, and stays ahead
+/// of the wall.
+#[test]
+fn a_moving_kinematic_wall_bats_a_particle_away_at_one_plus_e_times_its_speed() {
+    let e = 0.5;
+    let mut scene = Scene::empty("bat");
+    scene.gravity = Vec3::ZERO;
+    scene.ticks = 60;
+    let mut collision = CollisionDesc::new(0);
+    collision.restitution = Fx::from_f64(e);
+    scene.particles = Some(ParticlesDesc {
+        particles: vec![ParticleDesc {
+            position: v(1.0, 0.0, 0.0),
+            velocity: Vec3::ZERO,
+            mass: Fx::ONE,
+            group: 0,
+            lifetime: Fx::ZERO,
+        }],
+        collisions: vec![collision],
+        ..ParticlesDesc::default()
+    });
+    let mut wall = BodyDesc::new(
+        Shape::Box {
+            half_extents: v(0.1, 1.0, 1.0),
+        },
+        Vec3::ZERO,
+    );
+    wall.kind = BodyKind::Kinematic;
+    wall.velocity = v(2.0, 0.0, 0.0);
+    scene.rigid = Some(RigidDesc {
+        bodies: vec![wall],
+        ..RigidDesc::default()
+    });
+    let mut world = scene.build().expect("builds");
+    for _ in 0..scene.ticks {
+        world.step(&TickInput::default());
+        let (x, _) = particle(&world);
+        let wall_x = world
+            .rigid()
+            .expect("rigid bodies")
+            .position(Handle::new(0, 0))
+            .expect("alive")
+            .x;
+        assert!(
+            x.x >= wall_x + Fx::from_f64(0.1),
+            "the wall overtook the particle"
+        );
+    }
+    let (_, velocity) = particle(&world);
+    let want = (1.0 + e) * 2.0;
+    assert!(
+        (velocity.x.to_f64() - want).abs() < 1e-3,
+        "leaves at {velocity:?}, (1 + e) u = {want} m/s"
+    );
+}
