@@ -5,16 +5,15 @@
 //! from the scene's start; the figure is the time per step, in I32F32 and, with the same
 //! generic code, in `f64`.
 
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+mod support;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fixstep::math::{Fx, Real};
 use fixstep::scene::Scene;
-use fixstep::world::{TickInput, World};
 use fixstep_scenes::builtin_scene;
+use support::bench_ticks;
 
-const STEPS: u64 = 480;
+const STEPS: u32 = 480;
 
 /// `debris` in format R, with or without its particle collisions.
 fn debris<R: Real>(collisions: bool) -> Scene<R> {
@@ -29,27 +28,13 @@ fn bench_debris<R: Real>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     collisions: bool,
 ) {
-    let scene = debris::<R>(collisions);
-    let empty = TickInput::default();
     let label = if collisions {
         "debris"
     } else {
         "debris_without_collisions"
     };
-    group.bench_function(BenchmarkId::new(label, R::NAME), |b| {
-        b.iter_custom(|iterations| {
-            let mut total = Duration::ZERO;
-            for _ in 0..iterations {
-                let mut world: World<R> = scene.build().expect("the scene builds");
-                let start = Instant::now();
-                for _ in 0..STEPS {
-                    black_box(world.step(&empty));
-                }
-                total += start.elapsed() / STEPS as u32;
-            }
-            total
-        })
-    });
+    let id = BenchmarkId::new(label, R::NAME);
+    bench_ticks(group, id, &debris::<R>(collisions), STEPS);
 }
 
 fn coupling(c: &mut Criterion) {

@@ -7,14 +7,13 @@
 //!
 //! The baseline in the same run is the same generic code instantiated for `f64`.
 
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+mod support;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fixstep::math::{Fx, Real};
 use fixstep::scene::Scene;
-use fixstep::world::{TickInput, World};
 use fixstep_scenes::joints::joint_grid;
+use support::bench_ticks;
 
 fn grid<R: Real>(n: u32) -> Scene<R> {
     let (mut rigid, joints) = joint_grid::<R>(n);
@@ -30,22 +29,8 @@ fn bench_grid<R: Real>(
     n: u32,
     steps: u32,
 ) {
-    let scene = grid::<R>(n);
-    let empty = TickInput::default();
-    group.bench_function(BenchmarkId::new(format!("grid_{n}x{n}"), R::NAME), |b| {
-        b.iter_custom(|iterations| {
-            let mut total = Duration::ZERO;
-            for _ in 0..iterations {
-                let mut world: World<R> = scene.build().expect("the grid builds");
-                let start = Instant::now();
-                for _ in 0..steps {
-                    black_box(world.step(&empty));
-                }
-                total += start.elapsed() / steps;
-            }
-            total
-        })
-    });
+    let id = BenchmarkId::new(format!("grid_{n}x{n}"), R::NAME);
+    bench_ticks(group, id, &grid::<R>(n), steps);
 }
 
 fn joints(c: &mut Criterion) {

@@ -9,14 +9,13 @@
 //! measured in the same run. Sleeping is off (as in the Rapier runs) unless the case is
 //! named `sleeping`.
 
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+mod support;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fixstep::math::{Fx, Real};
 use fixstep::scene::Scene;
-use fixstep::world::{TickInput, World};
 use fixstep_scenes::builtin_scene;
+use support::bench_ticks;
 
 /// The built-in scene `name` in format R, with sleeping on or off.
 fn scene<R: Real>(name: &str, sleeping: bool) -> Scene<R> {
@@ -27,34 +26,20 @@ fn scene<R: Real>(name: &str, sleeping: bool) -> Scene<R> {
     scene
 }
 
-/// Runs `steps` ticks of a fresh world per iteration; reports the time per step.
+/// Times `steps` ticks of `name` from its start in format R, sleeping on or off.
 fn bench_scene<R: Real>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     name: &str,
-    steps: u64,
+    steps: u32,
     sleeping: bool,
 ) {
-    let scene = scene::<R>(name, sleeping);
-    let empty = TickInput::default();
     let label = if sleeping {
         format!("{name}_sleeping")
     } else {
         name.to_owned()
     };
-    group.bench_function(BenchmarkId::new(label, R::NAME), |b| {
-        b.iter_custom(|iterations| {
-            let mut total = Duration::ZERO;
-            for _ in 0..iterations {
-                let mut world: World<R> = scene.build().expect("the scene builds");
-                let start = Instant::now();
-                for _ in 0..steps {
-                    black_box(world.step(&empty));
-                }
-                total += start.elapsed() / steps as u32;
-            }
-            total
-        })
-    });
+    let id = BenchmarkId::new(label, R::NAME);
+    bench_ticks(group, id, &scene::<R>(name, sleeping), steps);
 }
 
 fn rigid(c: &mut Criterion) {

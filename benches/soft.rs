@@ -6,14 +6,13 @@
 //!
 //! The same generic code runs in I32F32 and in `f64`, measured in the same run.
 
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+mod support;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use fixstep::math::{Fx, Real};
 use fixstep::scene::Scene;
 use fixstep::soft::SoftModel;
-use fixstep::world::{TickInput, World};
+use support::bench_ticks;
 
 /// The 64×64 cloth scene in format R, with or without its bending rows.
 fn cloth<R: Real>(bending: bool) -> Scene<R> {
@@ -30,33 +29,19 @@ fn cloth<R: Real>(bending: bool) -> Scene<R> {
     scene
 }
 
-/// Runs `ticks` ticks of a fresh world per iteration; reports the time per tick.
+/// Times `ticks` ticks of the cloth from its start in format R.
 fn bench_cloth<R: Real>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     bending: bool,
-    ticks: u64,
+    ticks: u32,
 ) {
-    let scene = cloth::<R>(bending);
-    let empty = TickInput::default();
     let label = if bending {
         "cloth64_bending"
     } else {
         "cloth64"
     };
-    group.bench_function(BenchmarkId::new(label, R::NAME), |b| {
-        b.iter_custom(|iterations| {
-            let mut total = Duration::ZERO;
-            for _ in 0..iterations {
-                let mut world: World<R> = scene.build().expect("the scene builds");
-                let start = Instant::now();
-                for _ in 0..ticks {
-                    black_box(world.step(&empty));
-                }
-                total += start.elapsed() / ticks as u32;
-            }
-            total
-        })
-    });
+    let id = BenchmarkId::new(label, R::NAME);
+    bench_ticks(group, id, &cloth::<R>(bending), ticks);
 }
 
 fn soft(c: &mut Criterion) {
