@@ -216,12 +216,14 @@ fn corner(word: &str, defined: usize) -> Result<u32, String> {
     Ok(resolved as u32)
 }
 
+/// The vertex positions as tobj reads them, m.
+type Positions = Vec<Option<[f64; 3]>>; // ok-det: reading a file, before any step
+
 /// Parses `text` with `tobj` and returns the position of each `v` record that a face
 /// uses (`None` for the others), matching tobj's triangles to the scan's in file order.
 /// Errors are (line, what is wrong): tobj's errors are placed at the first line at which
 /// the text stops parsing.
-fn parse(text: &str, scan: &Scan) -> Result<Vec<Option<[f64; 3]>>, (usize, String)> {
-    // ok-det: reading a file
+fn parse(text: &str, scan: &Scan) -> Result<Positions, (usize, String)> {
     let models = match load(text) {
         Ok(models) => models,
         Err(e) => {
