@@ -4,7 +4,7 @@
 //! Errors name the field relative to the particle description (`emitters[2].rate`); the
 //! scene prefixes `particles.`.
 
-use super::collisions::GroupCollision;
+use super::collisions::check_collision;
 use super::damping::Damping;
 use super::desc::{
     EmitterDesc, ForceDesc, Interval, MAX_CAPACITY, MAX_EMISSION_RATE, ParticlesDesc, Spread,
@@ -138,19 +138,17 @@ impl<R: Real> ParticleSystem<R> {
                 .map_err(|e| e.within(&format!("forces[{i}]")))?;
         }
 
-        let mut collisions = Vec::with_capacity(desc.collisions.len());
         for (i, collision) in desc.collisions.iter().enumerate() {
-            let compiled = GroupCollision::compile(collision)
-                .map_err(|e| e.within(&format!("collisions[{i}]")))?;
+            check_collision(collision).map_err(|e| e.within(&format!("collisions[{i}]")))?;
             ensure(
-                !collisions
+                !desc.collisions[..i]
                     .iter()
-                    .any(|c: &GroupCollision<R>| c.group == compiled.group),
+                    .any(|c| c.group == collision.group),
                 || format!("collisions[{i}].group"),
-                || format!("group {} already has an entry", compiled.group),
+                || format!("group {} already has an entry", collision.group),
             )?;
-            collisions.push(compiled);
         }
+        let mut collisions = desc.collisions.clone();
         collisions.sort_by_key(|c| c.group);
 
         Ok(Self {

@@ -5,16 +5,15 @@
 //! against the surfaces ([`Surfaces`]), each seen moving with its own velocity u at x₀, so
 //! the cast follows the path relative to the surface, x₀ → x₁ − u Δt. At the first hit
 //! (fraction f of the path, unit normal n̂ out of the surface) the particle bounces: its
-//! relative velocity is reflected by [`Bounce`], and for the rest of the step, τ = (1 − f)
+//! relative velocity is reflected by [`bounce`], and for the rest of the step, τ = (1 − f)
 //! Δt, it moves on from the hit point (2⁻¹⁶ m off the surface) with the reflected relative
-//! velocity and the step's own acceleration, plus the surface's motion u τ. Up to [`MAX_BOUNCES`] hits are followed
-//! per step (a corner); a particle still hitting after them stops at its last hit.
+//! velocity and the step's own acceleration, plus the surface's motion u τ. Up to
+//! [`MAX_BOUNCES`] hits are followed per step (a corner); a particle still hitting after them
+//! stops at its last hit.
 //!
 //! With `push`, the surface's body receives the opposite of the particle's momentum
 //! change, J = −m (v′ − v) (N·s), at the hit point, so momentum is conserved. Particles are
 //! visited in ascending slot order, so the pushes add up in one order on every peer.
-
-use serde::{Deserialize, Serialize};
 
 use super::ParticleSystem;
 use super::desc::CollisionDesc;
@@ -31,42 +30,21 @@ fn skin<R: Real>() -> R {
     R::from_ratio(1, 1 << 16)
 }
 
-/// The compiled [`CollisionDesc`] of one group.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(bound = "")]
-pub(crate) struct GroupCollision<R: Real> {
-    pub group: u16,
-    /// e.
-    pub restitution: R,
-    /// μ.
-    pub friction: R,
-    pub push: bool,
-    pub filter: CollisionFilter,
-}
-
-impl<R: Real> GroupCollision<R> {
-    /// Checks `desc` (field paths relative to it): 0 ≤ e ≤ 1, μ ≥ 0.
-    pub fn compile(desc: &CollisionDesc<R>) -> Result<Self, SceneError> {
-        if !(R::ZERO..=R::ONE).contains(&desc.restitution) {
-            return Err(SceneError::new(
-                "restitution",
-                format!("must be 0 to 1 (got {})", desc.restitution),
-            ));
-        }
-        if desc.friction < R::ZERO {
-            return Err(SceneError::new(
-                "friction",
-                format!("must be ≥ 0 (got {})", desc.friction),
-            ));
-        }
-        Ok(Self {
-            group: desc.group,
-            restitution: desc.restitution,
-            friction: desc.friction,
-            push: desc.push,
-            filter: desc.filter,
-        })
+/// Checks one group's [`CollisionDesc`] (field paths relative to it): 0 ≤ e ≤ 1, μ ≥ 0.
+pub(crate) fn check_collision<R: Real>(desc: &CollisionDesc<R>) -> Result<(), SceneError> {
+    if !(R::ZERO..=R::ONE).contains(&desc.restitution) {
+        return Err(SceneError::new(
+            "restitution",
+            format!("must be 0 to 1 (got {})", desc.restitution),
+        ));
     }
+    if desc.friction < R::ZERO {
+        return Err(SceneError::new(
+            "friction",
+            format!("must be ≥ 0 (got {})", desc.friction),
+        ));
+    }
+    Ok(())
 }
 
 /// A particle's state before a step ([`ParticleSystem::path_starts`]).
@@ -99,7 +77,7 @@ pub(crate) trait Surfaces<R: Real> {
     /// enters, among those `filter` interacts with; each surface seen moving with its
     /// velocity at `from`. A path that starts inside a surface passes out of it freely.
     fn cast(
-        &self,
+        &mut self,
         from: Vec3<R>,
         to: Vec3<R>,
         dt: R,
@@ -110,50 +88,29 @@ pub(crate) trait Surfaces<R: Real> {
     fn push(&mut self, body: u32, impulse: Vec3<R>, point: Vec3<R>);
 }
 
-/// A bounce off a surface of unit normal n̂: a relative velocity w is split into its normal part wₙ = (w·n̂) n̂ and tangential part wₜ = w − wₙ, and
-/// becomes w′ = −e wₙ + k wₜ. Newton's restitution gives the normal part; Coulomb friction
-/// caps the tangential impulse at μ times the normal one, μ(1 + e)|u·n̂| against the
-/// tangential speed |uₜ| of the relative velocity u, so k = max(0, 1 − μ(1 + e)|u·n̂| / |uₜ|):
-/// a particle whose friction can stop it sticks at once.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Bounce<R: Real> {
-    normal: Vec3<R>,
-    restitution: R,
-    tangential_kept: R,
-}
-
-impl<R: Real> Bounce<R> {
-    /// The bounce of relative velocity `u` (m/s) off the surface of unit normal `normal`
-    /// with restitution `e` and friction `μ`.
-    pub fn new(u: Vec3<R>, normal: Vec3<R>, restitution: R, friction: R) -> Self {
-        let approach = (-u.dot(normal)).max(R::ZERO);
-        let tangential = u - normal * u.dot(normal);
-        let speed = tangential.length();
-        let removed = friction * (R::ONE + restitution) * approach;
-        let tangential_kept = if removed >= speed {
-            R::ZERO
-        } else {
-            R::ONE - removed / speed
-        };
-        Self {
-            normal,
-            restitution,
-            tangential_kept,
-        }
-    }
-
-    /// w′ = −e wₙ + k wₜ for a normal part that approaches the surface (w·n̂ < 0); a normal
-    /// part that leaves it is kept.
-    pub fn reflect(&self, w: Vec3<R>) -> Vec3<R> {
-        let along = w.dot(self.normal);
-        let tangential = w - self.normal * along;
-        let normal_after = if along < R::ZERO {
-            -self.restitution * along
-        } else {
-            along
-        };
-        tangential * self.tangential_kept + self.normal * normal_after
-    }
+/// A bounce off a surface of unit normal n̂, with restitution e and friction μ: the relative
+/// velocity w (m/s) is split into its normal part wₙ = (w·n̂) n̂ and tangential part
+/// wₜ = w − wₙ, and becomes w′ = −e wₙ + k wₜ when it approaches (w·n̂ < 0; a leaving normal
+/// part is kept). Newton's restitution gives the normal part; Coulomb friction caps the
+/// tangential impulse at μ times the normal one, μ(1 + e)|w·n̂| against the tangential speed
+/// |wₜ|, so k = max(0, 1 − μ(1 + e)|w·n̂| / |wₜ|): a particle whose friction can stop it
+/// sticks at once.
+fn bounce<R: Real>(w: Vec3<R>, normal: Vec3<R>, restitution: R, friction: R) -> Vec3<R> {
+    let along = w.dot(normal);
+    let tangential = w - normal * along;
+    let speed = tangential.length();
+    let removed = friction * (R::ONE + restitution) * (-along).max(R::ZERO);
+    let tangential_kept = if removed >= speed {
+        R::ZERO
+    } else {
+        R::ONE - removed / speed
+    };
+    let normal_after = if along < R::ZERO {
+        -restitution * along
+    } else {
+        along
+    };
+    tangential * tangential_kept + normal * normal_after
 }
 
 impl<R: Real> ParticleSystem<R> {
@@ -214,7 +171,7 @@ impl<R: Real> ParticleSystem<R> {
             let mut change = kinematics.velocities[i] - start.velocity;
             let mut time = dt;
             let mut hit_any = false;
-            for bounce in 0..MAX_BOUNCES {
+            for hits in 1..=MAX_BOUNCES {
                 let Some(hit) = surfaces.cast(from, to, time, rule.filter) else {
                     break;
                 };
@@ -227,14 +184,12 @@ impl<R: Real> ParticleSystem<R> {
                 let point = from + (relative_end - from) * f;
                 let world_point = point + u * (time * f);
                 let impact = velocity + change * f;
-                let reflection =
-                    Bounce::new(impact - u, hit.normal, rule.restitution, rule.friction);
-                let after = u + reflection.reflect(impact - u);
+                let after = u + bounce(impact - u, hit.normal, rule.restitution, rule.friction);
                 if rule.push {
                     let impulse = (impact - after) * attributes.masses[i];
                     surfaces.push(hit.body, impulse, world_point);
                 }
-                let last = bounce + 1 == MAX_BOUNCES;
+                let last = hits == MAX_BOUNCES;
                 time *= R::ONE - f;
                 change *= R::ONE - f;
                 let rest = if last {

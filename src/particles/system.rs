@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::collisions::GroupCollision;
+use super::desc::CollisionDesc;
 use super::emitter::Emitter;
 use super::forces::{ForceField, ForceGenerator, ForceSet};
 use super::integrators::{self, Integrator, Scratch, StepContext};
@@ -34,7 +34,7 @@ pub struct ParticleSystem<R: Real = Fx> {
     pub(super) emitters: Vec<Emitter<R>>,
     pub(super) forces: ForceSet<R>,
     /// The groups that collide with the rigid bodies, ascending by group.
-    pub(super) collisions: Vec<GroupCollision<R>>,
+    pub(super) collisions: Vec<CollisionDesc<R>>,
     /// Whether `storage.kinematics.accelerations` holds a(x, v) of the current state, so
     /// that velocity Verlet can reuse it.
     pub(super) accelerations_current: bool,

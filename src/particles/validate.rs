@@ -8,8 +8,8 @@
 //! (recycling order), and emitters stay within the rates a scene may ask for (the emission
 //! loop runs once per owed particle).
 
-use super::collisions::GroupCollision;
-use super::desc::{CollisionDesc, MAX_CAPACITY, MAX_EMISSION_RATE};
+use super::collisions::check_collision;
+use super::desc::{MAX_CAPACITY, MAX_EMISSION_RATE};
 use super::storage::ParticleStorage;
 use super::system::ParticleSystem;
 use crate::math::{Real, Vec3};
@@ -29,14 +29,7 @@ impl<R: Real> ParticleSystem<R> {
             if i > 0 && self.collisions[i - 1].group >= collision.group {
                 return Err(SceneError::new("group", "groups must ascend, each once").within(&at));
             }
-            let desc = CollisionDesc {
-                group: collision.group,
-                restitution: collision.restitution,
-                friction: collision.friction,
-                push: collision.push,
-                filter: collision.filter,
-            };
-            GroupCollision::compile(&desc).map_err(|e| e.within(&at))?;
+            check_collision(collision).map_err(|e| e.within(&at))?;
         }
         let max_rate = R::from_int(MAX_EMISSION_RATE);
         for (i, emitter) in self.emitters.iter().enumerate() {

@@ -132,19 +132,25 @@ impl<R: Real> RigidSystem<R> {
 
     /// A push from outside the rigid stage (a particle's bounce) on the awake dynamic body
     /// in slot `i`: impulse J (N·s) at world point p, applied at once as
-    /// [`apply_impulse`](Self::apply_impulse) applies it. Returns false, applying nothing,
-    /// when the body sleeps: its pushes are gathered and given to
-    /// [`push_sleeping_body`](Self::push_sleeping_body) once the stage ends.
-    pub(crate) fn push_body(&mut self, i: usize, impulse: Vec3<R>, point: Vec3<R>) -> bool {
+    /// [`apply_impulse`](Self::apply_impulse) applies it. When the body sleeps nothing is
+    /// applied and its centre of mass (m) is returned: the caller gathers the pushes about
+    /// it and gives them to [`push_sleeping_body`](Self::push_sleeping_body) once the stage
+    /// ends.
+    pub(crate) fn push_body(
+        &mut self,
+        i: usize,
+        impulse: Vec3<R>,
+        point: Vec3<R>,
+    ) -> Option<Vec3<R>> {
         let b = &self.bodies;
         if b.kind[i] != BodyKind::Dynamic {
-            return true;
+            return None;
         }
         if b.asleep[i] {
-            return false;
+            return Some(b.position[i]);
         }
         self.apply_impulse(i, impulse, Some(point));
-        true
+        None
     }
 
     /// The pushes a sleeping dynamic body gathered during a stage: total impulse J (N·s) and
@@ -164,11 +170,6 @@ impl<R: Real> RigidSystem<R> {
         b.linear_velocity[i] += impulse * b.inv_mass[i];
         let inv_inertia = b.orientation[i].to_mat3().rotate_inertia(b.inv_inertia[i]);
         b.angular_velocity[i] += inv_inertia * moment;
-    }
-
-    /// The centre of mass of the body in slot `i`, m.
-    pub(crate) fn centre_of_slot(&self, i: usize) -> Vec3<R> {
-        self.bodies.position[i]
     }
 
     /// Sets the linear velocity (m/s) of a dynamic or kinematic body.

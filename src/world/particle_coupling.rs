@@ -19,19 +19,19 @@ use crate::rigid::query::BodiesInMotion;
 use crate::rigid::{CollisionFilter, RigidSystem};
 use crate::types::Subsystem;
 
-/// The rigid bodies as the particles' surfaces during one substep.
+/// The rigid bodies as the particles' surfaces, for one tick.
 struct Bodies<'a, R: Real> {
     rigid: &'a mut RigidSystem<R>,
-    /// Where the bodies are during the substep.
+    /// Where the bodies are during the current substep.
     motion: BodiesInMotion<R>,
     /// The pushes on sleeping bodies so far this tick, by slot: total impulse (N·s) and
     /// total moment about the centre (N·m·s).
-    sleeping: &'a mut BTreeMap<usize, (Vec3<R>, Vec3<R>)>,
+    sleeping: BTreeMap<usize, (Vec3<R>, Vec3<R>)>,
 }
 
 impl<R: Real> Surfaces<R> for Bodies<'_, R> {
     fn cast(
-        &self,
+        &mut self,
         from: Vec3<R>,
         to: Vec3<R>,
         dt: R,
@@ -39,7 +39,7 @@ impl<R: Real> Surfaces<R> for Bodies<'_, R> {
     ) -> Option<SurfaceHit<R>> {
         let hit = self
             .rigid
-            .cast_moving_point(&self.motion, from, to, dt, filter)?;
+            .cast_moving_point(&mut self.motion, from, to, dt, filter)?;
         Some(SurfaceHit {
             body: hit.slot as u32,
             fraction: hit.fraction,
@@ -50,14 +50,13 @@ impl<R: Real> Surfaces<R> for Bodies<'_, R> {
 
     fn push(&mut self, body: u32, impulse: Vec3<R>, point: Vec3<R>) {
         let slot = body as usize;
-        if !self.rigid.push_body(slot, impulse, point) {
-            let arm = point - self.rigid.centre_of_slot(slot);
+        if let Some(centre) = self.rigid.push_body(slot, impulse, point) {
             let total = self
                 .sleeping
                 .entry(slot)
                 .or_insert((Vec3::ZERO, Vec3::ZERO));
             total.0 += impulse;
-            total.1 += arm.cross(impulse);
+            total.1 += (point - centre).cross(impulse);
         }
     }
 }
@@ -75,20 +74,22 @@ pub(super) fn step_colliding_particles<R: Real>(
 ) {
     Subsystem::begin_tick(particles);
     let mut starts = Vec::new();
-    let mut sleeping = BTreeMap::new();
+    let mut bodies = Bodies {
+        rigid,
+        motion: BodiesInMotion::default(),
+        sleeping: BTreeMap::new(),
+    };
     let mut elapsed = R::ZERO;
     for _ in 0..settings.substeps {
         particles.path_starts(&mut starts);
         particles.step(dt, settings.gravity, rng);
-        let mut bodies = Bodies {
-            motion: rigid.in_motion(elapsed, dt),
-            rigid: &mut *rigid,
-            sleeping: &mut sleeping,
-        };
+        bodies
+            .rigid
+            .place_in_motion(elapsed, dt, &mut bodies.motion);
         particles.collide(dt, &starts, &mut bodies);
         elapsed += dt;
     }
-    for (slot, (impulse, moment)) in sleeping {
-        rigid.push_sleeping_body(slot, impulse, moment);
+    for (slot, (impulse, moment)) in bodies.sleeping {
+        bodies.rigid.push_sleeping_body(slot, impulse, moment);
     }
 }

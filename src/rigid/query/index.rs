@@ -136,9 +136,19 @@ impl<R: Real> QueryIndex<R> {
     /// Calls `visit(slot)` for every body whose fat box passes `keep` (called on the boxes
     /// of the tree's nodes, top down: a node that fails prunes its subtree) and for every
     /// body without a box. A slot may name a body removed since the last sync.
-    pub fn candidates(&self, mut keep: impl FnMut(&Aabb<R>) -> bool, mut visit: impl FnMut(usize)) {
-        let mut stack = Vec::new();
-        self.tree.traverse(&mut stack, |aabb, leaf| {
+    pub fn candidates(&self, keep: impl FnMut(&Aabb<R>) -> bool, visit: impl FnMut(usize)) {
+        self.candidates_with(&mut Vec::new(), keep, visit);
+    }
+
+    /// [`candidates`](Self::candidates) with `stack` as the traversal's memory, for callers
+    /// that query many times in a row.
+    pub fn candidates_with(
+        &self,
+        stack: &mut Vec<u32>,
+        mut keep: impl FnMut(&Aabb<R>) -> bool,
+        mut visit: impl FnMut(usize),
+    ) {
+        self.tree.traverse(stack, |aabb, leaf| {
             let pass = keep(aabb);
             if let Some(slot) = leaf
                 && pass

@@ -408,10 +408,21 @@ impl<R: Real> RigidSystem<R> {
 
     /// Calls `visit(slot)` for every candidate slot: from the tree when the index is
     /// current (`keep` prunes by box), otherwise every slot.
-    fn for_each_candidate(&self, keep: impl FnMut(&Aabb<R>) -> bool, mut visit: impl FnMut(usize)) {
+    fn for_each_candidate(&self, keep: impl FnMut(&Aabb<R>) -> bool, visit: impl FnMut(usize)) {
+        self.for_each_candidate_with(&mut Vec::new(), keep, visit);
+    }
+
+    /// [`for_each_candidate`](Self::for_each_candidate) with `stack` as the tree traversal's
+    /// memory.
+    fn for_each_candidate_with(
+        &self,
+        stack: &mut Vec<u32>,
+        keep: impl FnMut(&Aabb<R>) -> bool,
+        mut visit: impl FnMut(usize),
+    ) {
         let index = &self.scratch.query;
         if index.is_current(self.bodies.len()) {
-            index.candidates(keep, visit);
+            index.candidates_with(stack, keep, visit);
         } else {
             for i in 0..self.bodies.len() {
                 visit(i);

@@ -10,6 +10,8 @@
 //! this tick). A path that starts inside a body ([`Crossing::Inside`]) does not hit it, so
 //! a particle that a body has overtaken leaves it freely.
 
+use core::cell::OnceCell;
+
 use super::ray::{Crossing, Ray, ray_shape};
 use super::{prune_pad, unit_direction};
 use crate::math::{Real, Vec3};
@@ -21,10 +23,23 @@ use crate::rigid::transform::Transform;
 /// Every body's placement `elapsed` seconds into the tick (its centre carried by its
 /// velocity, its orientation at the tick's start), by slot, and how far any point of a
 /// moving body travels by the end of the path's step: the largest (|vᵢ| + |ωᵢ| rᵢ)·(elapsed +
-/// Δt), with rᵢ the half diagonal of the body's bounding box (0 for planes), m.
+/// Δt), with rᵢ the half diagonal of the body's bounding box (0 for planes), m. It keeps
+/// its memory, and the tree traversal's, from one substep and one cast to the next.
 pub(crate) struct BodiesInMotion<R: Real> {
     placements: Vec<Transform<R>>,
     reach: R,
+    stack: Vec<u32>,
+}
+
+impl<R: Real> Default for BodiesInMotion<R> {
+    /// No bodies placed yet.
+    fn default() -> Self {
+        Self {
+            placements: Vec::new(),
+            reach: R::ZERO,
+            stack: Vec::new(),
+        }
+    }
 }
 
 /// Where a point's path first enters a body.
@@ -41,11 +56,12 @@ pub(crate) struct PathHit<R: Real> {
 }
 
 impl<R: Real> RigidSystem<R> {
-    /// The bodies as a particle stage sees them `elapsed` seconds into the tick, for
-    /// paths of up to `dt` seconds ([`cast_moving_point`](Self::cast_moving_point)).
-    pub(crate) fn in_motion(&self, elapsed: R, dt: R) -> BodiesInMotion<R> {
+    /// Places the bodies in `motion` as a particle stage sees them `elapsed` seconds into
+    /// the tick, for paths of up to `dt` seconds ([`cast_moving_point`](Self::cast_moving_point)).
+    pub(crate) fn place_in_motion(&self, elapsed: R, dt: R, motion: &mut BodiesInMotion<R>) {
         let b = &self.bodies;
-        let mut placements = Vec::with_capacity(b.len());
+        let placements = &mut motion.placements;
+        placements.clear();
         let mut reach = R::ZERO;
         for i in 0..b.len() {
             if !b.is_moving(i) {
@@ -59,7 +75,7 @@ impl<R: Real> RigidSystem<R> {
             reach = reach.max((v.length() + w.length() * radius) * (elapsed + dt));
             placements.push(xf);
         }
-        BodiesInMotion { placements, reach }
+        motion.reach = reach;
     }
 
     /// The first non-sensor body `filter` interacts with that the point moving from `from`
@@ -68,28 +84,35 @@ impl<R: Real> RigidSystem<R> {
     /// handle.
     pub(crate) fn cast_moving_point(
         &self,
-        motion: &BodiesInMotion<R>,
+        motion: &mut BodiesInMotion<R>,
         from: Vec3<R>,
         to: Vec3<R>,
         dt: R,
         filter: CollisionFilter,
     ) -> Option<PathHit<R>> {
         let b = &self.bodies;
+        let BodiesInMotion {
+            placements,
+            reach,
+            stack,
+        } = motion;
         let path = Aabb {
             min: from.min_elem(to),
             max: from.max_elem(to),
         }
-        .expanded(motion.reach + prune_pad::<R>());
-        // The path itself, for the bodies that do not move (most of a level): formed once.
-        let still = ray_along(from, to - from);
+        .expanded(*reach + prune_pad::<R>());
+        // The path itself, for the bodies that do not move (most of a level): formed once,
+        // when the first of them is met.
+        let still = OnceCell::new();
         let mut best: Option<(PathHit<R>, crate::types::Handle)> = None;
-        self.for_each_candidate(
+        self.for_each_candidate_with(
+            stack,
             |aabb| aabb.overlaps(&path),
             |i| {
                 if !b.alive[i] || b.sensor[i] || !filter.interacts(b.filter[i]) {
                     return;
                 }
-                let Some(xf) = motion.placements.get(i) else {
+                let Some(xf) = placements.get(i) else {
                     return;
                 };
                 let (velocity, ray) = if b.is_moving(i) {
@@ -97,7 +120,10 @@ impl<R: Real> RigidSystem<R> {
                     let velocity = v + w.cross(from - xf.translation);
                     (velocity, ray_along(from, to - velocity * dt - from))
                 } else {
-                    (Vec3::ZERO, still)
+                    (
+                        Vec3::ZERO,
+                        *still.get_or_init(|| ray_along(from, to - from)),
+                    )
                 };
                 let Some((ray, length)) = ray else {
                     return;
