@@ -31,6 +31,12 @@
 //! Particles are written as format 1 wrote them ([`ParticlesFields`]: all but the
 //! collisions), and a scene whose particle groups collide adds
 //! [`Addition::ParticleCollisions`], never empty and never without particles.
+//!
+//! Soft bodies are written as snapshot format 9 wrote them ([`SoftFields`],
+//! [`SoftBodyFields`]: all but the ties to and contacts with rigid bodies), and a scene
+//! whose soft bodies have either adds [`Addition::SoftCoupling`]: per such body, by index
+//! in ascending order, its ties and contacts, never both absent, never naming a body that
+//! does not exist.
 
 use serde::{Deserialize, Serialize};
 
@@ -46,7 +52,10 @@ use crate::rigid::{
     RigidDesc, Shape, SolverSettings,
 };
 use crate::scene::Scene;
-use crate::soft::SoftDesc;
+use crate::soft::{
+    AttachmentDesc, BodyAttachmentDesc, BodyContactsDesc, ColliderDesc, SoftBodyDesc, SoftDesc,
+    SoftModel, SoftShape, XpbdSettings,
+};
 use crate::world::TickInput;
 
 /// The scene fields format 1 wrote, borrowed for writing.
@@ -126,7 +135,7 @@ impl<R: Real> ParticlesFields<R> {
 enum Addition<R: Real> {
     Rigid(RigidFields<R>),
     Fluid(FluidFields<R>),
-    Soft(SoftDesc<R>),
+    Soft(SoftFields<R>),
     Joints(JointsDesc<R>),
     /// The fluid's CFL number ([`FluidDesc::cfl`]), when not 0.
     FluidCfl(R),
@@ -141,6 +150,111 @@ enum Addition<R: Real> {
     RigidBullets(Vec<u32>, Vec<u32>),
     /// The particle groups that collide with the rigid bodies, when there are any.
     ParticleCollisions(Vec<CollisionDesc<R>>),
+    /// The soft bodies tied to or touching rigid bodies, when there are any.
+    SoftCoupling(Vec<SoftCoupling<R>>),
+}
+
+/// [`SoftDesc`]'s fields as snapshot format 9 wrote them, with its bodies as
+/// [`SoftBodyFields`].
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct SoftFields<R: Real> {
+    bodies: Vec<SoftBodyFields<R>>,
+    colliders: Vec<ColliderDesc<R>>,
+    solver: XpbdSettings,
+}
+
+/// [`SoftBodyDesc`]'s fields as snapshot format 9 wrote them, in that order: all but the
+/// ties to and contacts with rigid bodies.
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct SoftBodyFields<R: Real> {
+    shape: SoftShape<R>,
+    model: SoftModel<R>,
+    mass: R,
+    pins: Vec<u32>,
+    attachments: Vec<AttachmentDesc<R>>,
+    velocity: Vec3<R>,
+    damping: R,
+    radius: R,
+    wind: Vec3<R>,
+    drag: R,
+}
+
+/// One soft body's ties to and contacts with rigid bodies.
+#[derive(Serialize, Deserialize)]
+#[serde(bound = "")]
+struct SoftCoupling<R: Real> {
+    /// The soft body, by index.
+    body: u32,
+    attachments: Vec<BodyAttachmentDesc<R>>,
+    contacts: Option<BodyContactsDesc<R>>,
+}
+
+impl<R: Real> SoftFields<R> {
+    /// The fields of `desc` but its bodies' coupling.
+    fn of(desc: &SoftDesc<R>) -> Self {
+        Self {
+            bodies: desc
+                .bodies
+                .iter()
+                .map(|b| SoftBodyFields {
+                    shape: b.shape.clone(),
+                    model: b.model.clone(),
+                    mass: b.mass,
+                    pins: b.pins.clone(),
+                    attachments: b.attachments.clone(),
+                    velocity: b.velocity,
+                    damping: b.damping,
+                    radius: b.radius,
+                    wind: b.wind,
+                    drag: b.drag,
+                })
+                .collect(),
+            colliders: desc.colliders.clone(),
+            solver: desc.solver,
+        }
+    }
+
+    /// The description without coupling.
+    fn into_desc(self) -> SoftDesc<R> {
+        SoftDesc {
+            bodies: self
+                .bodies
+                .into_iter()
+                .map(|b| SoftBodyDesc {
+                    shape: b.shape,
+                    model: b.model,
+                    mass: b.mass,
+                    pins: b.pins,
+                    attachments: b.attachments,
+                    body_attachments: Vec::new(),
+                    body_contacts: None,
+                    velocity: b.velocity,
+                    damping: b.damping,
+                    radius: b.radius,
+                    wind: b.wind,
+                    drag: b.drag,
+                })
+                .collect(),
+            colliders: self.colliders,
+            solver: self.solver,
+        }
+    }
+}
+
+/// The coupling of each soft body of `desc` that has some, by index.
+fn soft_coupling<R: Real>(desc: &SoftDesc<R>) -> Vec<SoftCoupling<R>> {
+    desc.bodies
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| !b.body_attachments.is_empty() || b.body_contacts.is_some())
+        .map(|(k, b)| SoftCoupling {
+            body: k as u32,
+            attachments: b.body_attachments.clone(),
+            contacts: b.body_contacts.clone(),
+        })
+        .collect()
 }
 
 /// [`BodyTemplate`]'s fields as state version 5 wrote them, in that order: all but the
@@ -284,6 +398,7 @@ impl<R: Real> Addition<R> {
             Self::RigidTemplates(..) => 7,
             Self::RigidBullets(..) => 8,
             Self::ParticleCollisions(_) => 9,
+            Self::SoftCoupling(_) => 10,
         }
     }
 }
@@ -424,7 +539,7 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
         additions.push(Addition::Fluid(FluidFields::of(fluid)));
     }
     if let Some(soft) = &scene.soft {
-        additions.push(Addition::Soft(soft.clone()));
+        additions.push(Addition::Soft(SoftFields::of(soft)));
     }
     if let Some(joints) = &scene.joints {
         additions.push(Addition::Joints(joints.clone()));
@@ -464,6 +579,11 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
         .filter(|p| !p.collisions.is_empty())
     {
         additions.push(Addition::ParticleCollisions(particles.collisions.clone()));
+    }
+    if let Some(coupling) = scene.soft.as_ref().map(soft_coupling)
+        && !coupling.is_empty()
+    {
+        additions.push(Addition::SoftCoupling(coupling));
     }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
@@ -519,7 +639,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         match addition {
             Addition::Rigid(rigid) => scene.rigid = Some(rigid.into_desc()),
             Addition::Fluid(fluid) => scene.fluid = Some(fluid.into_desc()),
-            Addition::Soft(soft) => scene.soft = Some(soft),
+            Addition::Soft(soft) => scene.soft = Some(soft.into_desc()),
             Addition::Joints(joints) => scene.joints = Some(joints),
             Addition::FluidCfl(cfl) => {
                 let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
@@ -613,6 +733,30 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                     return not_canonical("an empty list of particle collisions");
                 }
                 particles.collisions = collisions;
+            }
+            Addition::SoftCoupling(coupling) => {
+                let not_canonical = |what| Err((used, SceneSectionError::NotCanonical(what)));
+                let Some(soft) = &mut scene.soft else {
+                    return not_canonical("soft-body coupling without soft bodies");
+                };
+                if coupling.is_empty() {
+                    return not_canonical("an empty list of soft-body coupling");
+                }
+                if !coupling.windows(2).all(|w| w[0].body < w[1].body) {
+                    return not_canonical("soft-body coupling out of order or repeated");
+                }
+                for c in coupling {
+                    let Some(body) = soft.bodies.get_mut(c.body as usize) else {
+                        return not_canonical("soft-body coupling for a body that does not exist");
+                    };
+                    if c.attachments.is_empty() && c.contacts.is_none() {
+                        return not_canonical(
+                            "empty soft-body coupling (written by leaving it out)",
+                        );
+                    }
+                    body.body_attachments = c.attachments;
+                    body.body_contacts = c.contacts;
+                }
             }
         }
     }

@@ -51,6 +51,7 @@ pub mod material;
 pub mod mesh;
 mod metrics;
 pub mod narrowphase;
+pub(crate) mod proxies;
 pub mod query;
 mod recycle;
 mod sensors;

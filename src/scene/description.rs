@@ -9,6 +9,7 @@ use crate::particles::{ParticleSystem, ParticlesDesc};
 use crate::rigid::{JointsDesc, RigidDesc, RigidSystem};
 use crate::soft::{SoftDesc, SoftSystem};
 use crate::types::{SceneError, check_rates};
+use crate::world::soft_coupling::SceneBodies;
 use crate::world::{Settings, TickInput, World};
 
 /// A scene: world settings, subsystem descriptions and an optional input script.
@@ -140,7 +141,10 @@ impl<R: Real> Scene<R> {
         }
         if let Some(desc) = &self.soft {
             let dt = R::from_ratio(1, i64::from(self.tick_rate) * i64::from(self.substeps));
-            world.set_soft(SoftSystem::from_desc(desc, dt).map_err(|e| e.within("soft"))?);
+            let bodies = SceneBodies(world.rigid());
+            let soft = SoftSystem::from_desc_with_bodies(desc, dt, &bodies)
+                .map_err(|e| e.within("soft"))?;
+            world.set_soft(soft);
         }
         Ok(world)
     }

@@ -1,10 +1,12 @@
 //! Checking a scene's soft-body description and compiling it into a [`SoftSystem`].
 
+use super::body_coupling::BodyContacts;
 use super::collide::{Collider, Geometry};
 use super::desc::{
-    ColliderDesc, MAX_SOLVER_STEPS, MAX_VERTICES, SoftBodyDesc, SoftDesc, SoftModel, SoftShape,
-    XpbdSettings,
+    BodyAttachmentDesc, ColliderDesc, MAX_SOLVER_STEPS, MAX_VERTICES, SoftBodyDesc, SoftDesc,
+    SoftModel, SoftShape, XpbdSettings,
 };
+use super::rigid_bodies::{BodyFrames, NoBodies};
 use super::spring_mass::{stability_measure, supports};
 use super::system::{Body, Model, Scratch, SoftSystem, Vertices};
 use super::topology::{self, Topology};
@@ -27,6 +29,16 @@ impl<R: Real> SoftSystem<R> {
     /// only to warn about spring-mass networks past their stability bound); the error names
     /// the offending field (relative to the `soft` section).
     pub fn from_desc(desc: &SoftDesc<R>, dt: R) -> Result<Self, SceneError> {
+        Self::from_desc_with_bodies(desc, dt, &NoBodies)
+    }
+
+    /// [`from_desc`](Self::from_desc) in a world whose rigid bodies are `frames`, which
+    /// `body_attachments` name.
+    pub(crate) fn from_desc_with_bodies(
+        desc: &SoftDesc<R>,
+        dt: R,
+        frames: &dyn BodyFrames<R>,
+    ) -> Result<Self, SceneError> {
         check_settings(&desc.solver).map_err(|e| e.within("solver"))?;
         let mut system = Self {
             settings: desc.solver,
@@ -36,6 +48,7 @@ impl<R: Real> SoftSystem<R> {
             hinges: Default::default(),
             tetrahedra: Default::default(),
             attachments: Default::default(),
+            ties: Default::default(),
             tethers: Default::default(),
             springs: Default::default(),
             colliders: Vec::new(),
@@ -50,7 +63,9 @@ impl<R: Real> SoftSystem<R> {
         }
         for (k, body) in desc.bodies.iter().enumerate() {
             let field = format!("bodies[{k}]");
-            system.add_body(body).map_err(|e| e.within(&field))?;
+            system
+                .add_body(body, frames)
+                .map_err(|e| e.within(&field))?;
             if let Some(warning) = system.stability_warning(system.bodies.len() - 1, dt) {
                 system.warnings.push(format!("soft.{field}: {warning}"));
             }
@@ -95,7 +110,11 @@ impl<R: Real> SoftSystem<R> {
     }
 
     /// Checks and adds one body.
-    fn add_body(&mut self, desc: &SoftBodyDesc<R>) -> Result<(), SceneError> {
+    fn add_body(
+        &mut self,
+        desc: &SoftBodyDesc<R>,
+        frames: &dyn BodyFrames<R>,
+    ) -> Result<(), SceneError> {
         let count = check_shape(&desc.shape).map_err(|e| e.within("shape"))?;
         let first = self.vertices.len() as u64;
         if first + count > u64::from(MAX_VERTICES) {
@@ -215,6 +234,10 @@ impl<R: Real> SoftSystem<R> {
                         at.lambda.push(Vec3::ZERO);
                     }
                 }
+                for (g, tie) in desc.body_attachments.iter().enumerate() {
+                    self.add_ties(tie, &topology.positions, frames, &index)
+                        .map_err(|e| e.within(&format!("body_attachments[{g}]")))?;
+                }
                 if *tethers {
                     self.add_tethers(first, &pinned);
                 }
@@ -246,11 +269,17 @@ impl<R: Real> SoftSystem<R> {
                         format!("must be 0 to {MAX_MAGNITUDE} N·s/m (got {damping})"),
                     ));
                 }
-                if !desc.attachments.is_empty() {
-                    return Err(SceneError::new(
-                        "attachments",
-                        "only XPBD bodies have attachments; pin the vertices instead",
-                    ));
+                for (field, present) in [
+                    ("attachments", !desc.attachments.is_empty()),
+                    ("body_attachments", !desc.body_attachments.is_empty()),
+                    ("body_contacts", desc.body_contacts.is_some()),
+                ] {
+                    if present {
+                        return Err(SceneError::new(
+                            field,
+                            "only XPBD bodies have attachments and touch rigid bodies; pin the vertices instead",
+                        ));
+                    }
                 }
                 let start = self.springs.a.len() as u32;
                 for &[a, b] in &topology.edges {
@@ -276,7 +305,56 @@ impl<R: Real> SoftSystem<R> {
             radius: desc.radius,
             wind: desc.wind,
             drag: desc.drag,
+            contacts: desc
+                .body_contacts
+                .as_ref()
+                .map(|c| -> Result<_, SceneError> {
+                    SceneError::check_range("friction", c.friction, R::ZERO, limit, "")
+                        .map_err(|e| e.within("body_contacts"))?;
+                    Ok(BodyContacts {
+                        friction: c.friction,
+                        filter: c.filter,
+                    })
+                })
+                .transpose()?,
         });
+        Ok(())
+    }
+
+    /// The ties of one [`BodyAttachmentDesc`]; `positions` are the body's vertices at rest
+    /// and `index` turns a vertex index within the body into a global one (or names it as
+    /// missing).
+    fn add_ties(
+        &mut self,
+        tie: &BodyAttachmentDesc<R>,
+        positions: &[Vec3<R>],
+        frames: &dyn BodyFrames<R>,
+        index: &dyn Fn(&str, u32) -> Result<u32, SceneError>,
+    ) -> Result<(), SceneError> {
+        let limit = R::from_int(MAX_MAGNITUDE);
+        SceneError::check_range("compliance", tie.compliance, R::ZERO, limit, "")?;
+        let Some((handle, frame)) = frames.frame(tie.body) else {
+            return Err(SceneError::new(
+                "body",
+                format!(
+                    "names body {}, but the scene has {} rigid bodies",
+                    tie.body,
+                    frames.count()
+                ),
+            ));
+        };
+        if tie.vertices.is_empty() {
+            return Err(SceneError::new("vertices", "must not be empty"));
+        }
+        for (k, &v) in tie.vertices.iter().enumerate() {
+            let global = index(&format!("vertices[{k}]"), v)?;
+            self.ties.vertex.push(global);
+            self.ties.body.push(handle);
+            self.ties
+                .local
+                .push(frame.inverse_point(positions[v as usize]));
+            self.ties.compliance.push(tie.compliance);
+        }
         Ok(())
     }
 
@@ -312,8 +390,9 @@ impl<R: Real> SoftSystem<R> {
         }
     }
 
-    /// Tethers of the body starting at `first` (`pinned` by local index): every vertex
-    /// that is neither pinned nor attached is tethered, at its rest distance, to each
+    /// Tethers of the body starting at `first` (`pinned` by local index), and of the body
+    /// points its vertices are tied to (see [`Ties`](super::body_coupling::Ties)): every
+    /// vertex that is neither pinned nor attached, and every tie, is tethered, at its rest distance, to each
     /// pinned vertex when the body has at most [`MAX_TETHERED_PINS`], and otherwise to its
     /// nearest anchor (pinned or attached vertex; the first in order on a tie). Tethering
     /// to every pin keeps the straight line between two pins, which an inextensible sheet
@@ -341,12 +420,7 @@ impl<R: Real> SoftSystem<R> {
         } else {
             pins.iter().chain(&attached).copied().collect()
         };
-        for (i, &is_pinned) in pinned.iter().enumerate() {
-            let v = first + i as u32;
-            if is_pinned || attached.iter().any(|a| a.0 == v) {
-                continue;
-            }
-            let p = x[v as usize];
+        let choose = |p: Vec3<R>| {
             let mut chosen: Vec<(u32, Vec3<R>)> = Vec::new();
             if every_pin {
                 chosen.extend(pins.iter().copied());
@@ -361,11 +435,31 @@ impl<R: Real> SoftSystem<R> {
             if let Some((_, k)) = best {
                 chosen.push(nearest_pool[k]);
             }
-            for (anchor, at) in chosen {
+            chosen
+        };
+        for (i, &is_pinned) in pinned.iter().enumerate() {
+            let v = first + i as u32;
+            if is_pinned || attached.iter().any(|a| a.0 == v) {
+                continue;
+            }
+            let p = x[v as usize];
+            for (anchor, at) in choose(p) {
                 let t = &mut self.tethers;
                 t.vertex.push(v);
                 t.anchor.push(anchor);
                 t.rest.push(at.distance(p));
+            }
+        }
+        let ties = &mut self.ties;
+        for row in 0..ties.vertex.len() {
+            if ties.vertex[row] < first {
+                continue;
+            }
+            let p = x[ties.vertex[row] as usize];
+            for (anchor, at) in choose(p) {
+                ties.tether_row.push(row as u32);
+                ties.tether_anchor.push(anchor);
+                ties.tether_rest.push(at.distance(p));
             }
         }
     }
@@ -482,6 +576,25 @@ impl<R: Real> SoftSystem<R> {
             return Err(SceneError::new(
                 "attachments",
                 "rows of different lengths or naming missing vertices or targets",
+            ));
+        }
+        let ties = &self.ties;
+        if [ties.body.len(), ties.local.len(), ties.compliance.len()]
+            .iter()
+            .any(|&len| len != ties.vertex.len())
+            || !ties.vertex.iter().all(|&i| in_range(i))
+            || [ties.tether_anchor.len(), ties.tether_rest.len()]
+                .iter()
+                .any(|&len| len != ties.tether_row.len())
+            || !ties.tether_anchor.iter().all(|&i| in_range(i))
+            || !ties
+                .tether_row
+                .iter()
+                .all(|&r| (r as usize) < ties.vertex.len())
+        {
+            return Err(SceneError::new(
+                "ties",
+                "rows of different lengths or naming missing vertices",
             ));
         }
         let tt = &self.tethers;

@@ -25,7 +25,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::math::integration::Integrator;
 use crate::math::{Fx, Quat, Real, Vec3};
-use crate::rigid::Shape;
+use crate::rigid::{CollisionFilter, Shape};
 
 /// The most vertices a scene may create, over all soft bodies.
 pub const MAX_VERTICES: u32 = 1 << 18;
@@ -200,6 +200,43 @@ pub struct AttachmentDesc<R: Real = Fx> {
     pub compliance: R,
 }
 
+/// Vertices tied to a rigid body: each is held at the body point where it starts, by a
+/// constraint solved two-way (the body is pulled as much as the vertices are).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "", deny_unknown_fields)]
+pub struct BodyAttachmentDesc<R: Real = Fx> {
+    /// The rigid body, by index in the scene's rigid body list (grid copies counted).
+    pub body: u32,
+    /// Vertex indices within the soft body.
+    pub vertices: Vec<u32>,
+    /// Compliance of each tie, m/N. Default 0 (rigid).
+    #[serde(default)]
+    pub compliance: R,
+}
+
+/// Contacts of a soft body's vertices with the rigid bodies: every shape, static,
+/// kinematic or dynamic, with friction, pushing the bodies back.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "", deny_unknown_fields)]
+pub struct BodyContactsDesc<R: Real = Fx> {
+    /// Coulomb friction coefficient μ between a vertex and a body. Default 0.5.
+    #[serde(default = "default_friction")]
+    pub friction: R,
+    /// The layers of the rigid bodies the vertices touch (as a body's filter). Default
+    /// all.
+    #[serde(default)]
+    pub filter: CollisionFilter,
+}
+
+impl<R: Real> Default for BodyContactsDesc<R> {
+    fn default() -> Self {
+        Self {
+            friction: default_friction(),
+            filter: CollisionFilter::default(),
+        }
+    }
+}
+
 /// One soft body.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "", deny_unknown_fields)]
@@ -216,6 +253,13 @@ pub struct SoftBodyDesc<R: Real = Fx> {
     /// Vertices held by kinematic targets (XPBD bodies only).
     #[serde(default)]
     pub attachments: Vec<AttachmentDesc<R>>,
+    /// Vertices tied to rigid bodies (XPBD bodies only).
+    #[serde(default)]
+    pub body_attachments: Vec<BodyAttachmentDesc<R>>,
+    /// Whether, and how, the vertices collide with the rigid bodies (XPBD bodies only).
+    /// Absent: they pass through them (the static `colliders` still apply).
+    #[serde(default)]
+    pub body_contacts: Option<BodyContactsDesc<R>>,
     /// Initial velocity of every vertex, m/s.
     #[serde(default)]
     pub velocity: Vec3<R>,

@@ -16,10 +16,12 @@
 //! and compilation · `system` storage and the step · `constraints` the XPBD rows
 //! (distance, bending, volume, attachment) · [`xpbd`] the substep loop ·
 //! [`spring_mass`] Hooke springs and the stability bound · `collide` static colliders
-//! with friction · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting.
+//! with friction · `body_coupling` contacts with and ties to rigid bodies, two-way, seen
+//! through the traits of `rigid_bodies` · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting.
 //!
 //! [`Stage::Soft`]: crate::types::Stage::Soft
 
+mod body_coupling;
 mod build;
 mod collide;
 mod commands;
@@ -29,6 +31,7 @@ pub mod hashing;
 #[cfg(target_arch = "x86_64")]
 pub(crate) mod lanes;
 mod metrics;
+pub(crate) mod rigid_bodies;
 pub mod spring_mass;
 mod subsystem;
 mod system;
@@ -36,8 +39,8 @@ mod topology;
 pub mod xpbd;
 
 pub use desc::{
-    AttachmentDesc, ColliderDesc, MAX_SOLVER_STEPS, MAX_VERTICES, SoftBodyDesc, SoftDesc,
-    SoftModel, SoftShape, XpbdSettings,
+    AttachmentDesc, BodyAttachmentDesc, BodyContactsDesc, ColliderDesc, MAX_SOLVER_STEPS,
+    MAX_VERTICES, SoftBodyDesc, SoftDesc, SoftModel, SoftShape, XpbdSettings,
 };
 pub use metrics::SoftMetrics;
 pub use system::SoftSystem;

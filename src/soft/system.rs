@@ -3,9 +3,11 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::body_coupling::{BodyContacts, CouplingScratch, Ties};
 use super::collide::Collider;
 use super::constraints::{Attachments, DistanceFactors, Distances, Hinges, Tethers, Tetrahedra};
 use super::desc::XpbdSettings;
+use super::rigid_bodies::RigidBodies;
 use super::spring_mass::Springs;
 use crate::math::integration::Integrator;
 use crate::math::{Fx, Real, Vec3};
@@ -64,6 +66,8 @@ pub(crate) struct Body<R: Real> {
     pub wind: Vec3<R>,
     /// Air drag per vertex, kg/s.
     pub drag: R,
+    /// How the vertices touch the rigid bodies, if they do.
+    pub contacts: Option<BodyContacts<R>>,
 }
 
 impl<R: Real> Body<R> {
@@ -90,6 +94,8 @@ pub struct SoftSystem<R: Real = Fx> {
     pub(crate) hinges: Hinges<R>,
     pub(crate) tetrahedra: Tetrahedra<R>,
     pub(crate) attachments: Attachments<R>,
+    /// Vertices tied to rigid bodies.
+    pub(crate) ties: Ties<R>,
     pub(crate) tethers: Tethers<R>,
     pub(crate) springs: Springs<R>,
     pub(crate) colliders: Vec<Collider<R>>,
@@ -135,6 +141,8 @@ pub(crate) struct Scratch<R: Real> {
     pub displacement: Vec<Vec3<R>>,
     /// a, m/s², of the spring-mass vertices.
     pub acceleration: Vec<Vec3<R>>,
+    /// The rigid bodies in view during a coupled step.
+    pub coupling: CouplingScratch<R>,
 }
 
 impl<R: Real> Clone for Scratch<R> {
@@ -155,8 +163,23 @@ impl<R: Real> SoftSystem<R> {
     /// straight line from their place at the start of the tick to their goal, reached at the
     /// end of the last substep.
     pub fn step(&mut self, dt: R, gravity: Vec3<R>, substep: u32, substeps: u32) {
+        self.step_with_bodies(dt, gravity, (substep, substeps), None);
+    }
+
+    /// [`step`](Self::step) with the rigid bodies in view, when some vertex touches or is
+    /// tied to them ([`body_coupling`](super::body_coupling)).
+    pub(crate) fn step_with_bodies(
+        &mut self,
+        dt: R,
+        gravity: Vec3<R>,
+        (substep, substeps): (u32, u32),
+        bodies: Option<&mut dyn RigidBodies<R>>,
+    ) {
+        if substep == 0 {
+            self.scratch.coupling.impulse = Vec3::ZERO;
+        }
         if self.has_xpbd {
-            self.step_xpbd(dt, gravity, substep, substeps);
+            self.step_xpbd(dt, gravity, (substep, substeps), bodies);
         }
         for b in 0..self.bodies.len() {
             if let Model::SpringMass { .. } = self.bodies[b].model {

@@ -16,6 +16,7 @@
 //! and reused while it stays the same.
 
 use super::collide::project_positions;
+use super::rigid_bodies::RigidBodies;
 use super::system::{Model, SoftSystem};
 use crate::math::{Real, Vec3};
 
@@ -26,15 +27,32 @@ mod tests;
 
 impl<R: Real> SoftSystem<R> {
     /// Advances the XPBD bodies by `dt` seconds: world substep `substep` of `substeps`.
-    pub(crate) fn step_xpbd(&mut self, dt: R, gravity: Vec3<R>, substep: u32, substeps: u32) {
+    /// With `bodies`, the vertices also touch and are tied to the rigid bodies
+    /// ([`body_coupling`](super::body_coupling)).
+    pub(crate) fn step_xpbd(
+        &mut self,
+        dt: R,
+        gravity: Vec3<R>,
+        (substep, substeps): (u32, u32),
+        mut bodies: Option<&mut dyn RigidBodies<R>>,
+    ) {
         let n = self.settings.substeps;
         let h = dt * R::from_ratio(1, i64::from(n));
         let inv_h = h.recip();
         self.prepare(h, inv_h);
+        if let Some(bodies) = bodies.as_deref_mut() {
+            self.find_bodies(bodies, dt, gravity);
+        }
         let total = u64::from(substeps) * u64::from(n);
         for s in 0..n {
             let done = u64::from(substep) * u64::from(n) + u64::from(s) + 1;
-            self.xpbd_substep(h, inv_h, gravity, done, total);
+            if let Some(bodies) = bodies.as_deref_mut() {
+                bodies.advance();
+            }
+            self.xpbd_substep(h, inv_h, gravity, done, total, reborrow(&mut bodies));
+        }
+        if let Some(bodies) = bodies {
+            bodies.finish();
         }
     }
 
@@ -63,7 +81,15 @@ impl<R: Real> SoftSystem<R> {
     }
 
     /// One substep; `done` of `total` substeps of the tick are complete at its end.
-    fn xpbd_substep(&mut self, h: R, inv_h: R, gravity: Vec3<R>, done: u64, total: u64) {
+    fn xpbd_substep(
+        &mut self,
+        h: R,
+        inv_h: R,
+        gravity: Vec3<R>,
+        done: u64,
+        total: u64,
+        mut bodies: Option<&mut dyn RigidBodies<R>>,
+    ) {
         self.predict(h, gravity);
         self.distances.lambda.fill(R::ZERO);
         self.hinges.lambda.fill(Vec3::ZERO);
@@ -71,41 +97,16 @@ impl<R: Real> SoftSystem<R> {
         self.attachments.lambda.fill(Vec3::ZERO);
         self.attachments
             .displacements(done, total, &mut self.scratch.displacement);
-        let x = &mut self.vertices.position;
+        self.scratch.coupling.lambda.fill(R::ZERO);
+        for _ in 0..self.settings.iterations {
+            if let Some(bodies) = bodies.as_deref_mut() {
+                self.project_coupling(bodies, h);
+            }
+            self.iterate();
+        }
+        let x = &self.vertices.position;
         let w = &self.vertices.inv_mass;
         let s = &self.scratch;
-        for _ in 0..self.settings.iterations {
-            self.tethers.solve(
-                x,
-                #[cfg(target_arch = "x86_64")]
-                &s.tether_blocks,
-            );
-            self.distances.solve(x, &s.distance);
-            self.hinges.solve(
-                x,
-                &s.hinge_share,
-                &s.hinge_relax,
-                #[cfg(target_arch = "x86_64")]
-                &s.hinge_blocks,
-            );
-            self.tetrahedra.solve(x, w, s.inv_h2);
-            self.attachments
-                .solve(x, &s.displacement, &s.attachment_share, &s.attachment_relax);
-            if !self.colliders.is_empty() {
-                for body in &self.bodies {
-                    if body.model == Model::Xpbd {
-                        project_positions(
-                            &self.colliders,
-                            x,
-                            &s.previous,
-                            w,
-                            body.range(),
-                            body.radius,
-                        );
-                    }
-                }
-            }
-        }
         for body in &self.bodies {
             if body.model != Model::Xpbd {
                 continue;
@@ -117,6 +118,47 @@ impl<R: Real> SoftSystem<R> {
             }
             for i in body.range() {
                 update_velocity(i, x, &s.previous, w, v, inv_h);
+            }
+        }
+        if let Some(bodies) = bodies {
+            self.settle_contacts(bodies);
+        }
+    }
+
+    /// One Gauss–Seidel pass over the constraints and the static colliders (step 3 of the
+    /// [substep](self)).
+    fn iterate(&mut self) {
+        let x = &mut self.vertices.position;
+        let w = &self.vertices.inv_mass;
+        let s = &self.scratch;
+        self.tethers.solve(
+            x,
+            #[cfg(target_arch = "x86_64")]
+            &s.tether_blocks,
+        );
+        self.distances.solve(x, &s.distance);
+        self.hinges.solve(
+            x,
+            &s.hinge_share,
+            &s.hinge_relax,
+            #[cfg(target_arch = "x86_64")]
+            &s.hinge_blocks,
+        );
+        self.tetrahedra.solve(x, w, s.inv_h2);
+        self.attachments
+            .solve(x, &s.displacement, &s.attachment_share, &s.attachment_relax);
+        if !self.colliders.is_empty() {
+            for body in &self.bodies {
+                if body.model == Model::Xpbd {
+                    project_positions(
+                        &self.colliders,
+                        x,
+                        &s.previous,
+                        w,
+                        body.range(),
+                        body.radius,
+                    );
+                }
             }
         }
     }
@@ -154,6 +196,16 @@ impl<R: Real> SoftSystem<R> {
                 predict_vertex(i, &mut vertices, &motion);
             }
         }
+    }
+}
+
+/// The bodies in view for one call, leaving `bodies` usable afterwards.
+fn reborrow<'a, R: Real>(
+    bodies: &'a mut Option<&mut dyn RigidBodies<R>>,
+) -> Option<&'a mut dyn RigidBodies<R>> {
+    match bodies {
+        Some(b) => Some(&mut **b),
+        None => None,
     }
 }
 

@@ -7,6 +7,7 @@ mod particle_coupling;
 mod pipeline;
 mod queries;
 pub mod snapshot;
+pub(crate) mod soft_coupling;
 pub mod stage;
 pub mod timestep;
 

@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 use super::checksum::Checksum;
 use super::divergence::{Divergence, DivergenceMonitor};
 use super::particle_coupling::step_colliding_particles;
+use super::soft_coupling::step_rigid_and_soft;
 use super::stage::StageTimings;
 use crate::fluid::FluidSystem;
 use crate::math::rng::Pcg32;
@@ -12,6 +13,7 @@ use crate::math::saturation::count_saturations;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::ParticleSystem;
+use crate::rigid::proxies::Proxies;
 use crate::rigid::{Event, RigidSystem};
 use crate::soft::SoftSystem;
 use crate::types::{
@@ -130,6 +132,45 @@ impl<R: Real> WorldState<R> {
 }
 
 impl<R: Real> WorldState<R> {
+    /// One tick of the subsystem of `stage`, if the scene has it, on its own.
+    fn step_alone(&mut self, stage: Stage, timings: &mut Option<Box<StageTimings>>, dt: R) {
+        let (settings, rng, subsystems) = self.split_mut();
+        if let Some(subsystem) = subsystems
+            .into_iter()
+            .flatten()
+            .find(|s| s.stage() == stage)
+        {
+            timed(timings, stage, || {
+                step_subsystem(subsystem, settings, rng, dt)
+            });
+        }
+    }
+
+    /// The rigid and soft stages, when some soft body touches or is tied to the rigid
+    /// bodies: steps them together ([`soft_coupling`](super::soft_coupling)) and returns
+    /// true; otherwise does nothing and returns false.
+    fn step_coupled_soft(
+        &mut self,
+        timings: &mut Option<Box<StageTimings>>,
+        dt: R,
+        proxies: &mut Proxies<R>,
+    ) -> bool {
+        let (Some(rigid), Some(soft)) = (&mut self.rigid, &mut self.soft) else {
+            return false;
+        };
+        if !soft.couples() {
+            return false;
+        }
+        step_rigid_and_soft(
+            rigid,
+            soft,
+            proxies,
+            (&self.settings, &mut self.rng, dt),
+            |stage, f| timed(timings, stage, f),
+        );
+        true
+    }
+
     /// The particle stage, when some particle group collides with the rigid bodies: steps
     /// it with the bodies in view ([`particle_coupling`](super::particle_coupling)) and
     /// returns true; otherwise does nothing and returns false.
@@ -193,6 +234,9 @@ pub struct TickReport {
 /// 2. [`Stage::Particles`]: per substep, emit, age, accumulate forces and integrate.
 /// 3. [`Stage::Rigid`]: per substep, the rigid-body step (collide, wake, solve, sleep).
 /// 4. [`Stage::Soft`]: per substep, the XPBD substeps and the spring-mass integration.
+///    When soft bodies touch or are tied to rigid bodies, stages 3 and 4 alternate
+///    substep by substep, the soft step pushing and pushed by the bodies
+///    ([`soft_coupling`](super::soft_coupling)).
 /// 5. [`Stage::Fluid`]: per substep, the fluid step (emit, neighbours, density, solve,
 ///    advect).
 /// 6. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
@@ -207,6 +251,8 @@ pub struct World<R: Real = Fx> {
     timings: Option<Box<StageTimings>>,
     saturations_total: u64,
     divergence: Option<Box<DivergenceMonitor>>,
+    /// The rigid bodies as the soft stage sees them (memory kept between ticks; not state).
+    proxies: Proxies<R>,
 }
 
 impl<R: Real> World<R> {
@@ -233,6 +279,7 @@ impl<R: Real> World<R> {
             timings: None,
             saturations_total: 0,
             divergence: None,
+            proxies: Proxies::default(),
         }
     }
 
@@ -364,17 +411,16 @@ impl<R: Real> World<R> {
             let ignored = timed(&mut timings, Stage::ApplyInputs, || {
                 self.apply_inputs(input)
             });
-            let substep_dt = self.substep_dt;
-            let coupled = self.state.step_coupled_particles(&mut timings, substep_dt);
-            let (settings, rng, subsystems) = self.state.split_mut();
-            for subsystem in subsystems.into_iter().flatten() {
-                if coupled && subsystem.stage() == Stage::Particles {
-                    continue;
-                }
-                timed(&mut timings, subsystem.stage(), || {
-                    step_subsystem(subsystem, settings, rng, substep_dt);
-                });
+            let dt = self.substep_dt;
+            let state = &mut self.state;
+            if !state.step_coupled_particles(&mut timings, dt) {
+                state.step_alone(Stage::Particles, &mut timings, dt);
             }
+            if !state.step_coupled_soft(&mut timings, dt, &mut self.proxies) {
+                state.step_alone(Stage::Rigid, &mut timings, dt);
+                state.step_alone(Stage::Soft, &mut timings, dt);
+            }
+            state.step_alone(Stage::Fluid, &mut timings, dt);
             timed(&mut timings, Stage::EndTick, || self.end_tick());
             self.timings = timings;
             ignored

@@ -6,7 +6,7 @@
 //! | offset | size | content |
 //! |---|---|---|
 //! | 0 | 8 | magic: the ASCII bytes `FXSTEPSN` |
-//! | 8 | 4 | format version, `u32` = 9 ([`SNAPSHOT_FORMAT_VERSION`]) |
+//! | 8 | 4 | format version, `u32` = 10 ([`SNAPSHOT_FORMAT_VERSION`]) |
 //! | 12 | 4 | state version, `u32` ([`STATE_VERSION`] when written) |
 //! | 16 | 8 + n | scalar format name: `u64` length n, then its ASCII bytes (`"I32F32"`) |
 //! | 24 + n | S | the state: codec-encoded [`WorldState`] |
@@ -32,9 +32,10 @@ pub const SNAPSHOT_MAGIC: [u8; 8] = *b"FXSTEPSN";
 /// joints, version 5 the fluid's CFL number (adaptive substeps), version 6 the rigid
 /// bodies' collision filters, sensor flags and sensor overlaps, version 7 the bodies' and
 /// templates' bullet flags, version 8 the triangle meshes and heightfields and contact
-/// keys whose parts are 32-bit (a mesh's triangle), version 9 the particle groups' collisions; older files are refused with a
-/// message naming both versions.
-pub const SNAPSHOT_FORMAT_VERSION: u32 = 9;
+/// keys whose parts are 32-bit (a mesh's triangle), version 9 the particle groups'
+/// collisions, version 10 the soft bodies' ties to and contacts with rigid bodies; older
+/// files are refused with a message naming both versions.
+pub const SNAPSHOT_FORMAT_VERSION: u32 = 10;
 
 /// Magic, format version and state version.
 const FIXED_PREFIX: usize = 16;

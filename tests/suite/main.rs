@@ -45,5 +45,6 @@ mod rigid_mesh;
 mod rigid_narrowphase;
 mod rigid_scenes;
 mod soft_bodies;
+mod soft_coupling;
 mod soft_snapshot;
 mod world_core;

@@ -58,6 +58,7 @@ sync_tests!(
     bullets,
     terrain,
     debris,
+    flag,
     // 4096 colliding balls: 300 frames × 8 simulations are 2400 steps of ~13 ms in release
     // (about a minute), several times that in the test profile. The release test run checks
     // it; the debug run skips it to keep the whole test command within its time budget.

@@ -6,6 +6,7 @@
 
 pub mod bullets;
 pub mod debris;
+pub mod flag;
 pub mod fluid;
 pub mod game;
 pub mod joints;
@@ -19,7 +20,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 25] = [
+pub const BUILTIN_SCENES: [(&str, &str); 26] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -52,6 +53,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 25] = [
     (
         "debris",
         "an emitter sprays pellets at a stack of crates beside a ledge: the pellets bounce off every body and push the crates until the stack falls",
+    ),
+    (
+        "flag",
+        "a flag tied to the pole of a turning carousel sweeps into a crate swinging on a rope: cloth and rope push and are pushed by rigid bodies",
     ),
     (
         "balls",
@@ -168,6 +173,11 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.rigid = Some(debris::debris_bodies());
             scene.particles = Some(debris::debris_pellets());
             scene.ticks = 480;
+        }
+        "flag" => {
+            scene.rigid = Some(flag::flag_bodies());
+            scene.soft = Some(flag::flag_cloth());
+            scene.ticks = 600;
         }
         "balls" => {
             scene.rigid = Some(rigid::balls(16));

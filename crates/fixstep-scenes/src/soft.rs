@@ -36,6 +36,8 @@ pub fn body<R: Real>(shape: SoftShape<R>, model: SoftModel<R>, mass: R) -> SoftB
         mass,
         pins: Vec::new(),
         attachments: Vec::new(),
+        body_attachments: Vec::new(),
+        body_contacts: None,
         velocity: Vec3::ZERO,
         damping: R::ZERO,
         radius: ratio(1, 100),

@@ -15,9 +15,11 @@
 //! [`ray_hull`] rays against convex hulls · [`ray_mesh`] and [`point_mesh`] rays and
 //! closest points on meshes and heightfields · [`shape_cast`] swept shapes · [`overlap`]
 //! shared points · [`point`] closest points · [`point_hull`] closest points of hulls ·
-//! [`moving_point`] a particle's path against moving bodies · [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
+//! [`moving_point`] a particle's path against moving bodies · [`ball_contact`] a soft
+//! vertex against a shape · [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
 //! kept current by the step.
 
+mod ball_contact;
 mod index;
 mod moving_point;
 mod overlap;
@@ -36,6 +38,7 @@ mod tree;
 
 use core::cell::Cell;
 
+pub(crate) use self::ball_contact::ball_contact;
 pub(crate) use self::index::QueryIndex;
 pub(crate) use self::moving_point::BodiesInMotion;
 use self::overlap::shapes_overlap;
@@ -414,7 +417,7 @@ impl<R: Real> RigidSystem<R> {
 
     /// [`for_each_candidate`](Self::for_each_candidate) with `stack` as the tree traversal's
     /// memory.
-    fn for_each_candidate_with(
+    pub(crate) fn for_each_candidate_with(
         &self,
         stack: &mut Vec<u32>,
         keep: impl FnMut(&Aabb<R>) -> bool,
