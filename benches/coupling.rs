@@ -4,6 +4,10 @@
 //! removed (the pellets then fly through everything). Each sample runs the whole sequence
 //! from the scene's start; the figure is the time per step, in I32F32 and, with the same
 //! generic code, in `f64`.
+//!
+//! And `flag` (a 13 × 9 cloth tied to a turning kinematic pole and touching the bodies, a
+//! 10-link rope tied to a swinging crate; 600 steps), against the same scene with the soft
+//! bodies untied and touching nothing (the cloth and rope then fall freely).
 
 mod support;
 
@@ -37,12 +41,37 @@ fn bench_debris<R: Real>(
     bench_ticks(group, id, &debris::<R>(collisions), STEPS);
 }
 
+/// `flag` in format R, with or without its soft bodies' ties and contacts.
+fn flag<R: Real>(coupled: bool) -> Scene<R> {
+    let mut scene = builtin_scene::<R>("flag").expect("a built-in scene");
+    if !coupled && let Some(soft) = &mut scene.soft {
+        for body in &mut soft.bodies {
+            body.body_attachments.clear();
+            body.body_contacts = None;
+        }
+    }
+    scene
+}
+
+fn bench_flag<R: Real>(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    coupled: bool,
+) {
+    let label = if coupled { "flag" } else { "flag_uncoupled" };
+    let id = BenchmarkId::new(label, R::NAME);
+    bench_ticks(group, id, &flag::<R>(coupled), 600);
+}
+
 fn coupling(c: &mut Criterion) {
     let mut group = c.benchmark_group("coupling_step");
     group.sample_size(10);
     for collisions in [true, false] {
         bench_debris::<Fx>(&mut group, collisions);
         bench_debris::<f64>(&mut group, collisions);
+    }
+    for coupled in [true, false] {
+        bench_flag::<Fx>(&mut group, coupled);
+        bench_flag::<f64>(&mut group, coupled);
     }
     group.finish();
 }

@@ -439,3 +439,28 @@ fn flag_restored_mid_contact_continues_like_an_uninterrupted_run() {
         );
     }
 }
+
+/// Removing the body a rope is tied to lets the rope go: it falls on, hanging from its pin.
+#[test]
+fn a_tie_to_a_removed_body_lets_go() {
+    use fixstep::world::{Command, PlayerInput, Target};
+    let scene = pendulum(1.0, 0.3, 0.1, 0.0);
+    let mut world = scene.build().expect("builds");
+    for tick in 0..120u64 {
+        let mut input = TickInput::default();
+        if tick == 30 {
+            input.players.push(PlayerInput {
+                player: 0,
+                commands: vec![Command::Remove {
+                    target: Target::Body(Handle::new(0, 0)),
+                }],
+            });
+        }
+        world.step(&input);
+    }
+    assert_eq!(world.rigid().unwrap().body_count(), 0);
+    let soft = world.soft().unwrap();
+    let end = soft.position(10).unwrap().to_f64();
+    // Hanging straight down from (0, 3, 0), 1 m long, after the pull of the crate is gone.
+    assert!((end[1] - 2.0).abs() < 0.05, "the rope's end is at {end:?}");
+}

@@ -341,6 +341,26 @@ fn info_names_the_colliding_particle_groups() {
 }
 
 #[test]
+fn info_names_the_soft_bodies_coupled_to_rigid_bodies() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    let run = fixstep(&[
+        "info",
+        root.join("replays/flag.replay").to_str().expect("UTF-8"),
+    ]);
+    assert_eq!(run.code, 0, "{run:?}");
+    for expected in [
+        "13x9 cloth, XPBD, 9 vertices tied to body 1, touching rigid bodies (μ 0.5)",
+        "10-link rope, XPBD, 1 vertex tied to body 2",
+    ] {
+        assert!(
+            run.stdout.contains(expected),
+            "{expected:?} in {}",
+            run.stdout
+        );
+    }
+}
+
+#[test]
 fn info_gives_mesh_statistics() {
     let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
     let run = fixstep(&[

@@ -364,6 +364,44 @@ fn adaptive_fluid_substeps_record_verify_and_report() {
 }
 
 #[test]
+fn soft_coupling_errors_name_the_field() {
+    let rope = |extra: &str, model: &str| {
+        format!(
+            "(name: \"x\", rigid: Some((bodies: [(kind: Dynamic, shape: Sphere(radius: 0.1))])), \
+             soft: Some((bodies: [(shape: Rope(start: (x: 0.0, y: 1.0, z: 0.0), \
+             end: (x: 1.0, y: 1.0, z: 0.0), links: 4), model: {model}, mass: 1.0, {extra})])))"
+        )
+        .into_bytes()
+    };
+    let xpbd = "Xpbd(stretch_compliance: 0.0)";
+    assert_scene_rejected(
+        &rope("body_attachments: [(body: 3, vertices: [4])]", xpbd),
+        &[
+            "soft.bodies[0].body_attachments[0].body",
+            "names body 3, but the scene has 1 rigid bodies",
+        ],
+    );
+    assert_scene_rejected(
+        &rope("body_attachments: [(body: 0, vertices: [9])]", xpbd),
+        &[
+            "soft.bodies[0].body_attachments[0].vertices[0]",
+            "vertex 9 does not exist",
+        ],
+    );
+    assert_scene_rejected(
+        &rope("body_contacts: Some((friction: -1.0))", xpbd),
+        &["soft.bodies[0].body_contacts.friction"],
+    );
+    assert_scene_rejected(
+        &rope(
+            "body_contacts: Some(())",
+            "SpringMass(integrator: SemiImplicitEuler, stiffness: 100.0)",
+        ),
+        &["soft.bodies[0].body_contacts", "only XPBD bodies"],
+    );
+}
+
+#[test]
 fn particle_collision_errors_name_the_field() {
     let with = |entries: &str| {
         format!("(name: \"x\", particles: Some((collisions: [{entries}])))").into_bytes()

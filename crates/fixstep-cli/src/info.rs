@@ -222,7 +222,23 @@ fn soft_summary(desc: &SoftDesc<Fx>) -> String {
                 SoftModel::Xpbd { .. } => "XPBD",
                 SoftModel::SpringMass { .. } => "spring-mass",
             };
-            format!("{shape}, {model}")
+            let mut coupling = Vec::new();
+            let ties: usize = body.body_attachments.iter().map(|t| t.vertices.len()).sum();
+            if ties > 0 {
+                let mut tied: Vec<u32> = body.body_attachments.iter().map(|t| t.body).collect();
+                tied.dedup();
+                let names: Vec<String> = tied.iter().map(|b| format!("body {b}")).collect();
+                let noun = if ties == 1 { "vertex" } else { "vertices" };
+                coupling.push(format!("{ties} {noun} tied to {}", names.join(", ")));
+            }
+            if let Some(contacts) = &body.body_contacts {
+                coupling.push(format!("touching rigid bodies (μ {})", contacts.friction));
+            }
+            if coupling.is_empty() {
+                format!("{shape}, {model}")
+            } else {
+                format!("{shape}, {model}, {}", coupling.join(", "))
+            }
         })
         .collect();
     let xpbd = desc
