@@ -21,7 +21,7 @@
 //!
 //! [`Stage::Soft`]: crate::types::Stage::Soft
 
-mod body_coupling;
+pub(crate) mod body_coupling;
 mod build;
 mod collide;
 mod commands;

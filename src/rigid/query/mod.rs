@@ -15,7 +15,7 @@
 //! [`ray_hull`] rays against convex hulls · [`ray_mesh`] and [`point_mesh`] rays and
 //! closest points on meshes and heightfields · [`shape_cast`] swept shapes · [`overlap`]
 //! shared points · [`point`] closest points · [`point_hull`] closest points of hulls ·
-//! [`moving_point`] a particle's path against moving bodies · [`ball_contact`] a soft
+//! [`moving_point`] a particle's path against moving bodies · [`ball_contact`](mod@ball_contact) a soft
 //! vertex against a shape · [`parts`] a compound's parts · [`tree`] the dynamic AABB tree · [`index`] the tree
 //! kept current by the step.
 
