@@ -32,6 +32,7 @@ mod particles_scene;
 mod queries;
 mod replay_committed;
 mod replay_snapshot;
+mod restore_support;
 mod rigid_broadphase;
 mod rigid_ccd;
 mod rigid_convex_shapes;

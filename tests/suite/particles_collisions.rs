@@ -235,41 +235,8 @@ fn particles_that_do_not_push_leave_the_body_still() {
 
 #[test]
 fn debris_restored_mid_contact_continues_like_an_uninterrupted_run() {
-    let scene = fixstep_scenes::builtin_scene::<Fx>("debris").expect("built in");
-    let ticks = 150;
-    let at = 70; // pellets have been striking the crates for a few ticks
-    let mut reference = scene.build().expect("builds");
-    let mut uninterrupted = Vec::new();
-    for _ in 0..ticks {
-        reference.step(&TickInput::default());
-        uninterrupted.push(reference.checksum());
-    }
-    let mut world = scene.build().expect("builds");
-    for _ in 0..at {
-        world.step(&TickInput::default());
-    }
-    let snapshot = world.snapshot();
-    let bytes = fixstep::codec::encode(&snapshot).expect("encodes");
-    for _ in 0..5 {
-        world.step(&TickInput::default());
-    }
-    world.restore(&snapshot);
-    let mut fresh: World<Fx> =
-        World::from_state(fixstep::codec::decode_exact(&bytes).expect("decodes"));
-    for tick in at..ticks {
-        world.step(&TickInput::default());
-        fresh.step(&TickInput::default());
-        assert_eq!(
-            world.checksum(),
-            uninterrupted[tick as usize],
-            "restored, tick {tick}"
-        );
-        assert_eq!(
-            fresh.checksum(),
-            uninterrupted[tick as usize],
-            "decoded, tick {tick}"
-        );
-    }
+    // At tick 70 pellets have been striking the crates for a few ticks.
+    let reference = crate::restore_support::restored_mid_run_continues("debris", 150, 70);
     let particles = reference.particles().expect("particles");
     assert!(particles.alive().iter().filter(|&&a| a).count() > 100);
 }

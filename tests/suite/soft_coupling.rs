@@ -403,41 +403,8 @@ fn a_cloth_lands_on_every_shape_without_entering_it() {
 
 #[test]
 fn flag_restored_mid_contact_continues_like_an_uninterrupted_run() {
-    let scene = fixstep_scenes::builtin_scene::<Fx>("flag").expect("built in");
-    let ticks = 200;
-    let at = 130; // the flag is sweeping the crate
-    let mut reference = scene.build().expect("builds");
-    let mut uninterrupted = Vec::new();
-    for _ in 0..ticks {
-        reference.step(&TickInput::default());
-        uninterrupted.push(reference.checksum());
-    }
-    let mut world = scene.build().expect("builds");
-    for _ in 0..at {
-        world.step(&TickInput::default());
-    }
-    let snapshot = world.snapshot();
-    let bytes = fixstep::codec::encode(&snapshot).expect("encodes");
-    for _ in 0..5 {
-        world.step(&TickInput::default());
-    }
-    world.restore(&snapshot);
-    let mut fresh: World<Fx> =
-        World::from_state(fixstep::codec::decode_exact(&bytes).expect("decodes"));
-    for tick in at..ticks {
-        world.step(&TickInput::default());
-        fresh.step(&TickInput::default());
-        assert_eq!(
-            world.checksum(),
-            uninterrupted[tick as usize],
-            "restored, tick {tick}"
-        );
-        assert_eq!(
-            fresh.checksum(),
-            uninterrupted[tick as usize],
-            "decoded, tick {tick}"
-        );
-    }
+    // At tick 130 the flag is sweeping the crate.
+    crate::restore_support::restored_mid_run_continues("flag", 200, 130);
 }
 
 /// Removing the body a rope is tied to lets the rope go: it falls on, hanging from its pin.
