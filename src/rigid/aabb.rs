@@ -26,6 +26,17 @@ impl<R: Real> Aabb<R> {
             && other.min.z <= self.max.z
     }
 
+    /// True when `p` lies in the box, faces included.
+    #[inline]
+    pub fn contains_point(&self, p: Vec3<R>) -> bool {
+        self.min.x <= p.x
+            && self.min.y <= p.y
+            && self.min.z <= p.z
+            && p.x <= self.max.x
+            && p.y <= self.max.y
+            && p.z <= self.max.z
+    }
+
     /// The smallest box holding both.
     pub fn union(&self, other: &Self) -> Self {
         Self {

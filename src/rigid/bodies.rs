@@ -151,6 +151,16 @@ impl<R: Real> Bodies<R> {
             }
     }
 
+    /// A bound on the speed of any point of slot `i`'s body, |v| + |ω| ρ (m/s), ρ the half
+    /// diagonal of its bounding box (0 for a plane); the box's size does not depend on
+    /// where the body is.
+    pub fn point_speed_bound(&self, i: usize) -> R {
+        let xf = super::transform::Transform::from_pose(self.position[i], self.orientation[i]);
+        let radius = super::aabb::Aabb::of_shape(&self.shape[i], &xf)
+            .map_or(R::ZERO, |a| (a.max - a.min).length() * R::HALF);
+        self.linear_velocity[i].length() + self.angular_velocity[i].length() * radius
+    }
+
     /// Stores a body in the lowest dead slot, or a new slot; returns its handle.
     pub fn insert(&mut self, body: NewBody<R>) -> Handle {
         let dynamic = body.kind == BodyKind::Dynamic;

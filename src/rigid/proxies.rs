@@ -79,6 +79,8 @@ pub(crate) struct Proxies<R: Real> {
     /// Per sleeping slot: the impulse (N·s) and moment about its centre (N·m·s) gathered.
     sleeping: BTreeMap<u32, (Vec3<R>, Vec3<R>)>,
     stack: Vec<u32>,
+    /// The candidate slots of the last [`near`](Self::near).
+    slots: Vec<usize>,
 }
 
 impl<R: Real> Proxies<R> {
@@ -97,11 +99,7 @@ impl<R: Real> Proxies<R> {
             if !b.is_moving(i) {
                 continue;
             }
-            let xf = Transform::from_pose(b.position[i], b.orientation[i]);
-            let radius = Aabb::of_shape(&b.shape[i], &xf)
-                .map_or(R::ZERO, |a| (a.max - a.min).length() * R::HALF);
-            let speed = b.linear_velocity[i].length() + b.angular_velocity[i].length() * radius;
-            reach = reach.max(speed * dt);
+            reach = reach.max(b.point_speed_bound(i) * dt);
         }
         self.reach = reach;
     }
@@ -117,7 +115,8 @@ impl<R: Real> Proxies<R> {
     ) {
         let b = &rigid.bodies;
         let reach = aabb.expanded(self.reach);
-        let mut slots = Vec::new();
+        let mut slots = core::mem::take(&mut self.slots);
+        slots.clear();
         let mut stack = core::mem::take(&mut self.stack);
         rigid.for_each_candidate_with(
             &mut stack,
@@ -131,7 +130,8 @@ impl<R: Real> Proxies<R> {
         self.stack = stack;
         slots.sort_unstable();
         out.clear();
-        out.extend(slots.into_iter().map(|i| self.proxy(rigid, i)));
+        out.extend(slots.iter().map(|&i| self.proxy(rigid, i)));
+        self.slots = slots;
     }
 
     /// The proxy of the live body `body`, or `None` when it was removed.
@@ -207,15 +207,9 @@ impl<R: Real> Proxies<R> {
 
     /// Whether proxy `i`'s box, grown by `margin` (m), may hold `x` (always for a plane).
     pub fn may_touch(&self, i: u32, x: Vec3<R>, margin: R) -> bool {
-        self.proxies[i as usize].aabb.is_none_or(|b| {
-            let b = b.expanded(margin);
-            x.x >= b.min.x
-                && x.y >= b.min.y
-                && x.z >= b.min.z
-                && x.x <= b.max.x
-                && x.y <= b.max.y
-                && x.z <= b.max.z
-        })
+        self.proxies[i as usize]
+            .aabb
+            .is_none_or(|b| b.expanded(margin).contains_point(x))
     }
 
     /// The contact (outward unit normal, depth in m) of a ball of radius `r` at `x` with

@@ -666,16 +666,25 @@ fn step_subsystem<R: Real>(
     substep_dt: R,
 ) {
     subsystem.begin_tick();
-    let mut context = StepContext {
-        dt: substep_dt,
+    let mut context = step_context(settings, rng, substep_dt);
+    for substep in 0..settings.substeps {
+        context.substep = substep;
+        subsystem.step(&mut context);
+    }
+}
+
+/// The context of a tick's first substep of `dt` seconds under `settings`.
+pub(super) fn step_context<'a, R: Real>(
+    settings: &Settings<R>,
+    rng: &'a mut Pcg32,
+    dt: R,
+) -> StepContext<'a, R> {
+    StepContext {
+        dt,
         gravity: settings.gravity,
         rng,
         substep: 0,
         substeps: settings.substeps,
-    };
-    for substep in 0..settings.substeps {
-        context.substep = substep;
-        subsystem.step(&mut context);
     }
 }
 

@@ -7,14 +7,14 @@
 //!
 //! A scene without such soft bodies steps each stage alone, and pays nothing here.
 
-use super::pipeline::Settings;
+use super::pipeline::{Settings, step_context};
 use crate::math::rng::Pcg32;
 use crate::math::{Real, Vec3};
 use crate::rigid::proxies::Proxies;
 use crate::rigid::{Aabb, CollisionFilter, RigidSystem, Transform};
 use crate::soft::SoftSystem;
 use crate::soft::rigid_bodies::{BodyFrames, RigidBodies};
-use crate::types::{Handle, StepContext, Subsystem};
+use crate::types::{Handle, Subsystem};
 
 /// The scene's rigid bodies while its soft bodies are built, by index.
 pub(crate) struct SceneBodies<'a, R: Real>(pub Option<&'a RigidSystem<R>>);
@@ -105,13 +105,7 @@ pub(super) fn step_rigid_and_soft<R: Real>(
 ) {
     Subsystem::begin_tick(rigid);
     Subsystem::begin_tick(soft);
-    let mut context = StepContext {
-        dt,
-        gravity: settings.gravity,
-        rng,
-        substep: 0,
-        substeps: settings.substeps,
-    };
+    let mut context = step_context(settings, rng, dt);
     for substep in 0..settings.substeps {
         context.substep = substep;
         time(crate::types::Stage::Rigid, &mut || {

@@ -317,15 +317,7 @@ impl<R: Real> RigidSystem<R> {
         let max = max_distance.min(R::MAX * R::HALF);
         let reach = Cell::new(max);
         let pad = prune_pad::<R>();
-        let within = |aabb: &Aabb<R>, reach: R| {
-            let grown = aabb.expanded(reach + pad);
-            grown.min.x <= point.x
-                && grown.min.y <= point.y
-                && grown.min.z <= point.z
-                && point.x <= grown.max.x
-                && point.y <= grown.max.y
-                && point.z <= grown.max.z
-        };
+        let within = |aabb: &Aabb<R>, reach: R| aabb.expanded(reach + pad).contains_point(point);
         let mut best: Option<(R, Handle)> = None;
         let mut found = None;
         self.for_each_candidate(

@@ -68,12 +68,12 @@ impl<R: Real> RigidSystem<R> {
                 placements.push(Transform::from_pose(b.position[i], b.orientation[i]));
                 continue;
             }
-            let (v, w) = (b.linear_velocity[i], b.angular_velocity[i]);
-            let xf = Transform::from_pose(b.position[i].add_scaled(v, elapsed), b.orientation[i]);
-            let radius = Aabb::of_shape(&b.shape[i], &xf)
-                .map_or(R::ZERO, |a| (a.max - a.min).length() * R::HALF);
-            reach = reach.max((v.length() + w.length() * radius) * (elapsed + dt));
-            placements.push(xf);
+            let v = b.linear_velocity[i];
+            reach = reach.max(b.point_speed_bound(i) * (elapsed + dt));
+            placements.push(Transform::from_pose(
+                b.position[i].add_scaled(v, elapsed),
+                b.orientation[i],
+            ));
         }
         motion.reach = reach;
     }
