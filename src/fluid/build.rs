@@ -3,7 +3,7 @@
 
 use super::boundary::boundary_count;
 use super::desc::{
-    FluidBox, FluidDesc, MAX_BOUNDARY_PARTICLES, MAX_CELLS, MAX_FLUID_PARTICLES,
+    FluidBodiesDesc, FluidBox, FluidDesc, MAX_BOUNDARY_PARTICLES, MAX_CELLS, MAX_FLUID_PARTICLES,
     MAX_FLUID_SUBSTEPS, MAX_SOLVER_ITERATIONS,
 };
 use super::emitter::EmitterState;
@@ -137,6 +137,7 @@ impl<R: Real> FluidSettings<R> {
             tank: desc.tank,
             kernel,
             stiffness: desc.speed_of_sound * desc.speed_of_sound * R::from_ratio(1, 7),
+            bodies: desc.bodies.map(|b| b.filter),
         };
         settings.check_tank()?;
         let Some(dt) = dt else {
@@ -302,6 +303,7 @@ impl<R: Real> FluidSystem<R> {
         desc.cfl = s.cfl;
         desc.max_density_error = s.max_density_error;
         desc.max_iterations = s.max_iterations;
+        desc.bodies = s.bodies.map(|filter| FluidBodiesDesc { filter });
         let compiled = FluidSettings::compile(&desc, None).map_err(|e| e.within("settings"))?;
         if compiled != *s {
             return Err(SceneError::new(

@@ -14,6 +14,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::rigid::CollisionFilter;
+
 use crate::math::{Fx, Real, Vec3};
 
 /// The most fluid particles (initial and emitted together) a scene may ask for.
@@ -140,6 +142,20 @@ pub struct FluidDesc<R: Real = Fx> {
     /// Nozzles adding fluid during the run.
     #[serde(default)]
     pub emitters: Vec<FluidEmitter<R>>,
+    /// Whether the fluid meets the rigid bodies, two-way, and which: their surfaces are
+    /// sampled as boundary particles, and the fluid's pressure pushes them back (Akinci et
+    /// al. 2012). Absent: the fluid ignores them.
+    #[serde(default)]
+    pub bodies: Option<FluidBodiesDesc>,
+}
+
+/// The rigid bodies a fluid meets.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FluidBodiesDesc {
+    /// The layers of the bodies the fluid meets (as a body's filter). Default all.
+    #[serde(default)]
+    pub filter: CollisionFilter,
 }
 
 fn default_support<R: Real>() -> R {
@@ -189,6 +205,7 @@ impl<R: Real> FluidDesc<R> {
             tank,
             blocks: Vec::new(),
             emitters: Vec::new(),
+            bodies: None,
         }
     }
 }

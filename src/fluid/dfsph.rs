@@ -40,6 +40,9 @@
 //! of m/s. 10 % is the loosest tolerance a scene may set; in the benchmark's cube at the
 //! default tolerance the cap did not change the result (the mean binds first).
 //!
+//! Rigid bodies in the fluid add their samples to the walls' sums, with their velocities
+//! in the compression rate ([`bodies`](super::bodies)).
+//!
 //! Magnitudes at spacing 5 mm, Δt = 10⁻⁴ s: Dᵢ ≈ 10⁵, αᵢ ≈ 10³, kᵢ ≈ 1,
 //! corrections ≈ 10⁻² m/s.
 
@@ -67,6 +70,10 @@ impl<R: Real> FluidSystem<R> {
     /// constant-density solve (see the [module documentation](self)).
     pub(crate) fn dfsph_velocities(&mut self, dt: R, gravity: Vec3<R>) {
         self.compute_factors(dt);
+        let bodies = &mut self.scratch.bodies;
+        if bodies.active {
+            bodies.compression_rates(self.positions.len());
+        }
         let divergence_iterations = self.iterate(dt, Solve::DivergenceFree);
         for v in &mut self.velocities {
             *v = v.add_scaled(gravity, dt);
@@ -115,6 +122,7 @@ impl<R: Real> FluidSystem<R> {
     fn compute_factors(&mut self, dt: R) {
         let inv_dt = dt.recip();
         let floor = self.settings.kernel.lattice_gradient_norm * R::from_ratio(1, 16);
+        let mass = self.particle_mass();
         let s = &mut self.scratch;
         s.gradient_bits = row_sums::gradient_sums(&s.fluid, &mut s.delta, &mut s.rate);
         s.factor.clear();
@@ -125,8 +133,17 @@ impl<R: Real> FluidSystem<R> {
             for g in s.walls.range(i).map(|e| s.walls.gradient(e)) {
                 wall += g;
             }
+            if s.bodies.active {
+                let lists = &s.bodies.lists;
+                for g in lists.range(i).map(|e| lists.gradient(e)) {
+                    wall += g;
+                }
+            }
             s.wall_gradient.push(wall);
-            let d = ((sum + wall).length_squared() + squares).max(floor);
+            let mut d = ((sum + wall).length_squared() + squares).max(floor);
+            if s.bodies.active {
+                d += s.bodies.mobility(i, self.positions[i], mass);
+            }
             s.factor.push(inv_dt / (dt * d));
         }
     }
@@ -142,11 +159,14 @@ impl<R: Real> FluidSystem<R> {
         for (i, &vi) in self.velocities.iter().enumerate() {
             // Away from the walls (most of the fluid) the wall term is zero.
             let wall = s.wall_gradient[i];
-            let walls = if wall == Vec3::ZERO {
+            let mut walls = if wall == Vec3::ZERO {
                 R::ZERO
             } else {
                 vi.dot(wall)
             };
+            if s.bodies.active {
+                walls -= s.bodies.rate[i];
+            }
             let change = (s.rate[i] + walls) * dt;
             let error = match solve {
                 Solve::DivergenceFree => change,
@@ -162,6 +182,7 @@ impl<R: Real> FluidSystem<R> {
 
     /// vᵢ ← vᵢ − Δt (Σⱼ (kᵢ + kⱼ) V₀∇Wᵢⱼ + Σ_b kᵢ V₀∇W_ib), Jacobi.
     fn correct_velocities(&mut self, dt: R) {
+        let mass = self.particle_mass();
         let s = &mut self.scratch;
         row_sums::pressure_pushes(&s.fluid, s.gradient_bits, &s.scalar, &mut s.delta);
         for (i, v) in self.velocities.iter_mut().enumerate() {
@@ -172,6 +193,9 @@ impl<R: Real> FluidSystem<R> {
                 s.delta[i] + wall * s.scalar[i]
             };
             *v -= push * dt;
+        }
+        if s.bodies.active {
+            s.bodies.push_iteration(&s.scalar, mass * dt);
         }
     }
 }

@@ -8,7 +8,8 @@
 //!    (`u32`), tank min and max, the kernel's H, 1/H, c_w, c_g and D₀, and the stiffness
 //!    c²/7; then, only
 //!    when the substeps adapt (a CFL number other than 0, which fluids recorded before it
-//!    existed do not have), the CFL number;
+//!    existed do not have), the CFL number; then, only when the fluid meets rigid bodies,
+//!    their filter's layers and mask (`u32`);
 //! 2. the particle count (`u64`), then each particle by id: position, velocity;
 //! 3. the emitter count (`u64`), then each emitter in scene order: position, velocity,
 //!    speed, direction, width (`u32`), remaining (`u32`), distance travelled.
@@ -44,6 +45,10 @@ impl<R: Real> FluidSystem<R> {
         h.write_real(s.stiffness);
         if s.cfl != R::ZERO {
             h.write_real(s.cfl);
+        }
+        if let Some(filter) = s.bodies {
+            h.write_u32(filter.layers);
+            h.write_u32(filter.mask);
         }
         h.write_len(self.positions.len());
         for (x, v) in self.positions.iter().zip(&self.velocities) {

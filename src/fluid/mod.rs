@@ -19,7 +19,7 @@
 //! Dynamics: [`emitter`] nozzles · [`density`] kernel sums · [`wcsph`] Tait pressure ·
 //! [`dfsph`] the divergence-free and constant-density solves and [`row_sums`] their sums over the
 //! neighbours · [`xsph`] velocity smoothing · [`boundary`] the
-//! tank's boundary particles and walls.
+//! tank's boundary particles and walls · [`bodies`] rigid bodies in the fluid, two-way.
 //!
 //! # Determinism
 //!
@@ -28,6 +28,7 @@
 //! order, and every solver pass is Jacobi (reads the previous pass only), so results do
 //! not depend on anything but the state.
 
+pub(crate) mod bodies;
 mod boundary;
 mod build;
 mod density;
@@ -49,7 +50,7 @@ mod system;
 mod wcsph;
 mod xsph;
 
-pub use desc::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
+pub use desc::{FluidBlock, FluidBodiesDesc, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 pub use emitter::EmitterState;
 pub use kernel::Kernel;
 pub use metrics::FluidMetrics;

@@ -136,6 +136,32 @@ impl<R: Real> NeighbourLists<R> {
         }
     }
 
+    /// [`NeighbourLists::build_scalar`] for the queries that `wanted` accepts; the others
+    /// get empty rows without a search (the particles far from every rigid body).
+    pub fn build_where(
+        &mut self,
+        queries: &[Vec3<R>],
+        points: &[Vec3<R>],
+        grid: &CellGrid<R>,
+        kernel: &Kernel<R>,
+        wanted: impl Fn(Vec3<R>) -> bool,
+    ) {
+        self.clear();
+        let span = grid.span(kernel.support);
+        for &xi in queries {
+            if wanted(xi) {
+                grid.for_each_within(xi, kernel.inv_support, span, |candidates| {
+                    for &j in candidates {
+                        if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
+                            self.push(j, value, gradient);
+                        }
+                    }
+                });
+            }
+            self.start.push(self.index.len() as u32);
+        }
+    }
+
     /// Empties the lists, leaving the start of the first row.
     fn clear(&mut self) {
         self.start.clear();

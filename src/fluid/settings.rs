@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 use super::desc::{FluidBox, FluidSolver};
 use super::kernel::Kernel;
 use crate::math::{Fx, Real};
+use crate::rigid::CollisionFilter;
 
 /// The compiled settings of a fluid: the description's values and the constants derived
 /// from them once.
@@ -39,4 +40,6 @@ pub struct FluidSettings<R: Real = Fx> {
     pub kernel: Kernel<R>,
     /// Tait stiffness over rest density, B/ρ₀ = c²/7, m²/s².
     pub stiffness: R,
+    /// The layers of the rigid bodies the fluid meets, if it meets any.
+    pub bodies: Option<CollisionFilter>,
 }

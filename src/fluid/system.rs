@@ -2,6 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::bodies::{BodiesInFluid, BodyView, FluidPushes};
 use super::boundary::{advect, sample_walls};
 use super::desc::FluidSolver;
 use super::emitter::EmitterState;
@@ -86,6 +87,8 @@ pub(crate) struct Scratch<R: Real> {
     pub last_iterations: u32,
     /// Substeps of the last step, for reports.
     pub last_substeps: u32,
+    /// The rigid bodies in the fluid, when it meets them.
+    pub bodies: BodiesInFluid<R>,
 }
 
 impl<R: Real> Clone for Scratch<R> {
@@ -156,27 +159,77 @@ impl<R: Real> FluidSystem<R> {
     /// [`FluidSettings::substeps`] equal substeps, or with a CFL number as many as the flow
     /// needs ([`substeps`](super::substeps)).
     pub fn step(&mut self, dt: R, gravity: Vec3<R>) {
+        let substeps = self.begin_step(dt, gravity);
+        let h = dt * R::from_ratio(1, i64::from(substeps));
+        for _ in 0..substeps {
+            self.substep_with_bodies(h, gravity, &[]);
+        }
+    }
+
+    /// Starts a step of `dt` seconds under `gravity`: readies the scratch and returns the
+    /// substeps it takes, each of `dt`/substeps seconds.
+    pub(crate) fn begin_step(&mut self, dt: R, gravity: Vec3<R>) -> u32 {
         self.prepare();
         self.scratch.last_iterations = 0;
         let substeps = self.substep_count(dt, gravity);
         self.scratch.last_substeps = substeps;
-        let h = dt * R::from_ratio(1, i64::from(substeps));
-        for _ in 0..substeps {
-            for emitter in &mut self.emitters {
-                let spacing = self.settings.spacing;
-                emitter.emit(h, spacing, &mut self.positions, &mut self.velocities);
-            }
-            if self.positions.is_empty() {
-                continue;
-            }
+        substeps
+    }
+
+    /// One substep of `h` seconds with the rigid bodies of `views` in the fluid, two-way
+    /// ([`bodies`](super::bodies)): emit, neighbours, the bodies' samples, density, solve,
+    /// advect. Returns, per view, the impulse (N·s) and moment about its centre (N·m·s)
+    /// the fluid gave it, and how far those moved (m) and turned it (rotation vector, rad).
+    pub(crate) fn substep_with_bodies(
+        &mut self,
+        h: R,
+        gravity: Vec3<R>,
+        views: &[BodyView<'_, R>],
+    ) -> FluidPushes<'_, R> {
+        self.scratch.bodies.begin(views);
+        for emitter in &mut self.emitters {
+            let spacing = self.settings.spacing;
+            emitter.emit(h, spacing, &mut self.positions, &mut self.velocities);
+        }
+        if !self.positions.is_empty() {
             self.find_neighbours(h);
+            if !views.is_empty() {
+                self.place_bodies(views);
+            }
             self.compute_density();
             match self.settings.solver {
                 FluidSolver::Wcsph => self.wcsph_velocities(h, gravity),
                 FluidSolver::Dfsph => self.dfsph_velocities(h, gravity),
             }
             advect(&self.settings, &mut self.positions, &mut self.velocities, h);
+            if !views.is_empty() {
+                self.scratch.bodies.drift(h);
+            }
         }
+        let bodies = &self.scratch.bodies;
+        FluidPushes {
+            pushes: &bodies.pushes,
+            drifts: &bodies.drifts,
+        }
+    }
+
+    /// Places the samples of `views` and lists them as the particles' neighbours.
+    fn place_bodies(&mut self, views: &[BodyView<'_, R>]) {
+        let s = &self.settings;
+        let margin = s.spacing * R::from_int(lattice_reach(s.support) + 1);
+        let bounds = (
+            s.tank.min - Vec3::splat(margin),
+            s.tank.max + Vec3::splat(margin),
+        );
+        self.scratch
+            .bodies
+            .place(views, &self.positions, bounds, &s.kernel, s.spacing);
+    }
+
+    /// The mass of a fluid particle, ρ₀V₀ (kg).
+    pub(crate) fn particle_mass(&self) -> R {
+        let dx = self.settings.spacing;
+        self.settings.rest_density * dx * dx * dx
     }
 
     /// Builds the boundary particles and grids when the scratch does not have them.

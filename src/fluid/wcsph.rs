@@ -8,6 +8,9 @@
 //! aᵢ = g − Σⱼ (P̃ᵢ/ρ̃ᵢ² + P̃ⱼ/ρ̃ⱼ² − α c min(vᵢⱼ·dᵢⱼ, 0)) V₀∇ᵢWᵢⱼ
 //!        − Σ_b (P̃ᵢ/ρ̃ᵢ² − α c min(vᵢ·d_ib, 0)) V₀∇ᵢW_ib,
 //!
+//! (and the same over the rigid bodies' samples, with their volumes and velocities:
+//! [`bodies`](super::bodies)),
+//!
 //! the symmetric SPH pressure gradient with ρ̃ = ρ/ρ₀ and, against boundary particles,
 //! Akinci et al.'s (2012) one-sided term, plus Monaghan's
 //! artificial viscosity on approaching pairs (vᵢⱼ = vᵢ − vⱼ, dᵢⱼ = (xᵢ − xⱼ)/H), with his
@@ -36,6 +39,8 @@ impl<R: Real> FluidSystem<R> {
         }
         let damping = self.settings.viscosity * self.settings.speed_of_sound;
         let inv_support = self.settings.kernel.inv_support;
+        let mass = self.particle_mass();
+        let s = &mut self.scratch;
         s.delta.clear();
         let boundary = &s.boundary;
         for i in 0..self.positions.len() {
@@ -53,6 +58,16 @@ impl<R: Real> FluidSystem<R> {
                 let d = (xi - boundary[b]) * inv_support;
                 let approach = vi.dot(d).min(R::ZERO);
                 push += s.walls.gradient(e) * (si - damping * approach);
+            }
+            if s.bodies.active {
+                let bodies = &mut s.bodies;
+                for e in bodies.lists.range(i) {
+                    let d = (xi - bodies.point(e)) * inv_support;
+                    let approach = (vi - bodies.velocity(e)).dot(d).min(R::ZERO);
+                    let term = bodies.lists.gradient(e) * (si - damping * approach);
+                    push += term;
+                    bodies.push(e, term * (mass * dt));
+                }
             }
             s.delta.push((gravity - push) * dt);
         }

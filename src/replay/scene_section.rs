@@ -36,12 +36,13 @@
 //! [`SoftBodyFields`]: all but the ties to and contacts with rigid bodies), and a scene
 //! whose soft bodies have either adds [`Addition::SoftCoupling`]: per such body, by index
 //! in ascending order, its ties and contacts, never both absent, never naming a body that
-//! does not exist.
+//! does not exist. A fluid that meets rigid bodies adds [`Addition::FluidBodies`] with
+//! their filter, never without a fluid.
 
 use serde::{Deserialize, Serialize};
 
 use crate::codec::{self, CodecError};
-use crate::fluid::{FluidBlock, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
+use crate::fluid::{FluidBlock, FluidBodiesDesc, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{
     CollisionDesc, EmitterDesc, ForceDesc, Integrator, ParticleDesc, ParticleTemplate,
@@ -152,6 +153,8 @@ enum Addition<R: Real> {
     ParticleCollisions(Vec<CollisionDesc<R>>),
     /// The soft bodies tied to or touching rigid bodies, when there are any.
     SoftCoupling(Vec<SoftCoupling<R>>),
+    /// The layers of the rigid bodies the fluid meets, when it meets any.
+    FluidBodies(CollisionFilter),
 }
 
 /// [`SoftDesc`]'s fields as snapshot format 9 wrote them, with its bodies as
@@ -399,6 +402,7 @@ impl<R: Real> Addition<R> {
             Self::RigidBullets(..) => 8,
             Self::ParticleCollisions(_) => 9,
             Self::SoftCoupling(_) => 10,
+            Self::FluidBodies(_) => 11,
         }
     }
 }
@@ -585,6 +589,9 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     {
         additions.push(Addition::SoftCoupling(coupling));
     }
+    if let Some(bodies) = scene.fluid.as_ref().and_then(|f| f.bodies) {
+        additions.push(Addition::FluidBodies(bodies.filter));
+    }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
     }
@@ -757,6 +764,15 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                     body.body_attachments = c.attachments;
                     body.body_contacts = c.contacts;
                 }
+            }
+            Addition::FluidBodies(filter) => {
+                let Some(fluid) = &mut scene.fluid else {
+                    return Err((
+                        used,
+                        SceneSectionError::NotCanonical("fluid bodies without a fluid"),
+                    ));
+                };
+                fluid.bodies = Some(FluidBodiesDesc { filter });
             }
         }
     }

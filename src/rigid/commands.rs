@@ -172,6 +172,44 @@ impl<R: Real> RigidSystem<R> {
         b.angular_velocity[i] += inv_inertia * moment;
     }
 
+    /// A push from outside the rigid stage (a fluid's pressure over a world substep) on the
+    /// dynamic body in slot `i`: impulse J (N·s) and moment L (N·m·s) about its centre of
+    /// mass, Δv = J/m and Δω = I⁻¹ L when it is awake; on a sleeping body,
+    /// [`push_sleeping_body`](Self::push_sleeping_body)'s rule. Other kinds do not move.
+    pub(crate) fn push_body_about_centre(&mut self, i: usize, impulse: Vec3<R>, moment: Vec3<R>) {
+        let b = &mut self.bodies;
+        if b.kind[i] != BodyKind::Dynamic || !b.alive[i] {
+            return;
+        }
+        if b.asleep[i] {
+            self.push_sleeping_body(i, impulse, moment);
+            return;
+        }
+        b.linear_velocity[i] = b.linear_velocity[i].add_scaled(impulse, b.inv_mass[i]);
+        let inv_inertia = b.orientation[i].to_mat3().rotate_inertia(b.inv_inertia[i]);
+        b.angular_velocity[i] += inv_inertia * moment;
+    }
+
+    /// Moves the awake dynamic body in slot `i` by `displacement` (m) and turns it by the
+    /// rotation vector `rotation` (rad): what a push from outside the rigid stage did to it
+    /// during a world substep whose motion the rigid step had already integrated. Other
+    /// bodies do not move. Returns whether it moved; the caller then updates the query
+    /// index.
+    pub(crate) fn displace_body(
+        &mut self,
+        i: usize,
+        displacement: Vec3<R>,
+        rotation: Vec3<R>,
+    ) -> bool {
+        let b = &mut self.bodies;
+        if !b.is_awake_dynamic(i) || (displacement == Vec3::ZERO && rotation == Vec3::ZERO) {
+            return false;
+        }
+        b.position[i] += displacement;
+        b.orientation[i] = b.orientation[i].integrate(rotation, R::ONE);
+        true
+    }
+
     /// Sets the linear velocity (m/s) of a dynamic or kinematic body.
     fn set_velocity(&mut self, i: usize, velocity: Vec3<R>) {
         if self.bodies.kind[i] == BodyKind::Static {

@@ -144,6 +144,13 @@ impl<R: Real> Scene<R> {
             let bodies = SceneBodies(world.rigid());
             let soft = SoftSystem::from_desc_with_bodies(desc, dt, &bodies)
                 .map_err(|e| e.within("soft"))?;
+            if soft.couples() && self.fluid.as_ref().is_some_and(|f| f.bodies.is_some()) {
+                return Err(SceneError::new(
+                    "soft",
+                    "soft bodies coupled to rigid bodies and a fluid that meets them cannot \
+                     share a scene yet: each steps the rigid bodies at its own rate",
+                ));
+            }
             world.set_soft(soft);
         }
         Ok(world)

@@ -3,6 +3,7 @@
 pub mod checksum;
 pub mod difference;
 pub mod divergence;
+mod fluid_coupling;
 mod particle_coupling;
 mod pipeline;
 mod queries;

@@ -4,6 +4,7 @@ use serde::{Deserialize, Serialize};
 
 use super::checksum::Checksum;
 use super::divergence::{Divergence, DivergenceMonitor};
+use super::fluid_coupling::step_fluid_with_bodies;
 use super::particle_coupling::step_colliding_particles;
 use super::soft_coupling::step_rigid_and_soft;
 use super::stage::StageTimings;
@@ -171,6 +172,26 @@ impl<R: Real> WorldState<R> {
         true
     }
 
+    /// The fluid stage, when the fluid meets the rigid bodies: steps it with them in the
+    /// fluid ([`fluid_coupling`](super::fluid_coupling)) and returns true; otherwise does
+    /// nothing and returns false.
+    fn step_coupled_fluid(&mut self, timings: &mut Option<Box<StageTimings>>, dt: R) -> bool {
+        let (Some(fluid), Some(rigid)) = (&mut self.fluid, &mut self.rigid) else {
+            return false;
+        };
+        let Some(filter) = fluid.settings().bodies else {
+            return false;
+        };
+        step_fluid_with_bodies(
+            fluid,
+            rigid,
+            filter,
+            (&self.settings, &mut self.rng, dt),
+            |stage, f| timed(timings, stage, f),
+        );
+        true
+    }
+
     /// The particle stage, when some particle group collides with the rigid bodies: steps
     /// it with the bodies in view ([`particle_coupling`](super::particle_coupling)) and
     /// returns true; otherwise does nothing and returns false.
@@ -238,7 +259,9 @@ pub struct TickReport {
 ///    substep by substep, the soft step pushing and pushed by the bodies
 ///    ([`soft_coupling`](super::soft_coupling)).
 /// 5. [`Stage::Fluid`]: per substep, the fluid step (emit, neighbours, density, solve,
-///    advect).
+///    advect); a fluid that meets the rigid bodies sees them as sampled boundaries and
+///    pushes them back, the rigid stage then stepping with it at the fluid's substep rate,
+///    each rigid substep before the fluid's ([`fluid_coupling`](super::fluid_coupling)).
 /// 6. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
 ///
 /// A stage whose subsystem is absent from the scene is skipped without a loop or an
@@ -416,11 +439,18 @@ impl<R: Real> World<R> {
             if !state.step_coupled_particles(&mut timings, dt) {
                 state.step_alone(Stage::Particles, &mut timings, dt);
             }
-            if !state.step_coupled_soft(&mut timings, dt, &mut self.proxies) {
-                state.step_alone(Stage::Rigid, &mut timings, dt);
+            if state.step_coupled_fluid(&mut timings, dt) {
+                // The rigid bodies and the fluid alternated at the fluid's substep rate;
+                // the soft bodies follow (a scene does not couple them too: it is refused
+                // when built).
                 state.step_alone(Stage::Soft, &mut timings, dt);
+            } else {
+                if !state.step_coupled_soft(&mut timings, dt, &mut self.proxies) {
+                    state.step_alone(Stage::Rigid, &mut timings, dt);
+                    state.step_alone(Stage::Soft, &mut timings, dt);
+                }
+                state.step_alone(Stage::Fluid, &mut timings, dt);
             }
-            state.step_alone(Stage::Fluid, &mut timings, dt);
             timed(&mut timings, Stage::EndTick, || self.end_tick());
             self.timings = timings;
             ignored

@@ -33,9 +33,10 @@ pub const SNAPSHOT_MAGIC: [u8; 8] = *b"FXSTEPSN";
 /// bodies' collision filters, sensor flags and sensor overlaps, version 7 the bodies' and
 /// templates' bullet flags, version 8 the triangle meshes and heightfields and contact
 /// keys whose parts are 32-bit (a mesh's triangle), version 9 the particle groups'
-/// collisions, version 10 the soft bodies' ties to and contacts with rigid bodies; older
-/// files are refused with a message naming both versions.
-pub const SNAPSHOT_FORMAT_VERSION: u32 = 10;
+/// collisions, version 10 the soft bodies' ties to and contacts with rigid bodies, version
+/// 11 the layers of the rigid bodies a fluid meets; older files are refused with a message
+/// naming both versions.
+pub const SNAPSHOT_FORMAT_VERSION: u32 = 11;
 
 /// Magic, format version and state version.
 const FIXED_PREFIX: usize = 16;

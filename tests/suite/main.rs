@@ -7,6 +7,7 @@
 mod mesh_obj;
 mod property_cases;
 
+mod fluid_bodies;
 mod fluid_dam_break;
 mod fluid_dfsph_large_step;
 mod fluid_kernel;

@@ -341,6 +341,22 @@ fn info_names_the_colliding_particle_groups() {
 }
 
 #[test]
+fn info_names_the_rigid_bodies_the_fluid_meets() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    let run = fixstep(&[
+        "info",
+        root.join("replays/harbour.replay").to_str().expect("UTF-8"),
+    ]);
+    assert_eq!(run.code, 0, "{run:?}");
+    let expected = "meets rigid bodies on layers 0x1 (mask 0x1), two-way";
+    assert!(
+        run.stdout.contains(expected),
+        "{expected:?} in {}",
+        run.stdout
+    );
+}
+
+#[test]
 fn info_names_the_soft_bodies_coupled_to_rigid_bodies() {
     let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
     let run = fixstep(&[

@@ -261,7 +261,8 @@ fn soft_summary(desc: &SoftDesc<Fx>) -> String {
     )
 }
 
-/// Solver, spacing, blocks, emitters and substeps of the scene's fluid.
+/// Solver, spacing, blocks, emitters and substeps of the scene's fluid, and the rigid
+/// bodies it meets.
 fn fluid_summary(desc: &FluidDesc<Fx>) -> String {
     let substeps = if desc.cfl == Fx::ZERO {
         format!("{} substeps", desc.substeps)
@@ -271,8 +272,14 @@ fn fluid_summary(desc: &FluidDesc<Fx>) -> String {
             desc.cfl, desc.substeps
         )
     };
+    let bodies = desc.bodies.map_or_else(String::new, |b| {
+        format!(
+            "; meets rigid bodies on layers {:#x} (mask {:#x}), two-way",
+            b.filter.layers, b.filter.mask
+        )
+    });
     format!(
-        "{:?}, spacing {} m, {} blocks, {} emitters, {substeps}",
+        "{:?}, spacing {} m, {} blocks, {} emitters, {substeps}{bodies}",
         desc.solver,
         desc.spacing,
         desc.blocks.len(),

@@ -43,6 +43,7 @@ pub(crate) use self::index::QueryIndex;
 pub(crate) use self::moving_point::BodiesInMotion;
 use self::overlap::shapes_overlap;
 use self::point::project_point;
+pub(crate) use self::point::shape_contains;
 use self::ray::{BoxProbe, Crossing, Ray, ray_shape};
 pub(crate) use self::shape_cast::{CastHit, cast_shape, cast_tolerance, sweep_shape};
 use super::aabb::Aabb;

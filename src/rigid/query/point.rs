@@ -45,6 +45,13 @@ pub(super) fn project_point<R: Real>(
     })
 }
 
+/// Whether the point `p` (m, in the shape's own frame) lies in `shape`, taken as solid,
+/// surface included: [`project_point`]'s `inside` (never for a mesh or a heightfield, which
+/// are surfaces).
+pub(crate) fn shape_contains<R: Real>(shape: &Shape<R>, p: Vec3<R>) -> bool {
+    project_point(shape, &Transform::IDENTITY, p).inside
+}
+
 /// One convex shape or a plane:
 /// - ball (centre c, radius r): with v = p − c, inside when |v| ≤ r, else the point
 ///   c + v·r/|v| at distance |v| − r;
