@@ -9,6 +9,7 @@ pub mod debris;
 pub mod flag;
 pub mod fluid;
 pub mod game;
+pub mod harbour;
 pub mod joints;
 pub mod particles;
 pub mod rigid;
@@ -20,7 +21,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 26] = [
+pub const BUILTIN_SCENES: [(&str, &str); 27] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -57,6 +58,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 26] = [
     (
         "flag",
         "a flag tied to the pole of a turning carousel sweeps into a crate swinging on a rope: cloth and rope push and are pushed by rigid bodies",
+    ),
+    (
+        "harbour",
+        "a turning paddle makes waves in a water tank: boxes and balls float and bob, a heavy crate sinks; the water pushes and is pushed by rigid bodies",
     ),
     (
         "balls",
@@ -178,6 +183,11 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.rigid = Some(flag::flag_bodies());
             scene.soft = Some(flag::flag_cloth());
             scene.ticks = 600;
+        }
+        "harbour" => {
+            scene.rigid = Some(harbour::harbour_bodies());
+            scene.fluid = Some(harbour::harbour_water());
+            scene.ticks = 180;
         }
         "balls" => {
             scene.rigid = Some(rigid::balls(16));
