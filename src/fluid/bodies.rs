@@ -31,6 +31,8 @@
 //!   moving) took twice the push it needed and chattered at 0.1 m/s. In each particle's
 //!   factor the body counts with its mass shared among the particles touching it
 //!   ([`BodiesInFluid::mobility`]), so the iterations do not overshoot.
+//! - XSPH smoothing (both solvers): vᵢ += ε Σ_b V₀W_ib (v_b − vᵢ), the body taking the
+//!   opposite momentum: the water's friction on it ([`BodiesInFluid::drag`]).
 //!
 //! The pushes of a substep are summed into an impulse and a moment about the body's
 //! centre, and the drift they caused over the substep (h J/m, h I⁻¹L), which the world
@@ -313,7 +315,24 @@ impl<R: Real> BodiesInFluid<R> {
         self.compression_rates(stiffness.len());
     }
 
-    /// Σ_b v_b·γ_b V₀∇W_ib of each fluid particle into `rate` (DFSPH).
+    /// The bodies' share of XSPH smoothing, the water's friction on them: adds
+    /// Σ_b V₀W_ib (v_b − vᵢ) (m/s) to each fluid particle's `sums` (before they are scaled
+    /// by ε), and gives each body the opposite of the change ε Σ_b V₀W_ib (v_b − vᵢ) of a
+    /// particle of mass m at the sample, `scale` = m ε (kg); then the samples' velocities
+    /// and the compression rates follow.
+    pub fn drag(&mut self, velocities: &[Vec3<R>], sums: &mut [Vec3<R>], scale: R) {
+        for (i, (&vi, sum)) in velocities.iter().zip(sums.iter_mut()).enumerate() {
+            for e in self.lists.range(i) {
+                let pull = (self.velocity(e) - vi) * self.lists.value[e];
+                *sum += pull;
+                self.push(e, pull * -scale);
+            }
+        }
+        self.update_velocities();
+        self.compression_rates(velocities.len());
+    }
+
+    /// Σ_b v_b·V₀∇W_ib of each fluid particle into `rate` (DFSPH).
     pub fn compression_rates(&mut self, particles: usize) {
         self.rate.clear();
         for i in 0..particles {

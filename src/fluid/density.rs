@@ -5,7 +5,7 @@ use crate::math::Real;
 
 impl<R: Real> FluidSystem<R> {
     /// Stage 3: ρᵢ/ρ₀ = V₀W(0) + Σⱼ V₀Wᵢⱼ + Σ_b V₀W_ib over fluid neighbours j and boundary
-    /// neighbours b (dimensionless; 1 inside the fluid at rest), and + Σ_b γ_b V₀W_ib over
+    /// neighbours b (dimensionless; 1 inside the fluid at rest), and + Σ_b V₀W_ib over
     /// the rigid bodies' samples ([`bodies`](super::bodies)). V₀W(0) = c_w.
     pub(crate) fn compute_density(&mut self) {
         let s = &mut self.scratch;
