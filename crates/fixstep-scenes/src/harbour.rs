@@ -127,7 +127,8 @@ pub fn harbour_bodies<R: Real>() -> RigidDesc<R> {
 /// The water: DFSPH, 2.5 cm spacing, 12.5 cm deep over the whole tank (1200 particles),
 /// meeting the bodies on the floating layer. Its flow stays below 0.5 m/s, so the speed of
 /// sound is 5 m/s (DFSPH's time-step limit takes a tenth of it as the fastest flow) and two
-/// fluid substeps per step keep within that limit.
+/// fluid substeps per step keep within that limit. The density tolerance is 0.2 % (at the
+/// default 0.05 % a solve took about 28 iterations instead of 16).
 pub fn harbour_water<R: Real>() -> FluidDesc<R> {
     let size = tank_size::<R>();
     let tank = FluidBox {
