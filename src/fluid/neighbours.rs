@@ -119,21 +119,7 @@ impl<R: Real> NeighbourLists<R> {
         kernel: &Kernel<R>,
         skip_self: bool,
     ) {
-        self.clear();
-        let span = grid.span(kernel.support);
-        for (i, &xi) in queries.iter().enumerate() {
-            grid.for_each_within(xi, kernel.inv_support, span, |candidates| {
-                for &j in candidates {
-                    if skip_self && j as usize == i {
-                        continue;
-                    }
-                    if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
-                        self.push(j, value, gradient);
-                    }
-                }
-            });
-            self.start.push(self.index.len() as u32);
-        }
+        self.search(queries, (points, grid), kernel, skip_self, |_| true);
     }
 
     /// [`NeighbourLists::build_scalar`] for the queries that `wanted` accepts; the others
@@ -146,12 +132,28 @@ impl<R: Real> NeighbourLists<R> {
         kernel: &Kernel<R>,
         wanted: impl Fn(Vec3<R>) -> bool,
     ) {
+        self.search(queries, (points, grid), kernel, false, wanted);
+    }
+
+    /// The scalar search behind both: each query `wanted` accepts looks through the cells
+    /// of `grid` around it (skipping itself when `skip_self`); every query gets a row.
+    fn search(
+        &mut self,
+        queries: &[Vec3<R>],
+        (points, grid): (&[Vec3<R>], &CellGrid<R>),
+        kernel: &Kernel<R>,
+        skip_self: bool,
+        wanted: impl Fn(Vec3<R>) -> bool,
+    ) {
         self.clear();
         let span = grid.span(kernel.support);
-        for &xi in queries {
+        for (i, &xi) in queries.iter().enumerate() {
             if wanted(xi) {
                 grid.for_each_within(xi, kernel.inv_support, span, |candidates| {
                     for &j in candidates {
+                        if skip_self && j as usize == i {
+                            continue;
+                        }
                         if let Some((value, gradient)) = kernel.evaluate(xi - points[j as usize]) {
                             self.push(j, value, gradient);
                         }
