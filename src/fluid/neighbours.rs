@@ -20,7 +20,7 @@ mod tests;
 
 use super::grid::CellGrid;
 use super::kernel::Kernel;
-use crate::math::{Real, Vec3};
+use crate::math::{OverReal, Real, Vec3};
 
 /// Neighbours of each fluid particle among one set of points (fluid or boundary).
 #[derive(Clone, Debug, Default)]
@@ -34,6 +34,14 @@ pub struct NeighbourLists<R: Real> {
     /// V₀∇ᵢW of each pair, 1/m, by component (x, y, z): structure of arrays, which the
     /// vector kernels of [`row_sums`](super::row_sums) load as it is.
     pub gradients: [Vec<R>; 3],
+}
+
+/// The family of [`NeighbourLists`] over the scalar formats, for
+/// [`Real::as_fixed`](crate::math::Real::as_fixed).
+pub(crate) struct Lists;
+
+impl OverReal for Lists {
+    type Of<R: Real> = NeighbourLists<R>;
 }
 
 impl<R: Real> NeighbourLists<R> {

@@ -17,8 +17,8 @@
 //! # Same bits
 //!
 //! In fixed point a sum of already-rounded terms is exact whatever its order unless a
-//! partial sum leaves the range. The AVX-512 kernel ([`avx512`], I32F32 on x86-64 when the
-//! processor has AVX-512F) computes every product rounded exactly as the checked `*`, and
+//! partial sum leaves the range. The vector kernel ([`kernel`], I32F32 on x86-64 with AVX-512
+//! or AVX2, through the lanes of [`wide`](crate::math::wide)) computes every product rounded exactly as the checked `*`, and
 //! sums eight entries side by side, then the lanes. It measures the bit lengths of what it
 //! reads (gradients, velocities or stiffnesses) and the longest row, and its result stands
 //! only when those bounds prove that no product and no partial sum, in any order, can leave
@@ -33,11 +33,13 @@
 //! from there.
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 #[cfg(test)]
 mod tests;
 
-use super::neighbours::NeighbourLists;
+use super::neighbours::{Lists, NeighbourLists};
+#[cfg(target_arch = "x86_64")]
+use crate::math::over_real::{ScalarVec, Scalars, VectorVec, Vectors};
 use crate::math::{Real, Vec3};
 
 /// The bit length A of the largest gradient component of a set of lists (|V₀∇W| ≤ 2ᴬ as
@@ -59,7 +61,13 @@ pub(crate) fn density_rates<R: Real>(
 ) {
     #[cfg(target_arch = "x86_64")]
     if let GradientBits(Some(bits)) = gradients
-        && avx512::density_rates(lists, bits, velocities, out)
+        && let Some(backend) = crate::math::wide::backend()
+        && let (Some(lists), Some(velocities), Some(out)) = (
+            R::as_fixed::<Lists>(lists),
+            R::as_fixed::<Vectors>(velocities),
+            R::as_fixed_mut::<ScalarVec>(out),
+        )
+        && kernel::density_rates(backend, lists, bits, velocities, out)
     {
         return;
     }
@@ -96,7 +104,13 @@ pub(crate) fn pressure_pushes<R: Real>(
 ) {
     #[cfg(target_arch = "x86_64")]
     if let GradientBits(Some(bits)) = gradients
-        && avx512::pressure_pushes(lists, bits, stiffness, out)
+        && let Some(backend) = crate::math::wide::backend()
+        && let (Some(lists), Some(stiffness), Some(out)) = (
+            R::as_fixed::<Lists>(lists),
+            R::as_fixed::<Scalars>(stiffness),
+            R::as_fixed_mut::<VectorVec>(out),
+        )
+        && kernel::pressure_pushes(backend, lists, bits, stiffness, out)
     {
         return;
     }
@@ -132,7 +146,15 @@ pub(crate) fn smoothing_sums<R: Real>(
     out: &mut Vec<Vec3<R>>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if avx512::smoothing_sums(lists, velocities, inv_density, out) {
+    if let Some(backend) = crate::math::wide::backend()
+        && let (Some(lists), Some(velocities), Some(inv_density), Some(out)) = (
+            R::as_fixed::<Lists>(lists),
+            R::as_fixed::<Vectors>(velocities),
+            R::as_fixed::<Scalars>(inv_density),
+            R::as_fixed_mut::<VectorVec>(out),
+        )
+        && kernel::smoothing_sums(backend, lists, velocities, inv_density, out)
+    {
         return;
     }
     smoothing_sums_scalar(lists, velocities, inv_density, out);
@@ -166,18 +188,21 @@ pub(crate) fn gradient_sums<R: Real>(
     squares: &mut Vec<R>,
 ) -> GradientBits {
     #[cfg(target_arch = "x86_64")]
+    if let Some(backend) = crate::math::wide::backend()
+        && let (Some(fixed_lists), Some(fixed_sums), Some(fixed_squares)) = (
+            R::as_fixed::<Lists>(lists),
+            R::as_fixed_mut::<VectorVec>(sums),
+            R::as_fixed_mut::<ScalarVec>(squares),
+        )
     {
-        let (stands, bits) = avx512::gradient_sums(lists, sums, squares);
+        let (stands, bits) = kernel::gradient_sums(backend, fixed_lists, fixed_sums, fixed_squares);
         if !stands {
             gradient_sums_scalar(lists, sums, squares);
         }
-        GradientBits(bits)
+        return GradientBits(bits);
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        gradient_sums_scalar(lists, sums, squares);
-        GradientBits(None)
-    }
+    gradient_sums_scalar(lists, sums, squares);
+    GradientBits(None)
 }
 
 /// [`gradient_sums`] with the checked operators, entry after entry.

@@ -66,6 +66,13 @@ pub(crate) fn avx512dq() -> bool {
     cap() >= SimdCap::Avx512 && std::arch::is_x86_feature_detected!("avx512dq")
 }
 
+/// Whether the kernels may use the AVX-512 backend of [`wide`](super::wide): AVX-512F and
+/// DQ.
+#[cfg(target_arch = "x86_64")]
+pub(crate) fn avx512_kernels() -> bool {
+    avx512f() && avx512dq()
+}
+
 /// Whether the kernels may use AVX2.
 #[cfg(target_arch = "x86_64")]
 pub(crate) fn avx2() -> bool {

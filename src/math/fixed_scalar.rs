@@ -24,20 +24,61 @@ use core::marker::PhantomData;
 use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 use fixed::FixedI64;
-use fixed::types::extra::{LeEqU64, U16, U24, U32};
+use fixed::types::extra::*;
 use serde::de::{self, Deserializer, Visitor};
 use serde::{Deserialize, Serialize, Serializer};
 
 use super::guarded::{Fraction, Guard};
+use super::over_real::OverReal;
 use super::real::{ParseRealError, Real};
 use super::saturation::{record_saturation, saturate_i128};
 use super::{exp, sqrt, trig};
 
 /// The fractional-bit count of a [`Fixed`] type: a `typenum` unsigned from the `fixed`
-/// crate (`U16`, `U24`, `U32`, …).
-pub trait FracBits: LeEqU64 + Send + Sync + 'static {}
+/// crate (`U16`, `U24`, `U32`, …, up to `U64`).
+pub trait FracBits: LeEqU64 + Send + Sync + 'static {
+    /// [`Real::as_fixed`] for [`Fixed<Self>`]: the identity for `U32` (I32F32), `None`
+    /// otherwise.
+    fn as_fixed<T: OverReal>(x: &T::Of<Fixed<Self>>) -> Option<&T::Of<Fx>>;
 
-impl<T: LeEqU64 + Send + Sync + 'static> FracBits for T {}
+    /// [`Real::as_fixed_mut`] for [`Fixed<Self>`].
+    fn as_fixed_mut<T: OverReal>(x: &mut T::Of<Fixed<Self>>) -> Option<&mut T::Of<Fx>>;
+}
+
+impl FracBits for U32 {
+    #[inline(always)]
+    fn as_fixed<T: OverReal>(x: &T::Of<Fx>) -> Option<&T::Of<Fx>> {
+        Some(x)
+    }
+
+    #[inline(always)]
+    fn as_fixed_mut<T: OverReal>(x: &mut T::Of<Fx>) -> Option<&mut T::Of<Fx>> {
+        Some(x)
+    }
+}
+
+/// The formats with no vector kernels.
+macro_rules! without_kernels {
+    ($($frac:ty),*) => {$(
+        impl FracBits for $frac {
+            #[inline(always)]
+            fn as_fixed<T: OverReal>(_: &T::Of<Fixed<Self>>) -> Option<&T::Of<Fx>> {
+                None
+            }
+
+            #[inline(always)]
+            fn as_fixed_mut<T: OverReal>(_: &mut T::Of<Fixed<Self>>) -> Option<&mut T::Of<Fx>> {
+                None
+            }
+        }
+    )*};
+}
+without_kernels!(
+    U0, U1, U2, U3, U4, U5, U6, U7, U8, U9, U10, U11, U12, U13, U14, U15, U16, U17, U18, U19, U20,
+    U21, U22, U23, U24, U25, U26, U27, U28, U29, U30, U31, U33, U34, U35, U36, U37, U38, U39, U40,
+    U41, U42, U43, U44, U45, U46, U47, U48, U49, U50, U51, U52, U53, U54, U55, U56, U57, U58, U59,
+    U60, U61, U62, U63, U64
+);
 
 /// A fixed-point number with `Frac::U32` fractional bits in an `i64`. See the module
 /// documentation for the arithmetic policy.
@@ -334,6 +375,16 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
     const MAX: Self = Self::from_bits(i64::MAX);
     const MIN: Self = Self::from_bits(i64::MIN);
     const EPSILON: Self = Self::from_bits(1);
+
+    #[inline(always)]
+    fn as_fixed<T: OverReal>(x: &T::Of<Self>) -> Option<&T::Of<Fx>> {
+        Frac::as_fixed::<T>(x)
+    }
+
+    #[inline(always)]
+    fn as_fixed_mut<T: OverReal>(x: &mut T::Of<Self>) -> Option<&mut T::Of<Fx>> {
+        Frac::as_fixed_mut::<T>(x)
+    }
 
     #[inline]
     fn from_int(value: i32) -> Self {

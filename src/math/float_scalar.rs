@@ -8,6 +8,8 @@
 
 use core::cmp::Ordering;
 
+use super::Fx;
+use super::over_real::OverReal;
 use super::real::{ParseRealError, Real};
 
 impl Real for f64 {
@@ -22,6 +24,16 @@ impl Real for f64 {
     const MAX: Self = f64::MAX; // ok-det: f64 reference format
     const MIN: Self = f64::MIN; // ok-det: f64 reference format
     const EPSILON: Self = f64::EPSILON; // ok-det: f64 reference format
+
+    #[inline(always)]
+    fn as_fixed<T: OverReal>(_: &T::Of<Self>) -> Option<&T::Of<Fx>> {
+        None
+    }
+
+    #[inline(always)]
+    fn as_fixed_mut<T: OverReal>(_: &mut T::Of<Self>) -> Option<&mut T::Of<Fx>> {
+        None
+    }
 
     #[inline]
     fn from_int(value: i32) -> Self {

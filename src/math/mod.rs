@@ -8,6 +8,7 @@ pub mod float_scalar;
 pub mod guarded;
 pub mod integration;
 pub mod mat3;
+pub mod over_real;
 pub mod quat;
 pub mod real;
 pub mod rng;
@@ -17,10 +18,13 @@ pub mod sqrt;
 pub mod state_hash;
 pub mod trig;
 pub mod vec3;
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod wide;
 
 pub use fixed_scalar::{Fixed, FracBits, Fx, FxI32F32, FxI40F24, FxI48F16};
 pub use guarded::{Fraction, Guard};
 pub use mat3::Mat3;
+pub use over_real::OverReal;
 pub use quat::Quat;
 pub use real::{ParseRealError, Real};
 pub use rng::Pcg32;

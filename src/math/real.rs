@@ -13,7 +13,9 @@ use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAss
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
+use super::Fx;
 use super::guarded::{Fraction, Guard};
+use super::over_real::OverReal;
 
 /// A scalar number format.
 ///
@@ -65,6 +67,15 @@ pub trait Real:
     const MIN: Self;
     /// The smallest positive value (one ulp for fixed point).
     const EPSILON: Self;
+
+    /// `x` as the I32F32 member of its family ([`OverReal`]) when this format is I32F32
+    /// ([`Fx`]), `None` for every other: how a subsystem reaches the vector kernels, which
+    /// compute on I32F32 bits, decided at compile time (the other formats compile only the
+    /// plain path). See [`over_real`](super::over_real).
+    fn as_fixed<T: OverReal>(x: &T::Of<Self>) -> Option<&T::Of<Fx>>;
+
+    /// [`as_fixed`](Self::as_fixed) for a mutable member.
+    fn as_fixed_mut<T: OverReal>(x: &mut T::Of<Self>) -> Option<&mut T::Of<Fx>>;
 
     /// Exact conversion of a small integer.
     fn from_int(value: i32) -> Self;

@@ -54,7 +54,8 @@ use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
 use crate::fluid::grid::CellGrid;
 use crate::fluid::kernel::Kernel;
-use crate::fluid::lanes::{mul, product, vector_bits};
+use crate::fluid::lanes::{mul, product};
+use crate::math::wide::vector_bits;
 use crate::math::{Fx, Real, Vec3};
 use crate::soft::lanes::gather3;
 
@@ -209,8 +210,7 @@ fn admit<'a, R: Real>(
             &*(core::ptr::from_ref(points) as *const [Vec3<Fx>]),
         )
     };
-    // SAFETY: AVX-512F was detected above.
-    let coordinate_bits = unsafe { vector_bits(queries).max(vector_bits(points)) };
+    let coordinate_bits = vector_bits(queries).max(vector_bits(points));
     let within = |value: Fx, bits: u32| 0 < value.to_bits() && value.to_bits() < 1 << bits;
     if coordinate_bits > 60
         || !within(radius, 31)

@@ -1,6 +1,6 @@
-//! The row sums' dispatch (the AVX-512 kernel where it runs) against the scalar form, bit
-//! for bit and saturation for saturation, on random rows at everyday magnitudes, near the
-//! kernel's bound and at the ends of the range.
+//! The row sums' dispatch against the scalar form, with every backend of the kernels this
+//! processor runs and with none, bit for bit and saturation for saturation, on random rows
+//! at everyday magnitudes, near the kernel's bound and at the ends of the range.
 
 use super::{
     GradientBits, density_rates, density_rates_scalar, gradient_sums, gradient_sums_scalar,
@@ -67,10 +67,41 @@ fn lists(
     lists
 }
 
-/// Compares the four sums on one random case (inverse densities of the stiffnesses' bits);
-/// returns whether the dispatched results came from the kernels (where they exist) rather
-/// than from the scalar fallback.
+/// Runs `f` with each backend of the kernels this processor runs, then with none.
+fn each_backend(mut f: impl FnMut()) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use crate::math::wide::{backends, with_backend};
+        for backend in backends() {
+            with_backend(Some(backend), &mut f);
+        }
+        with_backend(None, f);
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    f();
+}
+
+/// Compares the four sums on one random case (inverse densities of the stiffnesses' bits)
+/// with every backend; returns whether the dispatched results came from the kernels (where
+/// they exist) rather than from the scalar fallback, which must be the same answer for
+/// every backend.
 fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) -> bool {
+    let mut taken = None;
+    each_backend(|| {
+        let now = compare_once(seed, n, longest, bits, extremes);
+        if kernels_present() {
+            assert!(
+                taken.is_none_or(|t| t == now),
+                "seed {seed}: backends disagree"
+            );
+            taken = Some(now);
+        }
+    });
+    taken.unwrap_or(false)
+}
+
+/// [`compare`] with the backend in force.
+fn compare_once(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) -> bool {
     let mut rng = Pcg32::new(seed, 7);
     let lists = lists(&mut rng, n, longest, bits[0], extremes);
     let velocities: Vec<_> = (0..n)
@@ -128,18 +159,23 @@ fn compare(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: bool) ->
     kernel_takes(&lists, &velocities, &stiffness)
 }
 
-/// Whether the four kernels take the case (not falling back to the scalar form).
+/// Whether the four kernels of the backend in force take the case (not falling back to the
+/// scalar form).
 #[cfg(target_arch = "x86_64")]
 fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: &[Fx]) -> bool {
+    use super::kernel;
+    let Some(backend) = crate::math::wide::backend() else {
+        return false;
+    };
     let (gradients_stand, Some(bits)) =
-        super::avx512::gradient_sums(lists, &mut Vec::new(), &mut Vec::new())
+        kernel::gradient_sums(backend, lists, &mut Vec::new(), &mut Vec::new())
     else {
         return false;
     };
     let takes = [
-        super::avx512::density_rates(lists, bits, velocities, &mut Vec::new()),
-        super::avx512::pressure_pushes(lists, bits, stiffness, &mut Vec::new()),
-        super::avx512::smoothing_sums(lists, velocities, stiffness, &mut Vec::new()),
+        kernel::density_rates(backend, lists, bits, velocities, &mut Vec::new()),
+        kernel::pressure_pushes(backend, lists, bits, stiffness, &mut Vec::new()),
+        kernel::smoothing_sums(backend, lists, velocities, stiffness, &mut Vec::new()),
         gradients_stand,
     ];
     takes.iter().all(|&t| t)
@@ -150,10 +186,10 @@ fn kernel_takes(_: &NeighbourLists<Fx>, _: &[Vec3<Fx>], _: &[Fx]) -> bool {
     false
 }
 
-/// Whether this processor runs the kernels.
+/// Whether kernels run with the backend in force.
 fn kernels_present() -> bool {
     #[cfg(target_arch = "x86_64")]
-    return crate::math::cpu::avx512f();
+    return crate::math::wide::backend().is_some();
     #[cfg(not(target_arch = "x86_64"))]
     false
 }
@@ -233,17 +269,21 @@ fn sums_beyond_the_range_fall_back_on_the_measured_gradients() {
     let mut stiffness = vec![Fx::ZERO; 9];
     stiffness[0] = Fx::from_bits(1 << 42);
 
-    let gradients = gradient_sums(&lists, &mut Vec::new(), &mut Vec::new());
+    each_backend(|| beyond_the_range(&lists, &velocities, &stiffness));
+}
+
+fn beyond_the_range(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: &[Fx]) {
+    let gradients = gradient_sums(lists, &mut Vec::new(), &mut Vec::new());
     let mut rates = [Vec::new(), Vec::new()];
     let (_, saturations) =
-        count_saturations(|| density_rates(&lists, gradients, &velocities, &mut rates[0]));
-    density_rates_scalar(&lists, &velocities, &mut rates[1]);
+        count_saturations(|| density_rates(lists, gradients, velocities, &mut rates[0]));
+    density_rates_scalar(lists, velocities, &mut rates[1]);
     assert_eq!(rates[0], rates[1]);
     assert_eq!(rates[0][0], Fx::MAX);
     assert!(saturations > 0);
     let mut pushes = [Vec::new(), Vec::new()];
-    pressure_pushes(&lists, gradients, &stiffness, &mut pushes[0]);
-    pressure_pushes_scalar(&lists, &stiffness, &mut pushes[1]);
+    pressure_pushes(lists, gradients, stiffness, &mut pushes[0]);
+    pressure_pushes_scalar(lists, stiffness, &mut pushes[1]);
     assert_eq!(pushes[0], pushes[1]);
     assert_eq!(pushes[0][0], Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX));
 
@@ -251,10 +291,12 @@ fn sums_beyond_the_range_fall_back_on_the_measured_gradients() {
     #[cfg(target_arch = "x86_64")]
     if kernels_present() {
         let mut wrapped = Vec::new();
-        assert!(super::avx512::density_rates(
-            &lists,
+        let backend = crate::math::wide::backend().expect("present");
+        assert!(super::kernel::density_rates(
+            backend,
+            lists,
             1,
-            &velocities,
+            velocities,
             &mut wrapped
         ));
         assert_ne!(wrapped[0], Fx::MAX);

@@ -35,7 +35,7 @@ mod mixed_materials;
 mod prepare;
 mod softness;
 #[cfg(target_arch = "x86_64")]
-pub(crate) mod wide;
+pub(crate) mod wide_bodies;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};
 pub(crate) use contact_constraint::{ContactBlock, SolvePass};
@@ -57,13 +57,13 @@ pub(crate) fn kernels_present() -> bool {
     false
 }
 
-/// Whether this processor runs the rigid step's kernels written against [`wide::Wide`]
+/// Whether this processor runs the rigid step's kernels written against [`Wide`](crate::math::wide::Wide)
 /// (AVX-512 or AVX2; never off x86_64): for tests that check those kernels took their
 /// share of the cases they compare.
 #[cfg(test)]
 pub(crate) fn wide_kernels_present() -> bool {
     #[cfg(target_arch = "x86_64")]
-    return wide::backend().is_some();
+    return crate::math::wide::backend().is_some();
     #[cfg(not(target_arch = "x86_64"))]
     false
 }

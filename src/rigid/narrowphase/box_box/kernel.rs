@@ -30,9 +30,9 @@ use core::any::Any;
 #[cfg(doc)]
 use super::separating_axes;
 use super::{Axes, BoxPair, Choice, LANES};
+use crate::math::wide::{Wide, backend, kernel_entry};
 use crate::math::{Fx, Real};
 use crate::rigid::narrowphase::tolerance::parallel_sine_squared;
-use crate::rigid::solver::wide::{Wide, backend, kernel_entry};
 
 /// Input words per lane: A's axes (9), B's axes (9), A's and B's centres (3 + 3), A's and
 /// B's half extents (3 + 3).

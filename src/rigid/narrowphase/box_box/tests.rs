@@ -304,7 +304,7 @@ fn kernel_lanes(pairs: &[BoxPair<'_, Fx>], margin: Fx) -> u8 {
 fn compare(seed: u64, trials: usize, kinds: &[u32], margin: Fx) -> Tally {
     #[cfg(target_arch = "x86_64")]
     {
-        use crate::rigid::solver::wide::{backends, with_backend};
+        use crate::math::wide::{backends, with_backend};
         let mut fewest: Option<Tally> = None;
         for backend in backends() {
             let tally = with_backend(Some(backend), || compare_once(seed, trials, kinds, margin));

@@ -78,11 +78,12 @@
 use core::any::Any;
 
 use super::{ContactArms, ContactBlock, SolvePass};
+use crate::math::wide::{Backend, backend};
+use crate::math::wide::{avx2::Avx2, avx512::Avx512};
 use crate::math::{Fx, Real};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
-use crate::rigid::solver::wide::{Backend, Wide, backend};
-use crate::rigid::solver::wide::{avx2::Avx2, avx512::Avx512};
+use crate::rigid::solver::wide_bodies::WideBodies;
 
 /// The kernel that took a block: with narrow products, or wide ones ([`Wide::times`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -182,7 +183,7 @@ pub(super) fn warm_start_on<W: Kernels>(
 
 /// The kernels of this module compiled for a backend: each one function, with the
 /// backend's instructions enabled (the generic forms are always inlined into it).
-pub(super) trait Kernels: Wide {
+pub(super) trait Kernels: WideBodies {
     /// [`solve_block`] with this backend.
     fn solve_block<const RELAX: bool, const NARROW: bool>(
         self,
@@ -351,7 +352,7 @@ impl KernelFacts {
 
 /// [`KernelFacts::of`] for I32F32, with the backend `wide`.
 #[inline(always)]
-fn facts<W: Wide>(w: W, block: &ContactBlock<Fx>) -> KernelFacts {
+fn facts<W: WideBodies>(w: W, block: &ContactBlock<Fx>) -> KernelFacts {
     let active = ((1u16 << block.len) - 1) as u8;
     let f = &block.friction_rows;
     let mut bad = (vectors_out_of_bound(
@@ -458,7 +459,7 @@ fn facts<W: Wide>(w: W, block: &ContactBlock<Fx>) -> KernelFacts {
 /// Velocity changes per unit impulse of a block's lanes on each side, n/m (K = 1) or t₁/m
 /// and t₂/m (K = 2), and how a product with them reaches the two sides. Each set is loaded
 /// where its rows begin, so that it holds no registers before.
-struct Linear<W: Wide, const K: usize> {
+struct Linear<W: WideBodies, const K: usize> {
     /// Per side (A, B), the K coefficient vectors, or the shared ones on both sides.
     sides: [[[W::V; 3]; K]; 2],
     /// The lanes each side moves in when the coefficients are shared
@@ -466,7 +467,7 @@ struct Linear<W: Wide, const K: usize> {
     shared: Option<(u8, u8)>,
 }
 
-impl<W: Wide> Linear<W, 1> {
+impl<W: WideBodies> Linear<W, 1> {
     /// n/m_a and n/m_b of `block` ([`Linear::of`]).
     #[inline(always)]
     fn normal(w: W, block: &ContactBlock<Fx>) -> Self {
@@ -474,7 +475,7 @@ impl<W: Wide> Linear<W, 1> {
     }
 }
 
-impl<W: Wide> Linear<W, 2> {
+impl<W: WideBodies> Linear<W, 2> {
     /// t₁/m_a, t₂/m_a and t₁/m_b, t₂/m_b of `block` ([`Linear::of`]).
     #[inline(always)]
     fn tangents(w: W, block: &ContactBlock<Fx>) -> Self {
@@ -484,7 +485,7 @@ impl<W: Wide> Linear<W, 2> {
     }
 }
 
-impl<W: Wide, const K: usize> Linear<W, K> {
+impl<W: WideBodies, const K: usize> Linear<W, K> {
     /// The coefficients `a` and `b` of the two sides: when they are shared (`facts`), B's
     /// where B moves and A's elsewhere (where B's are zero), for both sides.
     #[inline(always)]
@@ -536,7 +537,7 @@ impl<W: Wide, const K: usize> Linear<W, K> {
 /// (see the module documentation). Returns false, having written nothing, when a value
 /// leaves its checked bound in a lane in use.
 #[inline(always)]
-fn warm_start_block<W: Wide, const NARROW: bool>(
+fn warm_start_block<W: WideBodies, const NARROW: bool>(
     w: W,
     block: &ContactBlock<Fx>,
     bodies: &mut [SolverBody<Fx>],
@@ -610,14 +611,14 @@ fn warm_start_block<W: Wide, const NARROW: bool>(
 }
 
 /// The velocities and motions of the lanes' bodies on one side.
-struct Side<W: Wide> {
+struct Side<W: WideBodies> {
     v: [W::V; 3],
     w: [W::V; 3],
     dp: [W::V; 3],
     dtheta: [W::V; 3],
 }
 
-impl<W: Wide> Side<W> {
+impl<W: WideBodies> Side<W> {
     /// Applies an impulse's velocity changes, A losing and B gaining:
     /// v_a −= Δv_a, ω_a −= Δω_a, v_b += Δv_b, ω_b += Δω_b. The new velocities are not
     /// checked: a velocity that enters products later is checked there ([`Side::spin_beyond`]
@@ -677,7 +678,7 @@ impl BodyLanes {
 
     /// The two sides' bodies, with their motions when `with_motion`.
     #[inline(always)]
-    fn load<W: Wide>(
+    fn load<W: WideBodies>(
         &self,
         w: W,
         bodies: &[SolverBody<Fx>],
@@ -710,7 +711,7 @@ impl BodyLanes {
     /// Writes both sides' velocities back. Lanes that share a body share it only when it
     /// does not move, and then write the values they read.
     #[inline(always)]
-    fn store<W: Wide>(&self, w: W, bodies: &mut [SolverBody<Fx>], a: &Side<W>, b: &Side<W>) {
+    fn store<W: WideBodies>(&self, w: W, bodies: &mut [SolverBody<Fx>], a: &Side<W>, b: &Side<W>) {
         // SAFETY: as in `load`.
         unsafe {
             w.store_velocities(bodies, &self.a, self.active, [a.v, a.w]);
@@ -726,7 +727,7 @@ impl BodyLanes {
 /// The biased pass reads the separations the block keeps; the relax pass computes them
 /// from the bodies' motions and keeps them (as [`ContactBlock::solve_lanes`] does).
 #[inline(always)]
-fn solve_block<W: Wide, const RELAX: bool, const NARROW: bool>(
+fn solve_block<W: WideBodies, const RELAX: bool, const NARROW: bool>(
     w: W,
     block: &mut ContactBlock<Fx>,
     bodies: &mut [SolverBody<Fx>],
@@ -1029,7 +1030,7 @@ fn clamp_to_cone(
 
 /// The points in use of each lane, as lanes.
 #[inline(always)]
-pub(super) fn counts_of<W: Wide>(w: W, block: &ContactBlock<Fx>) -> W::V {
+pub(super) fn counts_of<W: WideBodies>(w: W, block: &ContactBlock<Fx>) -> W::V {
     let mut counts = [0; LANES];
     for (count, &points) in counts.iter_mut().zip(&block.count) {
         *count = i64::from(points);
@@ -1039,14 +1040,14 @@ pub(super) fn counts_of<W: Wide>(w: W, block: &ContactBlock<Fx>) -> W::V {
 
 /// The lanes where lane `k` has a point: k < its count, among `active`.
 #[inline(always)]
-pub(super) fn points_in_use<W: Wide>(w: W, counts: W::V, active: u8, k: usize) -> u8 {
+pub(super) fn points_in_use<W: WideBodies>(w: W, counts: W::V, active: u8, k: usize) -> u8 {
     w.greater(counts, w.splat(k as i64)) & active
 }
 
 /// a₁λ₁ + … + a_Kλ_K for K vectors of coefficients and K impulses ([`Wide::times`]),
 /// summed in that order.
 #[inline(always)]
-fn combine<W: Wide, const NARROW: bool, const K: usize>(
+fn combine<W: WideBodies, const NARROW: bool, const K: usize>(
     w: W,
     a: [[W::V; 3]; K],
     impulses: [W::V; K],
@@ -1060,7 +1061,7 @@ fn combine<W: Wide, const NARROW: bool, const K: usize>(
 
 /// The lanes where a component of one of `vectors` lies outside [−2⁴⁶, 2⁴⁶).
 #[inline(always)]
-fn vectors_out_of_bound<W: Wide>(w: W, vectors: &[&Lanes3<Fx>]) -> u8 {
+fn vectors_out_of_bound<W: WideBodies>(w: W, vectors: &[&Lanes3<Fx>]) -> u8 {
     let mut bad = 0;
     for v in vectors {
         bad |= w.out_of_bound3(w.load3(v));
@@ -1070,7 +1071,7 @@ fn vectors_out_of_bound<W: Wide>(w: W, vectors: &[&Lanes3<Fx>]) -> u8 {
 
 /// The lanes where one of `scalars` lies outside [−2⁴⁶, 2⁴⁶).
 #[inline(always)]
-fn scalars_out_of_bound<W: Wide>(w: W, scalars: &[&Lanes<Fx>]) -> u8 {
+fn scalars_out_of_bound<W: WideBodies>(w: W, scalars: &[&Lanes<Fx>]) -> u8 {
     let mut bad = 0;
     for x in scalars {
         bad |= w.out_of_bound(w.load(x));
@@ -1080,7 +1081,7 @@ fn scalars_out_of_bound<W: Wide>(w: W, scalars: &[&Lanes<Fx>]) -> u8 {
 
 /// The lanes where a component of one of `vectors` lies outside [−2³¹, 2³¹).
 #[inline(always)]
-fn vectors_beyond_narrow<W: Wide>(w: W, vectors: &[&Lanes3<Fx>]) -> u8 {
+fn vectors_beyond_narrow<W: WideBodies>(w: W, vectors: &[&Lanes3<Fx>]) -> u8 {
     let mut wide = 0;
     for v in vectors {
         wide |= w.beyond3::<true>(w.load3(v));

@@ -27,11 +27,12 @@ use core::mem::{offset_of, size_of};
 
 use super::kernel::{Kernels, counts_of, points_in_use};
 use super::{ContactArms, ContactBlock};
+use crate::math::wide::{Backend, Wide, backend};
 use crate::math::{Fx, Mat3, Real, Vec3};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::{LANES, Lanes3};
-use crate::rigid::solver::wide::avx512::{BODY_WORDS, V, W};
-use crate::rigid::solver::wide::{Backend, Wide, backend};
+use crate::rigid::solver::wide_bodies::WideBodies;
+use crate::rigid::solver::wide_bodies::{BODY_WORDS, V, W};
 
 /// Word offsets of the inverse mass and of the inverse inertia's first column in a
 /// `SolverBody<Fx>`; element (i, j) of the inertia is word `INV_INERTIA + 3j + i`.
@@ -71,7 +72,11 @@ pub(super) fn prepare<R: Real>(
 /// The first word of each lane's body, A's and B's, in the lanes in use; `None` if an
 /// index is out of bounds.
 #[inline(always)]
-fn lane_words<W: Wide>(w: W, block: &ContactBlock<Fx>, body_count: usize) -> Option<(W::V, W::V)> {
+fn lane_words<W: WideBodies>(
+    w: W,
+    block: &ContactBlock<Fx>,
+    body_count: usize,
+) -> Option<(W::V, W::V)> {
     let mut words_a = [0i64; LANES];
     let mut words_b = [0i64; LANES];
     for l in 0..block.len {
@@ -91,7 +96,7 @@ fn lane_words<W: Wide>(w: W, block: &ContactBlock<Fx>, body_count: usize) -> Opt
 /// `words` must be the first words of bodies of `bodies` in the lanes of `active`, and
 /// `offset` a word inside a body.
 #[inline(always)]
-unsafe fn field<W: Wide>(
+unsafe fn field<W: WideBodies>(
     w: W,
     bodies: &[SolverBody<Fx>],
     words: W::V,
@@ -99,7 +104,13 @@ unsafe fn field<W: Wide>(
     active: u8,
 ) -> W::V {
     // SAFETY: the caller's promise.
-    unsafe { w.gather(bodies, w.add(words, w.splat(offset)), active) }
+    unsafe {
+        w.gather_words(
+            bodies.as_ptr().cast(),
+            w.add(words, w.splat(offset)),
+            active,
+        )
+    }
 }
 
 /// Words `offset` to `offset + 2` of each lane's body: a vector.
@@ -107,7 +118,7 @@ unsafe fn field<W: Wide>(
 /// # Safety
 /// As for [`field`], for all three words.
 #[inline(always)]
-unsafe fn vector<W: Wide>(
+unsafe fn vector<W: WideBodies>(
     w: W,
     bodies: &[SolverBody<Fx>],
     words: W::V,
@@ -129,7 +140,12 @@ unsafe fn vector<W: Wide>(
 /// # Safety
 /// As for [`field`], with `words` the first words of the bodies.
 #[inline(always)]
-unsafe fn inertia<W: Wide>(w: W, bodies: &[SolverBody<Fx>], words: W::V, active: u8) -> Columns<W> {
+unsafe fn inertia<W: WideBodies>(
+    w: W,
+    bodies: &[SolverBody<Fx>],
+    words: W::V,
+    active: u8,
+) -> Columns<W> {
     // SAFETY: the caller's promise; the inertia lies inside the body (checked above).
     unsafe {
         [
@@ -142,7 +158,7 @@ unsafe fn inertia<W: Wide>(w: W, bodies: &[SolverBody<Fx>], words: W::V, active:
 
 /// The kernel. Returns false when a value leaves the checked bound in a point in use.
 #[inline(always)]
-pub(super) fn prepare_block<W: Wide>(
+pub(super) fn prepare_block<W: WideBodies>(
     w: W,
     block: &mut ContactBlock<Fx>,
     arms: &ContactArms<Fx>,
@@ -276,7 +292,7 @@ type Columns<W> = [[<W as Wide>::V; 3]; 3];
 /// the arms r × d (m) and I⁻¹(r × d) (1/(kg·m)) on each side, and
 /// k = 1/m_a + 1/m_b + (I_a⁻¹(r_a × d))·(r_a × d) + (I_b⁻¹(r_b × d))·(r_b × d) (1/kg), each
 /// product rounded as the scalar form rounds it.
-struct Row<W: Wide> {
+struct Row<W: WideBodies> {
     arms: ([W::V; 3], [W::V; 3]),
     turns: ([W::V; 3], [W::V; 3]),
     k: W::V,
@@ -284,7 +300,7 @@ struct Row<W: Wide> {
     bad: u8,
 }
 
-impl<W: Wide> Row<W> {
+impl<W: WideBodies> Row<W> {
     /// The row along `direction`, with the bodies' inverse inertias (by columns) and
     /// m_sum = 1/m_a + 1/m_b.
     #[inline(always)]
@@ -316,7 +332,7 @@ impl<W: Wide> Row<W> {
 
 /// M v for M given by columns, as `Mat3 * Vec3`: row i is Σⱼ Mᵢⱼvⱼ.
 #[inline(always)]
-fn mat_vec<W: Wide>(w: W, columns: Columns<W>, v: [W::V; 3]) -> [W::V; 3] {
+fn mat_vec<W: WideBodies>(w: W, columns: Columns<W>, v: [W::V; 3]) -> [W::V; 3] {
     let mut rows = [w.zero(); 3];
     for (i, row) in rows.iter_mut().enumerate() {
         *row = w.add(
@@ -329,13 +345,13 @@ fn mat_vec<W: Wide>(w: W, columns: Columns<W>, v: [W::V; 3]) -> [W::V; 3] {
 
 /// The lanes where an element of the matrix lies outside the checked bound.
 #[inline(always)]
-fn out_of_bound_matrix<W: Wide>(w: W, columns: Columns<W>) -> u8 {
+fn out_of_bound_matrix<W: WideBodies>(w: W, columns: Columns<W>) -> u8 {
     w.out_of_bound3(columns[0]) | w.out_of_bound3(columns[1]) | w.out_of_bound3(columns[2])
 }
 
 /// Writes the lanes of `mask` of a vector.
 #[inline(always)]
-fn store3<W: Wide>(w: W, lanes: &mut Lanes3<Fx>, mask: u8, value: [W::V; 3]) {
+fn store3<W: WideBodies>(w: W, lanes: &mut Lanes3<Fx>, mask: u8, value: [W::V; 3]) {
     w.store_lanes(&mut lanes.x, mask, value[0]);
     w.store_lanes(&mut lanes.y, mask, value[1]);
     w.store_lanes(&mut lanes.z, mask, value[2]);

@@ -7,6 +7,8 @@
 use super::kernel::{Kernel, KernelFacts, Kernels, solve_on, warm_start_on};
 use super::{ContactArms, ContactBlock, SolvePass};
 use crate::math::saturation::count_saturations;
+#[cfg(target_arch = "x86_64")]
+use crate::math::wide::{Backend, backends, with_backend};
 use crate::math::{Fx, Mat3, Pcg32, Real, Vec3};
 use crate::rigid::contact::{Contact, ContactKey, ContactPoint};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
@@ -14,8 +16,6 @@ use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::kernels_present;
 use crate::rigid::solver::lanes::LANES;
 use crate::rigid::solver::softness::Softness;
-#[cfg(target_arch = "x86_64")]
-use crate::rigid::solver::wide::{Backend, backends, with_backend};
 
 /// A value in [−scale, scale).
 fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input

@@ -25,10 +25,10 @@
 use core::any::Any;
 
 use crate::math::quat::{near_unit_excess, square_prescale, square_unscale};
+use crate::math::wide::{Wide, backend, kernel_entry};
 use crate::math::{Fx, Quat, Real};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::LANES;
-use crate::rigid::solver::wide::{Wide, backend, kernel_entry};
 
 /// Integrates over `h` seconds the orientations of the bodies `bodies` (at most
 /// [`LANES`]), body l's orientation being `orientations[slots[l]]`, with the kernel when

@@ -104,7 +104,7 @@ fn compare_backends(seed: u64, trials: usize, spin: f64, drift: f64) -> usize //
 {
     #[cfg(target_arch = "x86_64")]
     {
-        use crate::rigid::solver::wide::{backends, with_backend};
+        use crate::math::wide::{backends, with_backend};
         let mut fewest = usize::MAX;
         for backend in backends() {
             let taken = with_backend(Some(backend), || compare(seed, trials, spin, drift));

@@ -17,17 +17,17 @@
 //! they are always inlined into a kernel entry point that enables AVX2.
 
 use core::arch::x86_64::{
-    __m256i, _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8,
-    _mm256_castsi256_pd, _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_loadu_si256,
-    _mm256_mask_i64gather_epi64, _mm256_movemask_pd, _mm256_mul_epi32, _mm256_set_epi64x,
-    _mm256_set1_epi64x, _mm256_setzero_si256, _mm256_slli_epi64, _mm256_srai_epi32,
-    _mm256_srli_epi64, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
+    __m256i, _mm_cmplt_epi32, _mm_maskload_epi32, _mm_set_epi32, _mm_set1_epi32, _mm256_add_epi64,
+    _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8, _mm256_castsi256_pd,
+    _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_cvtepu32_epi64, _mm256_loadu_si256,
+    _mm256_mask_i64gather_epi64, _mm256_maskload_epi64, _mm256_movemask_pd, _mm256_mul_epi32,
+    _mm256_or_si256, _mm256_set_epi64x, _mm256_set1_epi64x, _mm256_setzero_si256,
+    _mm256_slli_epi64, _mm256_srai_epi32, _mm256_srli_epi64, _mm256_storeu_si256, _mm256_sub_epi64,
+    _mm256_xor_si256,
 };
 
-use super::Wide;
+use super::{LANES, Wide};
 use crate::math::{Fx, Vec3};
-use crate::rigid::solver::body::SolverBody;
-use crate::rigid::solver::lanes::LANES;
 
 /// `f` of each half of two values. A macro, not a closure: the kernels are large, and a
 /// closure there may not be inlined (nor, then, the intrinsics inside it).
@@ -141,6 +141,24 @@ impl Wide for Avx2 {
     }
 
     #[inline(always)]
+    fn or(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe { _mm256_or_si256(a, b) })
+    }
+
+    #[inline(always)]
+    fn xor(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe { _mm256_xor_si256(a, b) })
+    }
+
+    /// A signed comparison with zero.
+    #[inline(always)]
+    fn sign(self, a: Self::V) -> Self::V {
+        halves!(a, a, |a, _b| unsafe {
+            _mm256_cmpgt_epi64(_mm256_setzero_si256(), a)
+        })
+    }
+
+    #[inline(always)]
     fn max(self, a: Self::V, b: Self::V) -> Self::V {
         halves!(a, b, |a, b| unsafe {
             _mm256_blendv_epi8(b, a, _mm256_cmpgt_epi64(a, b))
@@ -220,8 +238,7 @@ impl Wide for Avx2 {
     }
 
     #[inline(always)]
-    unsafe fn gather(self, bodies: &[SolverBody<Fx>], words: Self::V, active: u8) -> Self::V {
-        let base = bodies.as_ptr().cast::<i64>();
+    unsafe fn gather_words(self, base: *const i64, words: Self::V, active: u8) -> Self::V {
         let [low, high] = self.spread(active);
         // SAFETY: the caller's promise; outside `active` nothing is read.
         unsafe {
@@ -232,75 +249,58 @@ impl Wide for Avx2 {
         }
     }
 
-    /// Lane by lane: the words of each body of `active` gathered into arrays, then loaded.
+    /// Word by word into an array, then one load.
     #[inline(always)]
-    unsafe fn load_bodies(
-        self,
-        bodies: &[SolverBody<Fx>],
-        indices: &[u32; LANES],
-        active: u8,
-        with_motion: bool,
-    ) -> [[Self::V; 3]; 4] {
-        let mut words = [[[0; LANES]; 3]; 4];
-        for (l, &index) in indices.iter().enumerate() {
-            if active & (1 << l) == 0 {
-                continue;
-            }
-            let body = &bodies[index as usize];
-            let [dp, dtheta] = if with_motion {
-                [body.dp, body.dtheta]
-            } else {
-                [Vec3::ZERO; 2]
-            };
-            for (vector, value) in words.iter_mut().zip([body.v, body.w, dp, dtheta]) {
-                vector[0][l] = value.x.to_bits();
-                vector[1][l] = value.y.to_bits();
-                vector[2][l] = value.z.to_bits();
-            }
+    unsafe fn gather_values(self, values: *const i64, indices: &[u32], count: usize) -> Self::V {
+        let mut words = [0; LANES];
+        for (l, word) in words.iter_mut().enumerate().take(count) {
+            // SAFETY: the caller's conditions: index l exists and lies within `values`.
+            *word = unsafe { *values.add(*indices.get_unchecked(l) as usize) };
         }
-        let mut out = [[self.zero(); 3]; 4];
-        for (out, words) in out.iter_mut().zip(&words) {
-            for (out, words) in out.iter_mut().zip(words) {
-                *out = self.load_words(*words);
-            }
-        }
-        out
+        self.load_words(words)
     }
 
-    /// Lane by lane, from arrays.
+    /// Component by component into arrays, then one load each.
     #[inline(always)]
-    unsafe fn store_velocities(
-        self,
-        bodies: &mut [SolverBody<Fx>],
-        indices: &[u32; LANES],
-        active: u8,
-        [v, w]: [[Self::V; 3]; 2],
-    ) {
-        let [vx, vy, vz] = [
-            self.store_words(v[0]),
-            self.store_words(v[1]),
-            self.store_words(v[2]),
-        ];
-        let [wx, wy, wz] = [
-            self.store_words(w[0]),
-            self.store_words(w[1]),
-            self.store_words(w[2]),
-        ];
-        for (l, &index) in indices.iter().enumerate() {
-            if active & (1 << l) == 0 {
-                continue;
-            }
-            let body = &mut bodies[index as usize];
-            body.v = Vec3::new(
-                Fx::from_bits(vx[l]),
-                Fx::from_bits(vy[l]),
-                Fx::from_bits(vz[l]),
-            );
-            body.w = Vec3::new(
-                Fx::from_bits(wx[l]),
-                Fx::from_bits(wy[l]),
-                Fx::from_bits(wz[l]),
-            );
+    fn gather_vectors(self, vectors: &[Vec3<Fx>], indices: &[u32]) -> Option<[Self::V; 3]> {
+        let mut words = [[0; LANES]; 3];
+        for (l, &i) in indices.iter().take(LANES).enumerate() {
+            let vector = vectors.get(i as usize)?;
+            words[0][l] = vector.x.to_bits();
+            words[1][l] = vector.y.to_bits();
+            words[2][l] = vector.z.to_bits();
+        }
+        Some(words.map(|w| self.load_words(w)))
+    }
+
+    /// Two masked loads of four words.
+    #[inline(always)]
+    unsafe fn load_prefix(self, words: *const i64, count: usize) -> Self::V {
+        let [low, high] = self.spread(((1u16 << count) - 1) as u8);
+        // SAFETY: the caller's promise: the `count` words the masks select are readable;
+        // a masked-off word is not read.
+        unsafe {
+            [
+                _mm256_maskload_epi64(words, low),
+                _mm256_maskload_epi64(words.wrapping_add(4), high),
+            ]
+        }
+    }
+
+    /// One masked load of four numbers per half, widened.
+    #[inline(always)]
+    unsafe fn load_prefix_u32(self, numbers: *const u32, count: usize) -> Self::V {
+        // SAFETY: the caller's promise: the `count` numbers the masks select are readable;
+        // a masked-off number is not read.
+        unsafe {
+            let lanes = _mm_set_epi32(3, 2, 1, 0);
+            let low = _mm_cmplt_epi32(lanes, _mm_set1_epi32(count.min(4) as i32));
+            let high = _mm_cmplt_epi32(lanes, _mm_set1_epi32(count.saturating_sub(4) as i32));
+            let at = numbers.cast::<i32>();
+            [
+                _mm256_cvtepu32_epi64(_mm_maskload_epi32(at, low)),
+                _mm256_cvtepu32_epi64(_mm_maskload_epi32(at.wrapping_add(4), high)),
+            ]
         }
     }
 }

@@ -1,10 +1,15 @@
-//! Exact I32F32 arithmetic on eight `i64` lanes, behind one interface with two backends
-//! for x86_64: AVX-512 ([`avx512::Avx512`], AVX-512F and DQ) and AVX2 ([`avx2::Avx2`]).
-//! The contact solver's preparation, warm-start and solve kernels are written once against
-//! [`Wide`] and give the same bits with either backend, and the same bits as the checked scalar
-//! operators wherever their operands stay within the bounds each kernel checks.
+//! The one lane abstraction of the step's vector kernels: eight `i64` lanes holding I32F32
+//! bits, behind the trait [`Wide`], with two backends for x86_64: AVX-512
+//! ([`avx512::Avx512`], AVX-512F and DQ) and AVX2 ([`avx2::Avx2`]). A kernel is written once,
+//! generic over [`Wide`], and gives the same bits with either backend; one place,
+//! [`backend`], chooses the backend for this processor under the cap `FIXSTEP_SIMD`
+//! ([`cpu`](super::cpu)), and [`kernel_entry!`] compiles each kernel once per backend with
+//! its instructions enabled. A subsystem reaches the kernels at compile time through the
+//! scalar type: [`Real::as_fixed`](super::Real::as_fixed) views its I32F32 data as such and
+//! is `None` for every other format, so that `f64` and the other fixed formats compile
+//! the plain path only.
 //!
-//! A lane mask is a `u8`, bit l for lane l, in both backends.
+//! Every exact product of the kernels is proved here, once:
 //!
 //! # Products
 //!
@@ -34,9 +39,39 @@ pub(crate) mod avx512;
 use avx2::Avx2;
 use avx512::Avx512;
 
-use super::body::SolverBody;
-use super::lanes::{LANES, Lanes};
-use crate::math::Fx;
+use crate::math::{Fx, Vec3};
+
+/// The lanes of a vector.
+pub(crate) const LANES: usize = 8;
+
+/// The bit length of `bits` as an unsigned number.
+#[inline(always)]
+pub(crate) fn bit_length(bits: u64) -> u32 {
+    u64::BITS - bits.leading_zeros()
+}
+
+/// The bit length of the largest magnitude of any component of `vectors`: a bound on them
+/// all (|c| < 2^bits), as the kernels measure what they read. Inlined into a kernel, it
+/// scans with the kernel's instructions.
+#[inline(always)]
+pub(crate) fn vector_bits(vectors: &[Vec3<Fx>]) -> u32 {
+    bit_length(vectors.iter().fold(0, |bits, v| {
+        bits | magnitude_of(v.x) | magnitude_of(v.y) | magnitude_of(v.z)
+    }))
+}
+
+/// The bit length of the largest magnitude in `values`, as [`vector_bits`].
+#[inline(always)]
+pub(crate) fn scalar_bits(values: &[Fx]) -> u32 {
+    bit_length(values.iter().fold(0, |bits, &v| bits | magnitude_of(v)))
+}
+
+/// |v| or |v| − 1 of one value's bits: `v ^ (v >> 63)`.
+#[inline(always)]
+fn magnitude_of(v: Fx) -> u64 {
+    let v = v.to_bits();
+    (v ^ (v >> 63)) as u64
+}
 
 /// A backend of the kernels.
 #[derive(Clone, Copy, Debug)]
@@ -93,8 +128,8 @@ pub(crate) fn with_backend<T>(backend: Option<Backend>, f: impl FnOnce() -> T) -
 macro_rules! kernel_entry {
     ($(#[$meta:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty = $kernel:path;) => {
         $(#[$meta])*
-        $vis fn $name(backend: $crate::rigid::solver::wide::Backend, $($arg: $ty),*) -> $ret {
-            use $crate::rigid::solver::wide::{Backend, avx2::Avx2, avx512::Avx512};
+        $vis fn $name(backend: $crate::math::wide::Backend, $($arg: $ty),*) -> $ret {
+            use $crate::math::wide::{Backend, avx2::Avx2, avx512::Avx512};
             /// # Safety
             /// The processor must have AVX-512F and AVX-512DQ.
             #[target_feature(enable = "avx512f,avx512dq")]
@@ -138,6 +173,10 @@ pub(crate) trait Wide: Copy {
     fn add(self, a: Self::V, b: Self::V) -> Self::V;
     fn sub(self, a: Self::V, b: Self::V) -> Self::V;
     fn and(self, a: Self::V, b: Self::V) -> Self::V;
+    fn or(self, a: Self::V, b: Self::V) -> Self::V;
+    fn xor(self, a: Self::V, b: Self::V) -> Self::V;
+    /// a >> 63, arithmetic: −1 in the negative lanes, 0 in the others.
+    fn sign(self, a: Self::V) -> Self::V;
     fn max(self, a: Self::V, b: Self::V) -> Self::V;
     fn min(self, a: Self::V, b: Self::V) -> Self::V;
     /// |a|, wrapping (i64::MIN stays itself).
@@ -159,42 +198,62 @@ pub(crate) trait Wide: Copy {
     /// `on` in the lanes of `mask`, `off` elsewhere.
     fn select(self, mask: u8, on: Self::V, off: Self::V) -> Self::V;
 
-    /// The velocities v, ω and, when `with_motion`, the motions Δp, Δθ (zero otherwise)
-    /// of the bodies `indices` in the lanes of `active` (zero elsewhere), one vector per
-    /// component.
+    /// The words of `base` at the word offsets `words` in the lanes of `active`, zero
+    /// elsewhere.
     ///
     /// # Safety
-    /// The index of every lane of `active` must be that of a body of `bodies`.
-    unsafe fn load_bodies(
-        self,
-        bodies: &[SolverBody<Fx>],
-        indices: &[u32; LANES],
-        active: u8,
-        with_motion: bool,
-    ) -> [[Self::V; 3]; 4];
+    /// In every lane of `active`, the word must lie in the allocation `base` points into.
+    unsafe fn gather_words(self, base: *const i64, words: Self::V, active: u8) -> Self::V;
 
-    /// Word `words` (an index into `bodies` taken as `i64` words) in each lane of `active`,
-    /// zero elsewhere.
+    /// `values[indices[l]]` in lane l for the `count` first lanes, zero in the others.
     ///
     /// # Safety
-    /// In every lane of `active`, the word must lie in `bodies`.
-    unsafe fn gather(self, bodies: &[SolverBody<Fx>], words: Self::V, active: u8) -> Self::V;
+    /// `count` ≤ [`LANES`] and ≤ `indices.len()`; each of the first `count` indices must be
+    /// below the number of words at `values`.
+    unsafe fn gather_values(self, values: *const i64, indices: &[u32], count: usize) -> Self::V;
 
-    /// Writes v and ω of the bodies `indices` in the lanes of `active`.
+    /// The x, y and z components of `vectors[indices[l]]` in lane l for the first (at most
+    /// eight) indices, zero in the lanes past them; `None` if an index is out of bounds.
+    fn gather_vectors(self, vectors: &[Vec3<Fx>], indices: &[u32]) -> Option<[Self::V; 3]>;
+
+    /// The `count` words at `words` in the first lanes, zero in the others.
     ///
     /// # Safety
-    /// As for [`load_bodies`](Self::load_bodies).
-    unsafe fn store_velocities(
-        self,
-        bodies: &mut [SolverBody<Fx>],
-        indices: &[u32; LANES],
-        active: u8,
-        velocities: [[Self::V; 3]; 2],
-    );
+    /// `count` ≤ [`LANES`], and the `count` words must be readable.
+    unsafe fn load_prefix(self, words: *const i64, count: usize) -> Self::V;
+
+    /// The `count` unsigned 32-bit numbers at `numbers`, widened, in the first lanes, zero
+    /// in the others.
+    ///
+    /// # Safety
+    /// `count` ≤ [`LANES`], and the `count` numbers must be readable.
+    unsafe fn load_prefix_u32(self, numbers: *const u32, count: usize) -> Self::V;
+
+    /// The sum of the lanes, modulo 2⁶⁴.
+    #[inline(always)]
+    fn sum_lanes(self, a: Self::V) -> i64 {
+        self.store_words(a)
+            .into_iter()
+            .fold(0, |sum: i64, x| sum.wrapping_add(x))
+    }
+
+    /// The bitwise or of the lanes.
+    #[inline(always)]
+    fn or_lanes(self, a: Self::V) -> u64 {
+        self.store_words(a)
+            .into_iter()
+            .fold(0, |or, x| or | x as u64)
+    }
+
+    /// |a| or |a| − 1 per lane, a ^ (a >> 63): the bits a bound on |a| needs.
+    #[inline(always)]
+    fn magnitude(self, a: Self::V) -> Self::V {
+        self.xor(a, self.sign(a))
+    }
 
     /// The raw bits of a lane array.
     #[inline(always)]
-    fn load(self, lanes: &Lanes<Fx>) -> Self::V {
+    fn load(self, lanes: &[Fx; LANES]) -> Self::V {
         let mut bits = [0; LANES];
         for (bits, x) in bits.iter_mut().zip(lanes) {
             *bits = x.to_bits();
@@ -204,7 +263,7 @@ pub(crate) trait Wide: Copy {
 
     /// Writes raw bits to a lane array.
     #[inline(always)]
-    fn store(self, lanes: &mut Lanes<Fx>, value: Self::V) {
+    fn store(self, lanes: &mut [Fx; LANES], value: Self::V) {
         for (x, bits) in lanes.iter_mut().zip(self.store_words(value)) {
             *x = Fx::from_bits(bits);
         }
@@ -212,18 +271,9 @@ pub(crate) trait Wide: Copy {
 
     /// Writes the lanes of `mask` to a lane array; the others keep their values.
     #[inline(always)]
-    fn store_lanes(self, lanes: &mut Lanes<Fx>, mask: u8, value: Self::V) {
+    fn store_lanes(self, lanes: &mut [Fx; LANES], mask: u8, value: Self::V) {
         let kept = self.load(lanes);
         self.store(lanes, self.select(mask, value, kept));
-    }
-
-    #[inline(always)]
-    fn load3(self, lanes: &super::lanes::Lanes3<Fx>) -> [Self::V; 3] {
-        [
-            self.load(&lanes.x),
-            self.load(&lanes.y),
-            self.load(&lanes.z),
-        ]
     }
 
     #[inline(always)]

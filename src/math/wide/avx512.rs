@@ -1,47 +1,28 @@
 //! The AVX-512 backend of [`Wide`] (F and DQ): eight lanes in one `__m512i`, lane masks in
 //! mask registers. `_mm512_mul_epi32` gives the products of low halves and
-//! `_mm512_mullo_epi64` the low 64 bits of a 64 × 64 product. The bodies' velocities are
-//! loaded one 64-byte row per body and turned into one vector per component by a transpose.
+//! `_mm512_mullo_epi64` the low 64 bits of a 64 × 64 product; masked loads read a row's
+//! prefix and the values of a neighbour list, and a transpose of eight rows turns records
+//! (vectors, bodies) into one vector per field.
 //!
 //! The operations carry no `#[target_feature]` of their own: they are always inlined, and
 //! a kernel runs them inside an entry point with `#[target_feature(enable =
 //! "avx512f,avx512dq")]`, where they compile to single instructions.
 
 use core::arch::x86_64::{
-    __m512i, _mm512_abs_epi64, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpeq_epi64_mask,
-    _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask, _mm512_loadu_si512, _mm512_mask_blend_epi64,
-    _mm512_mask_i64gather_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_loadu_epi64,
-    _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32, _mm512_mullo_epi64,
-    _mm512_permutex2var_epi64, _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
+    __m512i, _mm_loadl_epi64, _mm_loadu_si128, _mm512_abs_epi64, _mm512_add_epi64,
+    _mm512_and_si512, _mm512_castsi128_si512, _mm512_castsi512_si256, _mm512_cmpeq_epi64_mask,
+    _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask, _mm512_cvtepu32_epi64, _mm512_inserti32x4,
+    _mm512_loadu_si512, _mm512_mask_blend_epi64, _mm512_mask_i64gather_epi64,
+    _mm512_mask_loadu_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_loadu_epi32,
+    _mm512_maskz_loadu_epi64, _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32,
+    _mm512_mullo_epi64, _mm512_or_si512, _mm512_permutex2var_epi64, _mm512_reduce_add_epi64,
+    _mm512_reduce_or_epi64, _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
     _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64, _mm512_unpackhi_epi64,
-    _mm512_unpacklo_epi64,
+    _mm512_unpacklo_epi64, _mm512_xor_si512,
 };
-use core::mem::{offset_of, size_of};
 
-use super::Wide;
+use super::{LANES, Wide};
 use crate::math::{Fx, Vec3};
-use crate::rigid::solver::avx512::has_kernels;
-use crate::rigid::solver::body::SolverBody;
-use crate::rigid::solver::lanes::{LANES, Lanes};
-
-/// `SolverBody<Fx>` in `i64` words, and the word offsets of the fields the kernels read.
-pub(crate) const BODY_WORDS: i64 = (size_of::<SolverBody<Fx>>() / 8) as i64;
-pub(crate) const V: i64 = (offset_of!(SolverBody<Fx>, v) / 8) as i64;
-pub(crate) const W: i64 = (offset_of!(SolverBody<Fx>, w) / 8) as i64;
-const DP: i64 = (offset_of!(SolverBody<Fx>, dp) / 8) as i64;
-const DTHETA: i64 = (offset_of!(SolverBody<Fx>, dtheta) / 8) as i64;
-
-// The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row, the body
-// a whole number of words; v, ω, Δp and Δθ in a row from word 0, so that words 0–7 (v, ω,
-// Δp_x, Δp_y) and 8–15 (Δp_z, Δθ, ...) are two rows of eight.
-const _: () = {
-    assert!(size_of::<Fx>() == 8);
-    assert!(size_of::<Vec3<Fx>>() == 24);
-    assert!(size_of::<SolverBody<Fx>>().is_multiple_of(8));
-    assert!(V == 0 && W == 3 && DP == 6 && DTHETA == 9);
-    assert!(BODY_WORDS >= 16);
-    assert!(LANES == 8);
-};
 
 /// The AVX-512 backend. A value exists only where the processor has AVX-512F and DQ.
 #[derive(Clone, Copy, Debug)]
@@ -51,7 +32,7 @@ impl Avx512 {
     /// The backend, if this processor runs it.
     #[inline]
     pub(crate) fn detect() -> Option<Self> {
-        has_kernels().then_some(Self(()))
+        crate::math::cpu::avx512_kernels().then_some(Self(()))
     }
 }
 
@@ -85,19 +66,19 @@ impl Wide for Avx512 {
     }
 
     #[inline(always)]
-    fn load(self, lanes: &Lanes<Fx>) -> __m512i {
+    fn load(self, lanes: &[Fx; LANES]) -> __m512i {
         // SAFETY: eight `Fx`, each one `i64`: 64 readable bytes.
         unsafe { _mm512_loadu_si512(lanes.as_ptr().cast()) }
     }
 
     #[inline(always)]
-    fn store(self, lanes: &mut Lanes<Fx>, value: __m512i) {
+    fn store(self, lanes: &mut [Fx; LANES], value: __m512i) {
         // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
         unsafe { _mm512_storeu_si512(lanes.as_mut_ptr().cast(), value) }
     }
 
     #[inline(always)]
-    fn store_lanes(self, lanes: &mut Lanes<Fx>, mask: u8, value: __m512i) {
+    fn store_lanes(self, lanes: &mut [Fx; LANES], mask: u8, value: __m512i) {
         // SAFETY: eight `Fx`, each one `i64`: 64 writable bytes.
         unsafe { _mm512_mask_storeu_epi64(lanes.as_mut_ptr().cast(), mask, value) }
     }
@@ -115,6 +96,21 @@ impl Wide for Avx512 {
     #[inline(always)]
     fn and(self, a: __m512i, b: __m512i) -> __m512i {
         unsafe { _mm512_and_si512(a, b) }
+    }
+
+    #[inline(always)]
+    fn or(self, a: __m512i, b: __m512i) -> __m512i {
+        unsafe { _mm512_or_si512(a, b) }
+    }
+
+    #[inline(always)]
+    fn xor(self, a: __m512i, b: __m512i) -> __m512i {
+        unsafe { _mm512_xor_si512(a, b) }
+    }
+
+    #[inline(always)]
+    fn sign(self, a: __m512i) -> __m512i {
+        unsafe { _mm512_srai_epi64::<63>(a) }
     }
 
     #[inline(always)]
@@ -169,87 +165,83 @@ impl Wide for Avx512 {
     }
 
     #[inline(always)]
-    unsafe fn gather(self, bodies: &[SolverBody<Fx>], words: __m512i, active: u8) -> __m512i {
-        let base = bodies.as_ptr().cast::<i64>();
+    unsafe fn gather_words(self, base: *const i64, words: __m512i, active: u8) -> __m512i {
         // SAFETY: the caller's promise; outside `active` nothing is read.
         unsafe { _mm512_mask_i64gather_epi64::<8>(self.zero(), active, words, base) }
     }
 
-    /// One masked 64-byte load per lane (v, ω, Δp_x, Δp_y), and with the motions a second
-    /// one (Δp_z, Δθ, ...), all eight unrolled so that the rows stay in registers, then a
-    /// transpose; a lane outside `active` loads nothing.
+    /// One masked load of a word per lane, in two chains of merges (even and odd lanes)
+    /// joined at the end, which costs less than a gather.
     #[inline(always)]
-    unsafe fn load_bodies(
-        self,
-        bodies: &[SolverBody<Fx>],
-        indices: &[u32; LANES],
-        active: u8,
-        with_motion: bool,
-    ) -> [[__m512i; 3]; 4] {
-        let base = bodies.as_ptr().cast::<i64>();
-        // SAFETY: the caller's promise, as for `rows`.
-        let [vx, vy, vz, wx, wy, wz, px, py] =
-            unsafe { self.rows(base, indices, active, V as usize) };
-        let (dp, dtheta) = if with_motion {
-            // SAFETY: as above.
-            let [pz, tx, ty, tz, ..] = unsafe { self.rows(base, indices, active, DP as usize + 2) };
-            ([px, py, pz], [tx, ty, tz])
-        } else {
-            ([self.zero(); 3], [self.zero(); 3])
-        };
-        [[vx, vy, vz], [wx, wy, wz], dp, dtheta]
+    unsafe fn gather_values(self, values: *const i64, indices: &[u32], count: usize) -> __m512i {
+        let mut chains = [self.zero(); 2];
+        for l in 0..count {
+            // SAFETY: the caller's conditions: the masked load reads one word, value
+            // `indices[l]`, into lane l (from l words before it, the others masked off).
+            unsafe {
+                let at = values.add(*indices.get_unchecked(l) as usize);
+                chains[l & 1] =
+                    _mm512_mask_loadu_epi64(chains[l & 1], 1 << l, at.wrapping_sub(l).cast());
+            }
+        }
+        self.or(chains[0], chains[1])
     }
 
-    /// The transpose back into rows, and one masked store of six words per lane.
+    /// A load of three words per vector and a transpose (the processor's gather
+    /// instructions are slower on some cores).
     #[inline(always)]
-    unsafe fn store_velocities(
-        self,
-        bodies: &mut [SolverBody<Fx>],
-        indices: &[u32; LANES],
-        active: u8,
-        [[vx, vy, vz], [wx, wy, wz]]: [[__m512i; 3]; 2],
-    ) {
-        let base = bodies.as_mut_ptr().cast::<i64>();
-        let zero = self.zero();
-        let rows = self.transpose([vx, vy, vz, wx, wy, wz, zero, zero]);
-        for (l, row) in rows.into_iter().enumerate() {
-            let at = base.wrapping_add(first_word(indices[l]) + V as usize);
-            // SAFETY: as in `load_bodies`; six words, none outside `active`.
-            unsafe { _mm512_mask_storeu_epi64(at.cast(), lane_mask(active, l) & 0b11_1111, row) };
+    fn gather_vectors(self, vectors: &[Vec3<Fx>], indices: &[u32]) -> Option<[__m512i; 3]> {
+        let indices = &indices[..indices.len().min(LANES)];
+        let mut rows = [self.zero(); LANES];
+        for (row, &i) in rows.iter_mut().zip(indices) {
+            let words = core::ptr::from_ref(vectors.get(i as usize)?).cast::<i64>();
+            // SAFETY: a `Vec3<Fx>` is three readable `i64`: x and y, then z.
+            *row = unsafe {
+                let (xy, z) = (
+                    _mm_loadu_si128(words.cast()),
+                    _mm_loadl_epi64(words.add(2).cast()),
+                );
+                _mm512_inserti32x4::<1>(_mm512_castsi128_si512(xy), z)
+            };
         }
+        let [x, y, z, ..] = self.transpose(rows);
+        Some([x, y, z])
+    }
+
+    #[inline(always)]
+    unsafe fn load_prefix(self, words: *const i64, count: usize) -> __m512i {
+        let mask = ((1u16 << count) - 1) as u8;
+        // SAFETY: the caller's promise: the `count` words read are readable.
+        unsafe { _mm512_maskz_loadu_epi64(mask, words.cast()) }
+    }
+
+    #[inline(always)]
+    unsafe fn load_prefix_u32(self, numbers: *const u32, count: usize) -> __m512i {
+        let mask = ((1u16 << count) - 1) as u8;
+        // SAFETY: the caller's promise: the `count` numbers read are readable.
+        unsafe {
+            let numbers = _mm512_maskz_loadu_epi32(u16::from(mask), numbers.cast());
+            _mm512_cvtepu32_epi64(_mm512_castsi512_si256(numbers))
+        }
+    }
+
+    #[inline(always)]
+    fn sum_lanes(self, a: __m512i) -> i64 {
+        unsafe { _mm512_reduce_add_epi64(a) }
+    }
+
+    #[inline(always)]
+    fn or_lanes(self, a: __m512i) -> u64 {
+        unsafe { _mm512_reduce_or_epi64(a) as u64 }
     }
 }
 
 impl Avx512 {
-    /// Words `offset` to `offset + 7` of the body of each lane of `active` (zero
-    /// elsewhere), one vector per word: one masked load per lane, all eight unrolled so that
-    /// the rows stay in registers, then a transpose.
-    ///
-    /// # Safety
-    /// In each lane of `active`, those words of the body must lie in the array at `base`.
-    #[inline(always)]
-    unsafe fn rows(
-        self,
-        base: *const i64,
-        indices: &[u32; LANES],
-        active: u8,
-        offset: usize,
-    ) -> [__m512i; 8] {
-        let mut rows = [self.zero(); 8];
-        for (l, row) in rows.iter_mut().enumerate() {
-            let at = base.wrapping_add(first_word(indices[l]) + offset);
-            // SAFETY: the caller's promise; outside `active` the mask is empty and nothing
-            // is read.
-            *row = unsafe { _mm512_maskz_loadu_epi64(lane_mask(active, l), at.cast()) };
-        }
-        self.transpose(rows)
-    }
-
     /// The transpose of an 8 × 8 matrix of words given by rows: row i of the result holds
     /// word i of every input row. Three rounds of two-source permutes, 24 in all.
     #[inline(always)]
-    fn transpose(self, rows: [__m512i; 8]) -> [__m512i; 8] {
-        // SAFETY: see the `Wide` implementation.
+    pub(crate) fn transpose(self, rows: [__m512i; 8]) -> [__m512i; 8] {
+        // SAFETY: as in the `Wide` implementation.
         unsafe {
             let [a0, a1, a2, a3, a4, a5, a6, a7] = [
                 _mm512_unpacklo_epi64(rows[0], rows[1]),
@@ -291,18 +283,4 @@ impl Avx512 {
             [r0, r1, r2, r3, r4, r5, r6, r7]
         }
     }
-}
-
-/// The first word of body `index` in an array of solver bodies taken as words:
-/// index · [`BODY_WORDS`].
-#[inline(always)]
-pub(crate) fn first_word(index: u32) -> usize {
-    index as usize * BODY_WORDS as usize
-}
-
-/// The mask of a 64-byte load or store of lane `l`'s row: all eight words when `l` is
-/// one of the lanes of `active`, none otherwise.
-#[inline(always)]
-fn lane_mask(active: u8, l: usize) -> u8 {
-    0u8.wrapping_sub((active >> l) & 1)
 }
