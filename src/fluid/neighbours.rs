@@ -37,7 +37,7 @@ pub struct NeighbourLists<R: Real> {
 }
 
 /// The family of [`NeighbourLists`] over the scalar formats, for
-/// [`Real::as_fixed`](crate::math::Real::as_fixed).
+/// [`Real::as_fixed`].
 pub(crate) struct Lists;
 
 impl OverReal for Lists {

@@ -1,6 +1,6 @@
 //! The `Real` trait: the one scalar interface every algorithm in fixstep is written against.
 //!
-//! The engine simulates with [`Fx`](super::Fx) (I32F32). The same generic code also runs on
+//! The engine simulates with [`Fx`] (I32F32). The same generic code also runs on
 //! [`FxI48F16`](super::FxI48F16), [`FxI40F24`](super::FxI40F24) and plain `f64`, so that
 //! benchmarks can compare number formats in one run. Only the fixed-point types are
 //! deterministic across machines; `f64` exists as a reference and is never used by a

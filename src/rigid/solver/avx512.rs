@@ -3,7 +3,7 @@
 //! square roots of [`sqrt`]) and the box–box face points' world transform. Loads and
 //! stores of lane arrays, sums, the checked `*` of values within the bound [−2⁴⁶, 2⁴⁶),
 //! and the bound check itself. (The other kernels use the same arithmetic through
-//! [`Wide`](super::wide::Wide), whose documentation derives the products, with AVX-512 or
+//! [`Wide`](crate::math::wide::Wide), whose documentation derives the products, with AVX-512 or
 //! AVX2.)
 //!
 //! Values within the bound have products below 2⁶⁰ after rounding and sums of a few of

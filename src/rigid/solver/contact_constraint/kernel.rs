@@ -1,7 +1,7 @@
 //! The solve and warm-start passes of an independent block of I32F32 constraints as
 //! kernels: the eight lanes side by side, one `i64` lane per constraint, with the bits of
 //! [`ContactBlock::solve_lanes`] and [`ContactBlock::warm_start_lanes`]. They are written
-//! once against [`Wide`] and run with its AVX-512 backend where the processor has AVX-512F
+//! once against [`Wide`](crate::math::wide::Wide) and run with its AVX-512 backend where the processor has AVX-512F
 //! and DQ, else with its AVX2 backend where it has AVX2; elsewhere the blocks go lane by
 //! lane. (A portable backend, eight `i64` in an array, was measured slower than the lanes'
 //! scalar code, so there is none.)
@@ -44,13 +44,13 @@
 //! # Products
 //!
 //! The checked `*` and the fused dot product of checked values, exact in `i64` lanes, are
-//! those of [`Wide`]: [`Wide::mul`], [`Wide::times`] and [`Wide::dot`].
+//! those of [`Wide`](crate::math::wide::Wide): [`Wide::mul`](crate::math::wide::Wide::mul), [`Wide::times`](crate::math::wide::Wide::times) and [`Wide::dot`](crate::math::wide::Wide::dot).
 //!
 //! # Narrow products
 //!
 //! When one factor a lies in [−2³¹, 2³¹) (|a| < ½), it is its own low half (a_h = 0) and
 //! the product needs two multiplies of 32-bit halves, both exact in 64 bits:
-//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋ ([`Wide::times`]), about half the work of the
+//! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋ ([`Wide::times`](crate::math::wide::Wide::times)), about half the work of the
 //! wide form. In a contact row one factor of most products is small in SI units: a
 //! velocity (the dot products v·n, ω·(r × n), and the motions of the relax pass), or a
 //! velocity change per unit impulse (n/m, I⁻¹(r × n) and the like, below ½ for bodies
@@ -85,7 +85,7 @@ use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
 use crate::rigid::solver::wide_bodies::WideBodies;
 
-/// The kernel that took a block: with narrow products, or wide ones ([`Wide::times`]).
+/// The kernel that took a block: with narrow products, or wide ones ([`Wide::times`](crate::math::wide::Wide::times)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Kernel {
     Narrow,
@@ -322,7 +322,7 @@ pub(super) struct KernelFacts {
     /// Whether every velocity change per unit impulse (n/m, t/m, I⁻¹(r × n), I⁻¹(r × t),
     /// I⁻¹n) lies within the narrow bound [−2³¹, 2³¹) in the lanes and points in use
     /// (bodies heavier than 2 kg, with inertias to match): then the kernels try narrow
-    /// products ([`Wide::times`]) first. Cleared for the rest of the step when they fail.
+    /// products ([`Wide::times`](crate::math::wide::Wide::times)) first. Cleared for the rest of the step when they fail.
     narrow: bool,
 }
 
@@ -532,7 +532,7 @@ impl<W: WideBodies, const K: usize> Linear<W, K> {
 /// opposite on B; then per lane the friction impulses, v_a −= λ₁ t₁/m_a + λ₂ t₂/m_a,
 /// ω_a −= λ₁ I_a⁻¹(r_a × t₁) + λ₂ I_a⁻¹(r_a × t₂) + λ_twist I_a⁻¹n, and the opposite on B,
 /// as in [`ContactBlock::warm_start`] (zero impulses add zero, the same as skipping them).
-/// Narrow or wide products ([`Wide::times`]); the velocities, which enter no product here,
+/// Narrow or wide products ([`Wide::times`](crate::math::wide::Wide::times)); the velocities, which enter no product here,
 /// are checked against the wide bound when loaded, either way, and not after each impulse
 /// (see the module documentation). Returns false, having written nothing, when a value
 /// leaves its checked bound in a lane in use.
@@ -633,14 +633,14 @@ impl<W: WideBodies> Side<W> {
 
     /// The lanes where an angular velocity of either side, a factor of the next row's
     /// products ω·(r × n) and ω·(r × t), lies outside the bound of changing values
-    /// ([`Wide::beyond`]).
+    /// ([`Wide::beyond`](crate::math::wide::Wide::beyond)).
     #[inline(always)]
     fn spin_beyond<const NARROW: bool>(w: W, a: &Self, b: &Self) -> u8 {
         w.beyond3::<NARROW>(a.w) | w.beyond3::<NARROW>(b.w)
     }
 
     /// The lanes where a value lies outside the bound of changing values
-    /// ([`Wide::beyond`]).
+    /// ([`Wide::beyond`](crate::math::wide::Wide::beyond)).
     #[inline(always)]
     fn beyond<const NARROW: bool>(&self, w: W) -> u8 {
         w.beyond3::<NARROW>(self.v)
@@ -721,7 +721,7 @@ impl BodyLanes {
 }
 
 /// The kernel, for the biased pass or (`RELAX`) the relax pass, with narrow or wide
-/// products ([`Wide::times`]). Returns false, having written nothing, when a value leaves
+/// products ([`Wide::times`](crate::math::wide::Wide::times)). Returns false, having written nothing, when a value leaves
 /// its checked bound in a lane in use.
 ///
 /// The biased pass reads the separations the block keeps; the relax pass computes them
@@ -1044,7 +1044,7 @@ pub(super) fn points_in_use<W: WideBodies>(w: W, counts: W::V, active: u8, k: us
     w.greater(counts, w.splat(k as i64)) & active
 }
 
-/// a₁λ₁ + … + a_Kλ_K for K vectors of coefficients and K impulses ([`Wide::times`]),
+/// a₁λ₁ + … + a_Kλ_K for K vectors of coefficients and K impulses ([`Wide::times`](crate::math::wide::Wide::times)),
 /// summed in that order.
 #[inline(always)]
 fn combine<W: WideBodies, const NARROW: bool, const K: usize>(
