@@ -21,7 +21,7 @@
 #[cfg(test)]
 mod tests;
 
-use crate::math::{Real, Vec3};
+use crate::math::{OverReal, Real, Vec3};
 
 /// The most cells [`CellGrid::for_each_within`] reaches from a point's cell along an axis:
 /// a radius of 3.5 supports (the searches use 1 and 1.25).
@@ -49,6 +49,13 @@ pub struct CellGrid<R: Real> {
     /// The cell coordinates of each point, while a fill finds the window and sorts the
     /// points into its cells (scratch).
     coords_of: Vec<[u32; 3]>,
+}
+
+/// The family of [`CellGrid`] over the scalar formats, for [`Real::as_fixed`].
+pub struct CellGridOf;
+
+impl OverReal for CellGridOf {
+    type Of<R: Real> = CellGrid<R>;
 }
 
 /// A box of cells: `dims` cells along each axis from the cell `lower`; no cell when any

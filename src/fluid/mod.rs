@@ -38,8 +38,6 @@ mod emitter;
 pub mod grid;
 mod hashing;
 pub mod kernel;
-#[cfg(target_arch = "x86_64")]
-mod lanes;
 mod metrics;
 pub mod neighbours;
 mod row_sums;

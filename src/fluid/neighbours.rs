@@ -13,7 +13,7 @@
 //! ([`NeighbourLists::build_keeping_candidates`]).
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 pub mod skin;
 #[cfg(test)]
 mod tests;
@@ -38,9 +38,9 @@ pub struct NeighbourLists<R: Real> {
 
 /// The family of [`NeighbourLists`] over the scalar formats, for
 /// [`Real::as_fixed`].
-pub(crate) struct Lists;
+pub struct NeighbourListsOf;
 
-impl OverReal for Lists {
+impl OverReal for NeighbourListsOf {
     type Of<R: Real> = NeighbourLists<R>;
 }
 
@@ -74,8 +74,8 @@ impl<R: Real> NeighbourLists<R> {
     /// than the kernel support, except the query itself when `skip_self` (the queries are
     /// the points).
     ///
-    /// In I32F32 on x86-64 with AVX-512F the candidates are tested, and the survivors'
-    /// kernel values computed, eight at a time ([`avx512`]), with the same lists as
+    /// In I32F32 on x86-64 with AVX-512 or AVX2 the candidates are tested, and the
+    /// survivors' kernel values computed, eight at a time ([`kernel`]), with the same lists as
     /// [`NeighbourLists::build_scalar`] bit for bit.
     pub fn build(
         &mut self,
@@ -86,7 +86,7 @@ impl<R: Real> NeighbourLists<R> {
         skip_self: bool,
     ) {
         #[cfg(target_arch = "x86_64")]
-        if avx512::build(self, queries, points, grid, kernel, skip_self) {
+        if kernel::build(self, queries, points, grid, kernel, skip_self) {
             return;
         }
         self.build_scalar(queries, points, grid, kernel, skip_self);
@@ -106,7 +106,7 @@ impl<R: Real> NeighbourLists<R> {
         kernel: &Kernel<R>,
     ) {
         #[cfg(target_arch = "x86_64")]
-        if avx512::build_both(
+        if kernel::build_both(
             [&mut *fluid, &mut *walls],
             positions,
             [(positions, grid), (boundary, boundary_grid)],

@@ -37,7 +37,9 @@ mod kernel;
 #[cfg(test)]
 mod tests;
 
-use super::neighbours::{Lists, NeighbourLists};
+use super::neighbours::NeighbourLists;
+#[cfg(target_arch = "x86_64")]
+use super::neighbours::NeighbourListsOf;
 #[cfg(target_arch = "x86_64")]
 use crate::math::over_real::{ScalarVec, Scalars, VectorVec, Vectors};
 use crate::math::{Real, Vec3};
@@ -63,7 +65,7 @@ pub(crate) fn density_rates<R: Real>(
     if let GradientBits(Some(bits)) = gradients
         && let Some(backend) = crate::math::wide::backend()
         && let (Some(lists), Some(velocities), Some(out)) = (
-            R::as_fixed::<Lists>(lists),
+            R::as_fixed::<NeighbourListsOf>(lists),
             R::as_fixed::<Vectors>(velocities),
             R::as_fixed_mut::<ScalarVec>(out),
         )
@@ -106,7 +108,7 @@ pub(crate) fn pressure_pushes<R: Real>(
     if let GradientBits(Some(bits)) = gradients
         && let Some(backend) = crate::math::wide::backend()
         && let (Some(lists), Some(stiffness), Some(out)) = (
-            R::as_fixed::<Lists>(lists),
+            R::as_fixed::<NeighbourListsOf>(lists),
             R::as_fixed::<Scalars>(stiffness),
             R::as_fixed_mut::<VectorVec>(out),
         )
@@ -148,7 +150,7 @@ pub(crate) fn smoothing_sums<R: Real>(
     #[cfg(target_arch = "x86_64")]
     if let Some(backend) = crate::math::wide::backend()
         && let (Some(lists), Some(velocities), Some(inv_density), Some(out)) = (
-            R::as_fixed::<Lists>(lists),
+            R::as_fixed::<NeighbourListsOf>(lists),
             R::as_fixed::<Vectors>(velocities),
             R::as_fixed::<Scalars>(inv_density),
             R::as_fixed_mut::<VectorVec>(out),
@@ -190,7 +192,7 @@ pub(crate) fn gradient_sums<R: Real>(
     #[cfg(target_arch = "x86_64")]
     if let Some(backend) = crate::math::wide::backend()
         && let (Some(fixed_lists), Some(fixed_sums), Some(fixed_squares)) = (
-            R::as_fixed::<Lists>(lists),
+            R::as_fixed::<NeighbourListsOf>(lists),
             R::as_fixed_mut::<VectorVec>(sums),
             R::as_fixed_mut::<ScalarVec>(squares),
         )

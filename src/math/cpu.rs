@@ -66,15 +66,42 @@ pub(crate) fn avx512dq() -> bool {
     cap() >= SimdCap::Avx512 && std::arch::is_x86_feature_detected!("avx512dq")
 }
 
-/// Whether the kernels may use the AVX-512 backend of [`wide`](super::wide): AVX-512F and
-/// DQ.
+/// Whether the kernels may use the AVX-512 backend of [`wide`](super::wide): AVX-512F, CD
+/// and DQ.
 #[cfg(target_arch = "x86_64")]
 pub(crate) fn avx512_kernels() -> bool {
-    avx512f() && avx512dq()
+    avx512f() && avx512cd() && avx512dq()
 }
 
 /// Whether the kernels may use AVX2.
 #[cfg(target_arch = "x86_64")]
 pub(crate) fn avx2() -> bool {
     cap() >= SimdCap::Avx2 && std::arch::is_x86_feature_detected!("avx2")
+}
+
+/// Runs `f` with each backend of the vector kernels this processor runs
+/// ([`wide::backends`](super::wide::backends)), then with none (the scalar forms); once,
+/// with none, off x86-64. For tests that compare the kernels with the scalar forms.
+#[cfg(test)]
+pub(crate) fn each_backend(mut f: impl FnMut()) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use super::wide::{backends, with_backend};
+        for backend in backends() {
+            with_backend(Some(backend), &mut f);
+        }
+        with_backend(None, f);
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    f();
+}
+
+/// Whether vector kernels run on this thread now (under [`each_backend`], with the
+/// backend it chose).
+#[cfg(test)]
+pub(crate) fn kernels_present() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return super::wide::backend().is_some();
+    #[cfg(not(target_arch = "x86_64"))]
+    false
 }

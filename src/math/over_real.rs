@@ -13,6 +13,13 @@ pub trait OverReal {
     type Of<R: Real>: ?Sized;
 }
 
+/// `R` itself.
+pub struct Scalar;
+
+impl OverReal for Scalar {
+    type Of<R: Real> = R;
+}
+
 /// `[R]`.
 pub struct Scalars;
 

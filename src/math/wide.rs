@@ -1,6 +1,6 @@
 //! The one lane abstraction of the step's vector kernels: eight `i64` lanes holding I32F32
 //! bits, behind the trait [`Wide`], with two backends for x86_64: AVX-512
-//! ([`avx512::Avx512`], AVX-512F and DQ) and AVX2 ([`avx2::Avx2`]). A kernel is written once,
+//! ([`avx512::Avx512`], AVX-512F, CD and DQ) and AVX2 ([`avx2::Avx2`]). A kernel is written once,
 //! generic over [`Wide`], and gives the same bits with either backend; one place,
 //! [`backend`], chooses the backend for this processor under the cap `FIXSTEP_SIMD`
 //! ([`cpu`](super::cpu)), and [`kernel_entry!`] compiles each kernel once per backend with
@@ -80,7 +80,7 @@ pub(crate) enum Backend {
     Avx2(Avx2),
 }
 
-/// The backend of the kernels on this processor: AVX-512 (F and DQ), else AVX2; none
+/// The backend of the kernels on this processor: AVX-512 (F, CD and DQ), else AVX2; none
 /// without either (the blocks then go lane by lane). Tests may choose one the processor
 /// has, or none, for the thread (`with_backend`).
 #[inline]
@@ -131,8 +131,8 @@ macro_rules! kernel_entry {
         $vis fn $name(backend: $crate::math::wide::Backend, $($arg: $ty),*) -> $ret {
             use $crate::math::wide::{Backend, avx2::Avx2, avx512::Avx512};
             /// # Safety
-            /// The processor must have AVX-512F and AVX-512DQ.
-            #[target_feature(enable = "avx512f,avx512dq")]
+            /// The processor must have AVX-512F, CD and DQ.
+            #[target_feature(enable = "avx512f,avx512cd,avx512dq")]
             unsafe fn on_avx512(wide: Avx512, $($arg: $ty),*) -> $ret {
                 $kernel(wide, $($arg),*)
             }
@@ -228,6 +228,42 @@ pub(crate) trait Wide: Copy {
     /// # Safety
     /// `count` ≤ [`LANES`], and the `count` numbers must be readable.
     unsafe fn load_prefix_u32(self, numbers: *const u32, count: usize) -> Self::V;
+
+    /// a·2ⁿ, the bits shifted out lost (n < 64).
+    fn shift_left(self, a: Self::V, n: u32) -> Self::V;
+    /// ⌊a/2ⁿ⌋ of a as an unsigned number (n < 64).
+    fn shift_right_unsigned(self, a: Self::V, n: u32) -> Self::V;
+    /// ⌊a/2ⁿ⌋, signed (n < 64).
+    fn shift_right(self, a: Self::V, n: u32) -> Self::V;
+    /// a·2^(nₗ) per lane, zero where nₗ ≥ 64.
+    fn shift_left_lanes(self, a: Self::V, n: Self::V) -> Self::V;
+    /// ⌊a/2^(nₗ)⌋ unsigned per lane, zero where nₗ ≥ 64.
+    fn shift_right_unsigned_lanes(self, a: Self::V, n: Self::V) -> Self::V;
+    /// The unsigned low 32 bits of a times those of b, in 64 bits.
+    fn mul_unsigned_low_halves(self, a: Self::V, b: Self::V) -> Self::V;
+    /// The number of leading zero bits of each lane (64 for zero).
+    fn leading_zeros(self, a: Self::V) -> Self::V;
+    /// `table[index mod 16]` per lane: the index's low four bits choose the word.
+    fn lookup16(self, table: &[i64; 16], index: Self::V) -> Self::V;
+
+    /// Writes the lanes of `keep`, in lane order, to the first words at `out`; the words
+    /// after them, up to eight in all, may be overwritten.
+    ///
+    /// # Safety
+    /// Eight words at `out` must be writable.
+    unsafe fn store_kept(self, out: *mut i64, keep: u8, a: Self::V);
+
+    /// The lanes where a > b, unsigned.
+    #[inline(always)]
+    fn greater_unsigned(self, a: Self::V, b: Self::V) -> u8 {
+        !self.at_least_unsigned(b, a)
+    }
+
+    /// The unsigned minimum.
+    #[inline(always)]
+    fn min_unsigned(self, a: Self::V, b: Self::V) -> Self::V {
+        self.select(self.greater_unsigned(a, b), b, a)
+    }
 
     /// The sum of the lanes, modulo 2⁶⁴.
     #[inline(always)]

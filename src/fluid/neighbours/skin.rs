@@ -97,7 +97,7 @@ impl CandidateRows {
         self.start.push(0);
     }
 
-    /// Appends the candidates `candidates` to the current row (the AVX-512 search's way).
+    /// Appends the candidates `candidates` to the current row (the vector search's way).
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     pub(super) fn extend(&mut self, candidates: impl IntoIterator<Item = u32>) {
@@ -256,7 +256,7 @@ impl<R: Real> NeighbourLists<R> {
     /// `candidates` that hold every pair the kernel accepts, in the order it would list
     /// them: the candidates that pass [`Kernel::evaluate`], in order, with its values.
     ///
-    /// In I32F32 on x86-64 with AVX-512F eight candidates at a time, with the same lists
+    /// In I32F32 on x86-64 with AVX-512 or AVX2 eight candidates at a time, with the same lists
     /// as [`NeighbourLists::evaluate_scalar`] bit for bit.
     pub fn evaluate(
         &mut self,
@@ -266,7 +266,7 @@ impl<R: Real> NeighbourLists<R> {
         kernel: &Kernel<R>,
     ) {
         #[cfg(target_arch = "x86_64")]
-        if super::avx512::evaluate(self, candidates, queries, points, kernel) {
+        if super::kernel::evaluate(self, candidates, queries, points, kernel) {
             return;
         }
         self.evaluate_scalar(candidates, queries, points, kernel);
@@ -300,7 +300,7 @@ impl<R: Real> NeighbourLists<R> {
     /// evaluated with [`Kernel::evaluate`] while the row is fresh in cache, so the lists are
     /// those [`NeighbourLists::evaluate`] finds from the candidates (the same candidates in
     /// the same order, the same offsets through the same operations), which are the fresh
-    /// search's (module documentation). In I32F32 on x86-64 with AVX-512F the candidates
+    /// search's (module documentation). In I32F32 on x86-64 with AVX-512 or AVX2 the candidates
     /// are selected, then evaluated, eight at a time, with the same rows and lists as
     /// [`NeighbourLists::build_keeping_candidates_scalar`] bit for bit.
     pub fn build_keeping_candidates(
@@ -315,7 +315,7 @@ impl<R: Real> NeighbourLists<R> {
         #[cfg(target_arch = "x86_64")]
         {
             let (points, grid) = searched;
-            if super::avx512::select(candidates, queries, points, grid, reach, skip_self) {
+            if super::kernel::select(candidates, queries, points, grid, reach, skip_self) {
                 self.evaluate(candidates, queries, points, kernel);
                 return;
             }

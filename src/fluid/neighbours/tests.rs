@@ -1,5 +1,5 @@
-//! The neighbour search's dispatch (the AVX-512 candidate test where it runs) against the
-//! scalar form, entry for entry, on random points, a lattice (pairs exactly one spacing
+//! The neighbour search's dispatch, with every backend of the kernel this processor runs
+//! and with none, against the scalar form, entry for entry, on random points, a lattice (pairs exactly one spacing
 //! apart, ties of the support) and points far outside the grid: the fresh search, the
 //! selection of candidates with a skin and the lists evaluated from them (which must be
 //! the fresh search's).
@@ -8,11 +8,26 @@ use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
 use crate::fluid::grid::CellGrid;
 use crate::fluid::kernel::Kernel;
+use crate::math::cpu::{each_backend, kernels_present};
 use crate::math::{Fx, Pcg32, Real, Vec3};
 
-/// Both searches of `queries` among `points` (a grid over [0, 0.1 m]³), compared; returns
-/// whether the kernel took the search.
+/// Both searches of `queries` among `points` (a grid over [0, 0.1 m]³), compared, with
+/// every backend; returns whether the kernel took the search, which must be the same
+/// answer for every backend.
 fn compare(queries: &[Vec3<Fx>], points: &[Vec3<Fx>], spacing: Fx, skip_self: bool) -> bool {
+    let mut taken = None;
+    each_backend(|| {
+        let now = compare_once(queries, points, spacing, skip_self);
+        if kernels_present() {
+            assert!(taken.is_none_or(|t| t == now), "backends disagree");
+            taken = Some(now);
+        }
+    });
+    taken.unwrap_or(false)
+}
+
+/// [`compare`] with the backend in force.
+fn compare_once(queries: &[Vec3<Fx>], points: &[Vec3<Fx>], spacing: Fx, skip_self: bool) -> bool {
     let kernel = Kernel::<Fx>::calibrated(spacing, Fx::TWO);
     let mut grid = CellGrid::new(
         Vec3::ZERO,
@@ -78,9 +93,9 @@ fn kernel_takes_rows(
 ) -> bool {
     let reach = Reach::new(kernel, grid);
     let mut selected = CandidateRows::default();
-    let selects = super::avx512::select(&mut selected, queries, points, grid, &reach, skip_self);
+    let selects = super::kernel::select(&mut selected, queries, points, grid, &reach, skip_self);
     let mut lists = NeighbourLists::default();
-    let evaluates = super::avx512::evaluate(&mut lists, rows, queries, points, kernel);
+    let evaluates = super::kernel::evaluate(&mut lists, rows, queries, points, kernel);
     assert_eq!(selects, evaluates);
     selects
 }
@@ -106,18 +121,11 @@ fn kernel_takes(
     skip_self: bool,
 ) -> bool {
     let mut lists = NeighbourLists::default();
-    super::avx512::build(&mut lists, queries, points, grid, kernel, skip_self)
+    super::kernel::build(&mut lists, queries, points, grid, kernel, skip_self)
 }
 
 #[cfg(not(target_arch = "x86_64"))]
 fn kernel_takes(_: &[Vec3<Fx>], _: &[Vec3<Fx>], _: &CellGrid<Fx>, _: &Kernel<Fx>, _: bool) -> bool {
-    false
-}
-
-fn kernels_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return crate::math::cpu::avx512f() && crate::math::cpu::avx512cd();
-    #[cfg(not(target_arch = "x86_64"))]
     false
 }
 

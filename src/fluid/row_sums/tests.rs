@@ -7,6 +7,7 @@ use super::{
     pressure_pushes, pressure_pushes_scalar, smoothing_sums, smoothing_sums_scalar,
 };
 use crate::fluid::neighbours::NeighbourLists;
+use crate::math::cpu::{each_backend, kernels_present};
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Real, Vec3};
 
@@ -65,20 +66,6 @@ fn lists(
         lists.start.push(lists.index.len() as u32);
     }
     lists
-}
-
-/// Runs `f` with each backend of the kernels this processor runs, then with none.
-fn each_backend(mut f: impl FnMut()) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use crate::math::wide::{backends, with_backend};
-        for backend in backends() {
-            with_backend(Some(backend), &mut f);
-        }
-        with_backend(None, f);
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    f();
 }
 
 /// Compares the four sums on one random case (inverse densities of the stiffnesses' bits)
@@ -183,14 +170,6 @@ fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: 
 
 #[cfg(not(target_arch = "x86_64"))]
 fn kernel_takes(_: &NeighbourLists<Fx>, _: &[Vec3<Fx>], _: &[Fx]) -> bool {
-    false
-}
-
-/// Whether kernels run with the backend in force.
-fn kernels_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return crate::math::wide::backend().is_some();
-    #[cfg(not(target_arch = "x86_64"))]
     false
 }
 

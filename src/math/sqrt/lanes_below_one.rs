@@ -1,4 +1,5 @@
-//! √x per lane for 0 ≤ x < 1 as I32F32 bits (0 ≤ x < 2³²), in AVX-512F and CD:
+//! √x per lane for 0 ≤ x < 1 as I32F32 bits (0 ≤ x < 2³²), on the lanes of
+//! [`Wide`] (every backend):
 //! round(√n) with n = x·2³², correctly rounded to nearest like
 //! [`Real::sqrt`](crate::math::Real::sqrt) of I32F32, from an estimate by Newton's method
 //! on integers that two exact steps then correct. The fluid's neighbour search takes the
@@ -42,13 +43,7 @@
 //! search's lanes that failed the support test) hold meaningless values: the callers
 //! drop or replace them.
 
-use core::arch::x86_64::{
-    __m512i, _mm512_add_epi64, _mm512_and_si512, _mm512_cmpgt_epu64_mask, _mm512_loadu_si512,
-    _mm512_lzcnt_epi64, _mm512_mask_add_epi64, _mm512_mask_sub_epi64, _mm512_min_epu64,
-    _mm512_mul_epi32, _mm512_mul_epu32, _mm512_permutex2var_epi64, _mm512_set1_epi64,
-    _mm512_slli_epi64, _mm512_sllv_epi64, _mm512_srai_epi64, _mm512_srli_epi64, _mm512_srlv_epi64,
-    _mm512_sub_epi64,
-};
+use crate::math::wide::Wide;
 
 /// Y = 2³⁰/√u at the middle of each sixteenth [j/16, (j + 1)/16) of u, for j = 4..15
 /// (√(2⁶⁰·32/(2j + 1)), rounded down; below 2³¹ for every j); 0 for j < 4, which only
@@ -72,103 +67,91 @@ const RECIPROCAL_ROOTS: [i64; 16] = {
     table
 };
 
-/// round(√(x·2³²)) per lane for 0 ≤ x < 2³², in `BLOCKS` registers side by side (module
-/// documentation).
-#[inline]
-#[target_feature(enable = "avx512f,avx512cd")]
-pub(crate) fn sqrt<const BLOCKS: usize>(x: [__m512i; BLOCKS]) -> [__m512i; BLOCKS] {
-    let one = _mm512_set1_epi64(1);
-    let below_2_32 = _mm512_set1_epi64(u32::MAX.into());
-    // SAFETY: 16 readable i64 at the table's start, eight from each pointer.
-    let table = unsafe {
-        [
-            _mm512_loadu_si512(RECIPROCAL_ROOTS.as_ptr().cast()),
-            _mm512_loadu_si512(RECIPROCAL_ROOTS.as_ptr().add(8).cast()),
-        ]
-    };
-    let shift: [__m512i; BLOCKS] = core::array::from_fn(|b| {
-        _mm512_and_si512(
-            _mm512_sub_epi64(_mm512_lzcnt_epi64(x[b]), _mm512_set1_epi64(32)),
-            _mm512_set1_epi64(!1),
-        )
-    });
-    let m: [__m512i; BLOCKS] = core::array::from_fn(|b| _mm512_sllv_epi64(x[b], shift[b]));
-    let mut y: [__m512i; BLOCKS] = core::array::from_fn(|b| {
-        _mm512_permutex2var_epi64(table[0], _mm512_srli_epi64::<28>(m[b]), table[1])
-    });
-    for _ in 0..3 {
-        y = core::array::from_fn(|b| {
-            let a = _mm512_srli_epi64::<31>(_mm512_mul_epu32(y[b], y[b]));
-            let e = _mm512_srai_epi64::<29>(_mm512_sub_epi64(
-                _mm512_set1_epi64(1 << 61),
-                _mm512_mul_epu32(m[b], a),
-            ));
-            let step = _mm512_mul_epi32(_mm512_srli_epi64::<1>(y[b]), e);
-            _mm512_add_epi64(y[b], _mm512_srai_epi64::<32>(step))
-        });
+/// round(√(x·2³²)) per lane for 0 ≤ x < 2³², in `BLOCKS` vectors side by side (module
+/// documentation), so that their chains of dependent steps overlap.
+#[inline(always)]
+pub(crate) fn sqrt<W: Wide, const BLOCKS: usize>(w: W, x: [W::V; BLOCKS]) -> [W::V; BLOCKS] {
+    let one = w.splat(1);
+    let below_2_32 = w.splat(u32::MAX.into());
+    let mut shift = [w.zero(); BLOCKS];
+    let mut m = [w.zero(); BLOCKS];
+    let mut y = [w.zero(); BLOCKS];
+    for b in 0..BLOCKS {
+        shift[b] = w.and(w.sub(w.leading_zeros(x[b]), w.splat(32)), w.splat(!1));
+        m[b] = w.shift_left_lanes(x[b], shift[b]);
+        y[b] = w.lookup16(&RECIPROCAL_ROOTS, w.shift_right_unsigned(m[b], 28));
     }
-    let s0: [__m512i; BLOCKS] = core::array::from_fn(|b| {
-        _mm512_min_epu64(
-            _mm512_srli_epi64::<30>(_mm512_mul_epu32(m[b], y[b])),
+    for _ in 0..3 {
+        for b in 0..BLOCKS {
+            let a = w.shift_right_unsigned(w.mul_unsigned_low_halves(y[b], y[b]), 31);
+            let e = w.shift_right(
+                w.sub(w.splat(1 << 61), w.mul_unsigned_low_halves(m[b], a)),
+                29,
+            );
+            let step = w.mul_low_halves(w.shift_right_unsigned(y[b], 1), e);
+            y[b] = w.add(y[b], w.shift_right(step, 32));
+        }
+    }
+    let mut r = [w.zero(); BLOCKS];
+    for b in 0..BLOCKS {
+        let s0 = w.min_unsigned(
+            w.shift_right_unsigned(w.mul_unsigned_low_halves(m[b], y[b]), 30),
             below_2_32,
-        )
-    });
-    let mut r: [__m512i; BLOCKS] = core::array::from_fn(|b| {
-        let delta = _mm512_sub_epi64(
-            _mm512_slli_epi64::<32>(m[b]),
-            _mm512_mul_epu32(s0[b], s0[b]),
         );
-        let step = _mm512_mul_epi32(_mm512_srai_epi64::<8>(delta), _mm512_srli_epi64::<1>(y[b]));
-        let s1 = _mm512_min_epu64(
-            _mm512_add_epi64(s0[b], _mm512_srai_epi64::<54>(step)),
-            below_2_32,
-        );
-        _mm512_srlv_epi64(s1, _mm512_srli_epi64::<1>(shift[b]))
-    });
-    let n: [__m512i; BLOCKS] = core::array::from_fn(|b| _mm512_slli_epi64::<32>(x[b]));
-    r = core::array::from_fn(|b| {
-        let over = _mm512_cmpgt_epu64_mask(_mm512_mul_epu32(r[b], r[b]), n[b]);
-        _mm512_mask_sub_epi64(r[b], over, r[b], one)
-    });
-    r = core::array::from_fn(|b| {
-        let rest = _mm512_sub_epi64(n[b], _mm512_mul_epu32(r[b], r[b]));
-        let under = _mm512_cmpgt_epu64_mask(rest, _mm512_add_epi64(r[b], r[b]));
-        _mm512_mask_add_epi64(r[b], under, r[b], one)
-    });
-    core::array::from_fn(|b| {
-        let rest = _mm512_sub_epi64(n[b], _mm512_mul_epu32(r[b], r[b]));
-        let up = _mm512_cmpgt_epu64_mask(rest, r[b]);
-        _mm512_mask_add_epi64(r[b], up, r[b], one)
-    })
+        let delta = w.sub(w.shift_left(m[b], 32), w.mul_unsigned_low_halves(s0, s0));
+        let step = w.mul_low_halves(w.shift_right(delta, 8), w.shift_right_unsigned(y[b], 1));
+        let s1 = w.min_unsigned(w.add(s0, w.shift_right(step, 54)), below_2_32);
+        r[b] = w.shift_right_unsigned_lanes(s1, w.shift_right_unsigned(shift[b], 1));
+    }
+    for b in 0..BLOCKS {
+        let n = w.shift_left(x[b], 32);
+        let over = w.greater_unsigned(w.mul_unsigned_low_halves(r[b], r[b]), n);
+        r[b] = w.select(over, w.sub(r[b], one), r[b]);
+        let rest = w.sub(n, w.mul_unsigned_low_halves(r[b], r[b]));
+        let under = w.greater_unsigned(rest, w.add(r[b], r[b]));
+        r[b] = w.select(under, w.add(r[b], one), r[b]);
+        let rest = w.sub(n, w.mul_unsigned_low_halves(r[b], r[b]));
+        let up = w.greater_unsigned(rest, r[b]);
+        r[b] = w.select(up, w.add(r[b], one), r[b]);
+    }
+    r
 }
 
 #[cfg(test)]
 mod tests {
     use super::sqrt;
+    use crate::math::wide::{Backend, Wide, backends, kernel_entry};
     use crate::math::{Fx, Pcg32, Real};
-    use core::arch::x86_64::{__m512i, _mm512_loadu_si512, _mm512_storeu_si512};
 
-    fn present() -> bool {
-        crate::math::cpu::avx512f() && crate::math::cpu::avx512cd()
+    kernel_entry! {
+        /// Four blocks of roots with the instructions of `backend`.
+        fn roots_on(batch: &[i64; 32]) -> [i64; 32] = roots;
     }
 
-    /// The first values of `inputs` that the kernel, fed four blocks of eight at a time,
-    /// does not root as `Fx::sqrt` does (at most ten).
-    fn mismatches(inputs: impl Iterator<Item = i64>) -> Vec<i64> {
+    #[inline(always)]
+    fn roots<W: Wide>(w: W, batch: &[i64; 32]) -> [i64; 32] {
+        let mut blocks = [w.zero(); 4];
+        for (b, block) in blocks.iter_mut().enumerate() {
+            let mut words = [0; 8];
+            words.copy_from_slice(&batch[8 * b..8 * b + 8]);
+            *block = w.load_words(words);
+        }
+        let roots = sqrt(w, blocks);
+        let mut out = [0; 32];
+        for (b, root) in roots.into_iter().enumerate() {
+            out[8 * b..8 * b + 8].copy_from_slice(&w.store_words(root));
+        }
+        out
+    }
+
+    /// The first values of `inputs` that the kernel of `backend`, fed four blocks of eight
+    /// at a time, does not root as `Fx::sqrt` does (at most ten).
+    fn mismatches(backend: Backend, inputs: impl Iterator<Item = i64>) -> Vec<i64> {
         let mut bad = Vec::new();
         let mut batch = [0i64; 32];
         let mut len = 0;
         let check = |batch: &[i64; 32], len: usize, bad: &mut Vec<i64>| {
-            let mut out = [0i64; 32];
-            // SAFETY: AVX-512F and CD are present (checked by the callers); 32 values
-            // each way, eight per vector.
-            unsafe {
-                let load = |b: usize| _mm512_loadu_si512(batch[8 * b..].as_ptr().cast());
-                let roots: [__m512i; 4] = sqrt(core::array::from_fn(load));
-                for (b, root) in roots.into_iter().enumerate() {
-                    _mm512_storeu_si512(out[8 * b..].as_mut_ptr().cast(), root);
-                }
-            }
+            let out = roots_on(backend, batch);
             for (&x, &root) in batch[..len].iter().zip(&out) {
                 if root != Fx::from_bits(x).sqrt().to_bits() && bad.len() < 10 {
                     bad.push(x);
@@ -188,14 +171,11 @@ mod tests {
         bad
     }
 
-    /// Against `Fx::sqrt` over [0, 1): the edges, random values, and the values around
-    /// every square and every rounding midpoint of a sample of roots, where an estimate
-    /// one off would show.
+    /// Against `Fx::sqrt` over [0, 1), with every backend this processor runs: the edges,
+    /// random values, and the values around every square and every rounding midpoint of a
+    /// sample of roots, where an estimate one off would show.
     #[test]
     fn the_kernels_square_root_is_fx_sqrt() {
-        if !present() {
-            return;
-        }
         let mut rng = Pcg32::new(5, 3);
         let mut inputs: Vec<i64> = vec![0, 1, 2, 3, 4, (1 << 32) - 1, (1 << 32) - 2, 1 << 31];
         for bits in 0..32 {
@@ -216,17 +196,23 @@ mod tests {
             }
         }
         assert!(inputs.len() > 300_000);
-        assert_eq!(mismatches(inputs.into_iter()), Vec::<i64>::new());
+        for backend in backends() {
+            let bad = mismatches(backend, inputs.iter().copied());
+            assert_eq!(bad, Vec::<i64>::new(), "{backend:?}");
+        }
     }
 
-    /// Every x in [0, 2³²) against `Fx::sqrt`: the whole domain, 90 s in
-    /// release (`cargo test --release -- --ignored square_root`).
+    /// Every x in [0, 2³²) against `Fx::sqrt`, with every backend: the whole domain, 90 s
+    /// a backend in release (`cargo test --release -- --ignored square_root`).
     #[test]
-    #[ignore = "exhaustive over 2^32 values: 90 s in release, far longer in debug"]
+    #[ignore = "exhaustive over 2^32 values: 90 s a backend in release, far longer in debug"]
     fn the_kernels_square_root_is_fx_sqrt_for_every_input() {
-        if !present() {
-            return;
+        for backend in backends() {
+            assert_eq!(
+                mismatches(backend, 0..1 << 32),
+                Vec::<i64>::new(),
+                "{backend:?}"
+            );
         }
-        assert_eq!(mismatches(0..1 << 32), Vec::<i64>::new());
     }
 }

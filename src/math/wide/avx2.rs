@@ -17,13 +17,14 @@
 //! they are always inlined into a kernel entry point that enables AVX2.
 
 use core::arch::x86_64::{
-    __m256i, _mm_cmplt_epi32, _mm_maskload_epi32, _mm_set_epi32, _mm_set1_epi32, _mm256_add_epi64,
-    _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8, _mm256_castsi256_pd,
-    _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_cvtepu32_epi64, _mm256_loadu_si256,
-    _mm256_mask_i64gather_epi64, _mm256_maskload_epi64, _mm256_movemask_pd, _mm256_mul_epi32,
-    _mm256_or_si256, _mm256_set_epi64x, _mm256_set1_epi64x, _mm256_setzero_si256,
-    _mm256_slli_epi64, _mm256_srai_epi32, _mm256_srli_epi64, _mm256_storeu_si256, _mm256_sub_epi64,
-    _mm256_xor_si256,
+    __m256i, _mm_cmplt_epi32, _mm_cvtsi32_si128, _mm_maskload_epi32, _mm_set_epi32, _mm_set1_epi32,
+    _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8,
+    _mm256_castsi256_pd, _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_cvtepu32_epi64,
+    _mm256_i64gather_epi64, _mm256_loadu_si256, _mm256_mask_i64gather_epi64, _mm256_maskload_epi64,
+    _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32, _mm256_or_si256, _mm256_set_epi64x,
+    _mm256_set1_epi64x, _mm256_setzero_si256, _mm256_sll_epi64, _mm256_slli_epi64,
+    _mm256_sllv_epi64, _mm256_srai_epi32, _mm256_srl_epi64, _mm256_srli_epi64, _mm256_srlv_epi64,
+    _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
 };
 
 use super::{LANES, Wide};
@@ -246,6 +247,77 @@ impl Wide for Avx2 {
                 _mm256_mask_i64gather_epi64::<8>(self.zero()[0], base, words[0], low),
                 _mm256_mask_i64gather_epi64::<8>(self.zero()[1], base, words[1], high),
             ]
+        }
+    }
+
+    #[inline(always)]
+    fn shift_left(self, a: Self::V, n: u32) -> Self::V {
+        halves!(a, a, |a, _b| unsafe {
+            _mm256_sll_epi64(a, _mm_cvtsi32_si128(n as i32))
+        })
+    }
+
+    #[inline(always)]
+    fn shift_right_unsigned(self, a: Self::V, n: u32) -> Self::V {
+        halves!(a, a, |a, _b| unsafe {
+            _mm256_srl_epi64(a, _mm_cvtsi32_si128(n as i32))
+        })
+    }
+
+    /// The logical shift, with the sign's copies shifted in above it: (a >>ᵤ n) |
+    /// (s << (63 − n) << 1) for s = a >> 63 (all ones or zero).
+    #[inline(always)]
+    fn shift_right(self, a: Self::V, n: u32) -> Self::V {
+        let fill = self.shift_left(self.shift_left(self.sign(a), 63 - n), 1);
+        self.or(self.shift_right_unsigned(a, n), fill)
+    }
+
+    #[inline(always)]
+    fn shift_left_lanes(self, a: Self::V, n: Self::V) -> Self::V {
+        halves!(a, n, |a, n| unsafe { _mm256_sllv_epi64(a, n) })
+    }
+
+    #[inline(always)]
+    fn shift_right_unsigned_lanes(self, a: Self::V, n: Self::V) -> Self::V {
+        halves!(a, n, |a, n| unsafe { _mm256_srlv_epi64(a, n) })
+    }
+
+    #[inline(always)]
+    fn mul_unsigned_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
+        halves!(a, b, |a, b| unsafe { _mm256_mul_epu32(a, b) })
+    }
+
+    /// Lane by lane (AVX2 has no vector count).
+    #[inline(always)]
+    fn leading_zeros(self, a: Self::V) -> Self::V {
+        let words = self.store_words(a);
+        let mut counts = [0; LANES];
+        for (count, word) in counts.iter_mut().zip(words) {
+            *count = i64::from(word.leading_zeros());
+        }
+        self.load_words(counts)
+    }
+
+    /// A gather from the table, four lanes at a time.
+    #[inline(always)]
+    fn lookup16(self, table: &[i64; 16], index: Self::V) -> Self::V {
+        let index = self.and(index, self.splat(15));
+        // SAFETY: every index is below 16, so each load lies in the table.
+        halves!(index, index, |i, _j| unsafe {
+            _mm256_i64gather_epi64::<8>(table.as_ptr(), i)
+        })
+    }
+
+    /// The kept words one by one, each written and the position advanced by whether it is
+    /// kept (no branch).
+    #[inline(always)]
+    unsafe fn store_kept(self, out: *mut i64, keep: u8, a: Self::V) {
+        let words = self.store_words(a);
+        let mut at = 0;
+        for (l, word) in words.into_iter().enumerate() {
+            // SAFETY: `at` ≤ l < 8, within the eight writable words.
+            unsafe { *out.add(at) = word };
+            at += usize::from((keep >> l) & 1);
         }
     }
 

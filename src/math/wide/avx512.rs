@@ -1,4 +1,4 @@
-//! The AVX-512 backend of [`Wide`] (F and DQ): eight lanes in one `__m512i`, lane masks in
+//! The AVX-512 backend of [`Wide`] (F, CD and DQ): eight lanes in one `__m512i`, lane masks in
 //! mask registers. `_mm512_mul_epi32` gives the products of low halves and
 //! `_mm512_mullo_epi64` the low 64 bits of a 64 × 64 product; masked loads read a row's
 //! prefix and the values of a neighbour list, and a transpose of eight rows turns records
@@ -6,25 +6,28 @@
 //!
 //! The operations carry no `#[target_feature]` of their own: they are always inlined, and
 //! a kernel runs them inside an entry point with `#[target_feature(enable =
-//! "avx512f,avx512dq")]`, where they compile to single instructions.
+//! "avx512f,avx512cd,avx512dq")]`, where they compile to single instructions (CD for the
+//! leading-zero count; every processor with DQ has it).
 
 use core::arch::x86_64::{
-    __m512i, _mm_loadl_epi64, _mm_loadu_si128, _mm512_abs_epi64, _mm512_add_epi64,
-    _mm512_and_si512, _mm512_castsi128_si512, _mm512_castsi512_si256, _mm512_cmpeq_epi64_mask,
-    _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask, _mm512_cvtepu32_epi64, _mm512_inserti32x4,
-    _mm512_loadu_si512, _mm512_mask_blend_epi64, _mm512_mask_i64gather_epi64,
-    _mm512_mask_loadu_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_loadu_epi32,
-    _mm512_maskz_loadu_epi64, _mm512_max_epi64, _mm512_min_epi64, _mm512_mul_epi32,
-    _mm512_mullo_epi64, _mm512_or_si512, _mm512_permutex2var_epi64, _mm512_reduce_add_epi64,
-    _mm512_reduce_or_epi64, _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
-    _mm512_srai_epi64, _mm512_storeu_si512, _mm512_sub_epi64, _mm512_unpackhi_epi64,
-    _mm512_unpacklo_epi64, _mm512_xor_si512,
+    __m512i, _mm_cvtsi32_si128, _mm_loadl_epi64, _mm_loadu_si128, _mm512_abs_epi64,
+    _mm512_add_epi64, _mm512_and_si512, _mm512_castsi128_si512, _mm512_castsi512_si256,
+    _mm512_cmpeq_epi64_mask, _mm512_cmpge_epu64_mask, _mm512_cmpgt_epi64_mask,
+    _mm512_cmpgt_epu64_mask, _mm512_cvtepu32_epi64, _mm512_inserti32x4, _mm512_loadu_si512,
+    _mm512_lzcnt_epi64, _mm512_mask_blend_epi64, _mm512_mask_i64gather_epi64,
+    _mm512_mask_loadu_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_compress_epi64,
+    _mm512_maskz_loadu_epi32, _mm512_maskz_loadu_epi64, _mm512_max_epi64, _mm512_min_epi64,
+    _mm512_min_epu64, _mm512_mul_epi32, _mm512_mul_epu32, _mm512_mullo_epi64, _mm512_or_si512,
+    _mm512_permutex2var_epi64, _mm512_reduce_add_epi64, _mm512_reduce_or_epi64, _mm512_set_epi64,
+    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_sll_epi64, _mm512_sllv_epi64, _mm512_sra_epi64,
+    _mm512_srai_epi64, _mm512_srl_epi64, _mm512_srlv_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
+    _mm512_unpackhi_epi64, _mm512_unpacklo_epi64, _mm512_xor_si512,
 };
 
 use super::{LANES, Wide};
 use crate::math::{Fx, Vec3};
 
-/// The AVX-512 backend. A value exists only where the processor has AVX-512F and DQ.
+/// The AVX-512 backend. A value exists only where the processor has AVX-512F, CD and DQ.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Avx512(());
 
@@ -37,7 +40,7 @@ impl Avx512 {
 }
 
 // SAFETY (every `unsafe` block below that calls an intrinsic): a value of `Avx512` exists
-// only on a processor with AVX-512F and DQ (`Avx512::detect`).
+// only on a processor with AVX-512F, CD and DQ (`Avx512::detect`).
 impl Wide for Avx512 {
     type V = __m512i;
 
@@ -223,6 +226,71 @@ impl Wide for Avx512 {
             let numbers = _mm512_maskz_loadu_epi32(u16::from(mask), numbers.cast());
             _mm512_cvtepu32_epi64(_mm512_castsi512_si256(numbers))
         }
+    }
+
+    #[inline(always)]
+    fn shift_left(self, a: __m512i, n: u32) -> __m512i {
+        unsafe { _mm512_sll_epi64(a, _mm_cvtsi32_si128(n as i32)) }
+    }
+
+    #[inline(always)]
+    fn shift_right_unsigned(self, a: __m512i, n: u32) -> __m512i {
+        unsafe { _mm512_srl_epi64(a, _mm_cvtsi32_si128(n as i32)) }
+    }
+
+    #[inline(always)]
+    fn shift_right(self, a: __m512i, n: u32) -> __m512i {
+        unsafe { _mm512_sra_epi64(a, _mm_cvtsi32_si128(n as i32)) }
+    }
+
+    #[inline(always)]
+    fn shift_left_lanes(self, a: __m512i, n: __m512i) -> __m512i {
+        unsafe { _mm512_sllv_epi64(a, n) }
+    }
+
+    #[inline(always)]
+    fn shift_right_unsigned_lanes(self, a: __m512i, n: __m512i) -> __m512i {
+        unsafe { _mm512_srlv_epi64(a, n) }
+    }
+
+    #[inline(always)]
+    fn mul_unsigned_low_halves(self, a: __m512i, b: __m512i) -> __m512i {
+        unsafe { _mm512_mul_epu32(a, b) }
+    }
+
+    /// `vplzcntq` (AVX-512CD).
+    #[inline(always)]
+    fn leading_zeros(self, a: __m512i) -> __m512i {
+        unsafe { _mm512_lzcnt_epi64(a) }
+    }
+
+    /// One two-source permute of the table's two halves.
+    #[inline(always)]
+    fn lookup16(self, table: &[i64; 16], index: __m512i) -> __m512i {
+        // SAFETY: 16 readable words, eight from each pointer.
+        unsafe {
+            let low = _mm512_loadu_si512(table.as_ptr().cast());
+            let high = _mm512_loadu_si512(table.as_ptr().add(8).cast());
+            _mm512_permutex2var_epi64(low, index, high)
+        }
+    }
+
+    /// Packed in a register, then stored whole: a compressing store to memory is slow on
+    /// some processors (Zen 4).
+    #[inline(always)]
+    unsafe fn store_kept(self, out: *mut i64, keep: u8, a: __m512i) {
+        // SAFETY: the caller's promise: eight writable words.
+        unsafe { _mm512_storeu_si512(out.cast(), _mm512_maskz_compress_epi64(keep, a)) }
+    }
+
+    #[inline(always)]
+    fn greater_unsigned(self, a: __m512i, b: __m512i) -> u8 {
+        unsafe { _mm512_cmpgt_epu64_mask(a, b) }
+    }
+
+    #[inline(always)]
+    fn min_unsigned(self, a: __m512i, b: __m512i) -> __m512i {
+        unsafe { _mm512_min_epu64(a, b) }
     }
 
     #[inline(always)]

@@ -26,11 +26,12 @@
 //! The digits cost about 32 steps for values near one. When no value exceeds 1 (2³² raw),
 //! as for the twist arms and tangent lengths of contacts between boxes up to about a
 //! metre across, the roots come instead from Newton's method on integers
-//! ([`lanes_below_one`], which needs AVX-512CD for its
+//! ([`lanes_below_one`], written once on the lanes of [`Wide`](crate::math::wide::Wide), for its
 //! leading-zero counts), with 1 → 1 set apart (that form takes x < 2³²): the same
 //! correctly rounded integers, about a fifth of the work.
 
 use crate::math::sqrt::lanes_below_one;
+use crate::math::wide::avx512::Avx512;
 use core::arch::x86_64::{
     __m512i, _mm_cvtsi64_si128, _mm512_add_epi64, _mm512_cmpeq_epi64_mask, _mm512_cmpge_epu64_mask,
     _mm512_cmpgt_epu64_mask, _mm512_mask_add_epi64, _mm512_mask_mov_epi64, _mm512_mask_sub_epi64,
@@ -59,9 +60,12 @@ pub(crate) fn sqrt<const N: usize>(values: [__m512i; N]) -> [__m512i; N] {
     if largest == 0 {
         return [zero; N];
     }
-    if largest <= ONE && crate::math::cpu::avx512cd() {
-        // SAFETY: AVX-512F was detected by the kernels' callers, CD just above.
-        return unsafe { up_to_one(values) };
+    if largest <= ONE
+        && let Some(wide) = Avx512::detect()
+    {
+        // SAFETY: a value of the backend exists only where the processor has AVX-512F, CD
+        // and DQ.
+        return unsafe { up_to_one(wide, values) };
     }
     // Base-4 digits of the largest x, and x shifted so that its top digit is bits 63–62.
     let digits = (u64::BITS - largest.leading_zeros()).div_ceil(2);
@@ -93,11 +97,11 @@ pub(crate) fn sqrt<const N: usize>(values: [__m512i; N]) -> [__m512i; N] {
 /// whose root is itself.
 ///
 /// # Safety
-/// The processor must have AVX-512F and CD.
-#[target_feature(enable = "avx512f,avx512cd")]
-unsafe fn up_to_one<const N: usize>(values: [__m512i; N]) -> [__m512i; N] {
+/// The processor must have AVX-512F, CD and DQ (as `wide` proves).
+#[target_feature(enable = "avx512f,avx512cd,avx512dq")]
+unsafe fn up_to_one<const N: usize>(wide: Avx512, values: [__m512i; N]) -> [__m512i; N] {
     let one = _mm512_set1_epi64(ONE as i64);
-    let roots = lanes_below_one::sqrt(values);
+    let roots = lanes_below_one::sqrt(wide, values);
     core::array::from_fn(|i| {
         let at_one = _mm512_cmpeq_epi64_mask(values[i], one);
         _mm512_mask_mov_epi64(roots[i], at_one, one)

@@ -29,7 +29,7 @@ const _: () = {
 };
 
 // SAFETY (every `unsafe` block below that calls an intrinsic): a value of `Avx512` exists
-// only on a processor with AVX-512F and DQ (`Avx512::detect`).
+// only on a processor with AVX-512F, CD and DQ (`Avx512::detect`).
 impl WideBodies for Avx512 {
     /// One masked 64-byte load per lane (v, ω, Δp_x, Δp_y), and with the motions a second
     /// one (Δp_z, Δθ, ...), all eight unrolled so that the rows stay in registers, then a

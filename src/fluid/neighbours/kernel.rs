@@ -1,7 +1,6 @@
-//! The neighbour search in AVX-512F (with AVX-512CD's leading-zero count for the square
-//! root) for I32F32: eight candidates side by side through the support test, the
-//! survivors packed in order, then eight survivors side by side through the kernel's value
-//! and gradient.
+//! The neighbour search on the lanes of [`Wide`] for I32F32, one kernel for every backend:
+//! eight candidates side by side through the support test, the survivors packed in order,
+//! then eight survivors side by side through the kernel's value and gradient.
 //!
 //! Three searches share it: a fresh search of the grid ([`build`]; [`build_both`] runs
 //! the fluid's and the boundary's in one walk of the cells), the evaluation of
@@ -24,8 +23,8 @@
 //!
 //! - o is exact (below 2⁶¹), and so is the component test, as in the scalar form;
 //! - in a lane that passes it, |o_c| < H < 2³¹ is a 32-bit signed number, so the product
-//!   o_c · (1/H) is the two-multiply form of [`lanes::product`](crate::fluid::lanes::product),
-//!   exact, with |d_c| at most about 1; its squares and their sum are exact too;
+//!   o_c · (1/H) is the two-multiply form of [`Wide::times`], exact, with |d_c| at most
+//!   about 1; its squares and their sum are exact too;
 //! - in a survivor, 0 ≤ q² < 1, so √q² < 1 is found exactly ([`sqrt`]); t, t³ and t³·t lie
 //!   in [0, 1], 1 + 4q in [1, 5] (4q is exact, as the checked 4 · q is), and the products
 //!   with c_w, c_g and d stay far inside the range: every product is the checked one.
@@ -38,36 +37,18 @@
 //! [`NeighbourLists::build_scalar`], [`NeighbourLists::evaluate_scalar`] and
 //! [`NeighbourLists::build_keeping_candidates_scalar`].
 
-use core::any::Any;
-use core::arch::x86_64::{
-    __m512i, __mmask8, _mm512_add_epi64, _mm512_castsi512_si256, _mm512_cvtepu32_epi64,
-    _mm512_loadu_si512, _mm512_mask_cmpgt_epi64_mask, _mm512_mask_cmplt_epi64_mask,
-    _mm512_mask_cmplt_epu64_mask, _mm512_mask_cmpneq_epi64_mask, _mm512_maskz_compress_epi64,
-    _mm512_maskz_loadu_epi32, _mm512_set1_epi64, _mm512_setzero_si512, _mm512_slli_epi64,
-    _mm512_storeu_si512, _mm512_sub_epi64,
-};
-use core::mem::size_of;
-
-use crate::math::sqrt::lanes_below_one::sqrt;
-
-use super::NeighbourLists;
 use super::skin::{CandidateRows, Reach};
-use crate::fluid::grid::CellGrid;
+use super::{NeighbourLists, NeighbourListsOf};
+use crate::fluid::grid::{CellGrid, CellGridOf};
 use crate::fluid::kernel::Kernel;
-use crate::fluid::lanes::{mul, product};
-use crate::math::wide::vector_bits;
+use crate::math::over_real::{Scalar, Vectors};
+use crate::math::sqrt::lanes_below_one::sqrt;
+use crate::math::wide::{LANES, Wide, backend, kernel_entry, vector_bits};
 use crate::math::{Fx, Real, Vec3};
-use crate::soft::lanes::gather3;
 
-// The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row.
-const _: () = {
-    assert!(size_of::<Fx>() == 8);
-    assert!(size_of::<Vec3<Fx>>() == 24);
-};
-
-/// [`NeighbourLists::build`] with the kernel when `R` is I32F32, the processor has
-/// AVX-512F and CD and the inputs are within the bounds (see the module documentation);
-/// returns whether it did (if not, the lists hold nothing of use).
+/// [`NeighbourLists::build`] with the kernel when `R` is I32F32, a backend runs and the
+/// inputs are within the bounds (see the module documentation); returns whether it did
+/// (if not, the lists hold nothing of use).
 pub(super) fn build<R: Real>(
     lists: &mut NeighbourLists<R>,
     queries: &[Vec3<R>],
@@ -78,18 +59,24 @@ pub(super) fn build<R: Real>(
 ) -> bool {
     let scales = [kernel.density_scale, kernel.gradient_scale];
     let support = (kernel.support, kernel.inv_support);
-    let (Some(lists), Some(grid), Some(admitted)) = (
-        (lists as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
-        (grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
+    let (Some(backend), Some(lists), Some(grid), Some(admitted)) = (
+        backend(),
+        R::as_fixed_mut::<NeighbourListsOf>(lists),
+        R::as_fixed::<CellGridOf>(grid),
         admit(queries, points, support, scales, skip_self),
     ) else {
         return false;
     };
-    let search = &admitted.search;
+    let search = admitted.search;
     let within = Within::new(grid, search.inv_radius, grid.span(search.radius));
-    let (queries, points) = (admitted.queries, admitted.points);
-    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds.
-    unsafe { build_kernel(lists, queries, points, within, search) }
+    build_within(
+        backend,
+        lists,
+        admitted.queries,
+        admitted.points,
+        within,
+        search,
+    )
 }
 
 /// [`NeighbourLists::build_both`] with the kernel, on the conditions of [`build`] for both
@@ -103,11 +90,12 @@ pub(super) fn build_both<R: Real>(
 ) -> bool {
     let scales = [kernel.density_scale, kernel.gradient_scale];
     let support = (kernel.support, kernel.inv_support);
-    let (Some(fluid), Some(walls), Some(grid), Some(boundary_grid)) = (
-        (fluid as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
-        (walls as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
-        (grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
-        (boundary_grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
+    let (Some(backend), Some(fluid), Some(walls), Some(grid), Some(boundary_grid)) = (
+        backend(),
+        R::as_fixed_mut::<NeighbourListsOf>(fluid),
+        R::as_fixed_mut::<NeighbourListsOf>(walls),
+        R::as_fixed::<CellGridOf>(grid),
+        R::as_fixed::<CellGridOf>(boundary_grid),
     ) else {
         return false;
     };
@@ -121,20 +109,17 @@ pub(super) fn build_both<R: Real>(
         return false;
     }
     let span = grid.span(among_fluid.search.radius);
-    let searches = [
-        (among_fluid.points, &among_fluid.search),
-        (among_walls.points, &among_walls.search),
-    ];
-    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds of both searches.
-    unsafe {
-        build_both_kernel(
-            [fluid, walls],
-            among_fluid.queries,
-            [grid, boundary_grid],
-            span,
-            searches,
-        )
-    }
+    build_both_within(
+        backend,
+        [fluid, walls],
+        among_fluid.queries,
+        [grid, boundary_grid],
+        span,
+        [
+            (among_fluid.points, among_fluid.search),
+            (among_walls.points, among_walls.search),
+        ],
+    )
 }
 
 /// [`NeighbourLists::evaluate`] with the kernel, on the conditions of [`build`]; returns
@@ -148,15 +133,15 @@ pub(super) fn evaluate<R: Real>(
 ) -> bool {
     let scales = [kernel.density_scale, kernel.gradient_scale];
     let support = (kernel.support, kernel.inv_support);
-    let (Some(lists), Some(admitted)) = (
-        (lists as &mut dyn Any).downcast_mut::<NeighbourLists<Fx>>(),
+    let (Some(backend), Some(lists), Some(admitted)) = (
+        backend(),
+        R::as_fixed_mut::<NeighbourListsOf>(lists),
         admit(queries, points, support, scales, false),
     ) else {
         return false;
     };
     let (queries, points) = (admitted.queries, admitted.points);
-    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds.
-    unsafe { build_kernel(lists, queries, points, candidates, &admitted.search) }
+    build_from_rows(backend, lists, queries, points, candidates, admitted.search)
 }
 
 /// The candidates of [`NeighbourLists::build_keeping_candidates`]: the kernel's support
@@ -174,22 +159,65 @@ pub(super) fn select<R: Real>(
     // No kernel value is computed: any scales within the bounds will do.
     let scales = [R::ONE, R::ONE];
     let radius = (reach.radius, reach.inv_radius);
-    let (Some(grid), Some(admitted)) = (
-        (grid as &dyn Any).downcast_ref::<CellGrid<Fx>>(),
+    let (Some(backend), Some(grid), Some(admitted)) = (
+        backend(),
+        R::as_fixed::<CellGridOf>(grid),
         admit(queries, points, radius, scales, skip_self),
     ) else {
         return false;
     };
     let within = Within::new(grid, admitted.search.inv_radius, reach.span);
     let (queries, points) = (admitted.queries, admitted.points);
-    // SAFETY: `admit` detected AVX-512F and CD and checked the bounds.
-    unsafe { select_kernel(rows, queries, points, within, &admitted.search) }
+    select_within(backend, rows, queries, points, within, admitted.search)
+}
+
+kernel_entry! {
+    /// [`build_kernel`] over the grid's points within the radius.
+    fn build_within(
+        lists: &mut NeighbourLists<Fx>,
+        queries: &[Vec3<Fx>],
+        points: &[Vec3<Fx>],
+        candidates: Within<'_>,
+        search: Search,
+    ) -> bool = build_kernel;
+}
+
+kernel_entry! {
+    /// [`build_kernel`] over candidate rows.
+    fn build_from_rows(
+        lists: &mut NeighbourLists<Fx>,
+        queries: &[Vec3<Fx>],
+        points: &[Vec3<Fx>],
+        candidates: &CandidateRows,
+        search: Search,
+    ) -> bool = build_kernel;
+}
+
+kernel_entry! {
+    /// [`build_both_kernel`] with the instructions of `backend`.
+    fn build_both_within(
+        lists: [&mut NeighbourLists<Fx>; 2],
+        queries: &[Vec3<Fx>],
+        grids: [&CellGrid<Fx>; 2],
+        span: u32,
+        searches: [(&[Vec3<Fx>], Search); 2],
+    ) -> bool = build_both_kernel;
+}
+
+kernel_entry! {
+    /// [`select_kernel`] with the instructions of `backend`.
+    fn select_within(
+        rows: &mut CandidateRows,
+        queries: &[Vec3<Fx>],
+        points: &[Vec3<Fx>],
+        candidates: Within<'_>,
+        search: Search,
+    ) -> bool = select_kernel;
 }
 
 /// The inputs in I32F32 and the constants of a search within a radius (`radius`: the
-/// radius and its inverse) with the kernel scales `scales` (c_w, c_g), when `R` is I32F32,
-/// the processor has AVX-512F and CD and the inputs are within the bounds of the module
-/// documentation.
+/// radius and its inverse) with the kernel scales `scales` (c_w, c_g), when `R` is I32F32
+/// and the inputs are within the bounds of the module documentation.
 fn admit<'a, R: Real>(
     queries: &'a [Vec3<R>],
     points: &'a [Vec3<R>],
@@ -197,19 +225,13 @@ fn admit<'a, R: Real>(
     scales: [R; 2],
     skip_self: bool,
 ) -> Option<Admitted<'a>> {
-    if !crate::math::cpu::avx512f() || !crate::math::cpu::avx512cd() {
-        return None;
-    }
-    let fx = |value: &R| (value as &dyn Any).downcast_ref::<Fx>().copied();
+    let fx = |value: &R| R::as_fixed::<Scalar>(value).copied();
     let (radius, inv_radius) = (fx(&radius)?, fx(&inv_radius)?);
     let [density_scale, gradient_scale] = [fx(&scales[0])?, fx(&scales[1])?];
-    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slices' type is unchanged.
-    let (queries, points) = unsafe {
-        (
-            &*(core::ptr::from_ref(queries) as *const [Vec3<Fx>]),
-            &*(core::ptr::from_ref(points) as *const [Vec3<Fx>]),
-        )
-    };
+    let (queries, points) = (
+        R::as_fixed::<Vectors>(queries)?,
+        R::as_fixed::<Vectors>(points)?,
+    );
     let coordinate_bits = vector_bits(queries).max(vector_bits(points));
     let within = |value: Fx, bits: u32| 0 < value.to_bits() && value.to_bits() < 1 << bits;
     if coordinate_bits > 60
@@ -220,18 +242,12 @@ fn admit<'a, R: Real>(
     {
         return None;
     }
-    // SAFETY: AVX-512F and CD were detected above.
-    let lanes = |bits: i64| unsafe { _mm512_set1_epi64(bits) };
     let search = Search {
         radius,
         inv_radius,
-        support: lanes(radius.to_bits()),
-        neg_support: lanes(-radius.to_bits()),
-        inv_support: lanes(inv_radius.to_bits()),
-        one: lanes(Fx::ONE.to_bits()),
-        density_scale: lanes(density_scale.to_bits()),
-        gradient_scale: lanes(gradient_scale.to_bits()),
-        points: lanes(points.len() as i64),
+        density_scale,
+        gradient_scale,
+        points: points.len(),
         skip_self,
     };
     Some(Admitted {
@@ -248,28 +264,56 @@ struct Admitted<'a> {
     search: Search,
 }
 
-/// The constants of a search: its radius (H, or ρ for a selection), then everything in
-/// lanes.
+/// The constants of a search.
+#[derive(Clone, Copy)]
 struct Search {
-    /// The radius, m.
+    /// The radius (H, or ρ for a selection), m.
     radius: Fx,
     /// Its inverse, 1/m.
     inv_radius: Fx,
-    /// The radius.
-    support: __m512i,
-    /// The radius negated.
-    neg_support: __m512i,
-    /// The radius's inverse.
-    inv_support: __m512i,
-    /// 1.
-    one: __m512i,
     /// c_w.
-    density_scale: __m512i,
+    density_scale: Fx,
     /// c_g.
-    gradient_scale: __m512i,
+    gradient_scale: Fx,
     /// The number of points, for the index check.
-    points: __m512i,
+    points: usize,
     skip_self: bool,
+}
+
+/// A search's constants in lanes.
+#[derive(Clone, Copy)]
+struct SearchLanes<W: Wide> {
+    /// The radius.
+    support: W::V,
+    /// The radius negated.
+    neg_support: W::V,
+    /// The radius's inverse.
+    inv_support: W::V,
+    /// 1.
+    one: W::V,
+    /// c_w.
+    density_scale: W::V,
+    /// c_g.
+    gradient_scale: W::V,
+    /// The number of points.
+    points: W::V,
+    skip_self: bool,
+}
+
+impl<W: Wide> SearchLanes<W> {
+    #[inline(always)]
+    fn new(w: W, search: &Search) -> Self {
+        Self {
+            support: w.splat(search.radius.to_bits()),
+            neg_support: w.splat(-search.radius.to_bits()),
+            inv_support: w.splat(search.inv_radius.to_bits()),
+            one: w.splat(Fx::ONE.to_bits()),
+            density_scale: w.splat(search.density_scale.to_bits()),
+            gradient_scale: w.splat(search.gradient_scale.to_bits()),
+            points: w.splat(search.points as i64),
+            skip_self: search.skip_self,
+        }
+    }
 }
 
 /// Where the candidates of each query come from.
@@ -298,11 +342,9 @@ impl<'a> Within<'a> {
     }
 }
 
-impl Within<'_> {
-    /// The candidates of a query at `xi`.
-    #[inline]
-    #[target_feature(enable = "avx512f,avx512cd")]
-    fn collect(&mut self, xi: Vec3<Fx>) -> &[u32] {
+impl Candidates for Within<'_> {
+    #[inline(always)]
+    fn of(&mut self, _: usize, xi: Vec3<Fx>) -> &[u32] {
         self.found.clear();
         let found = &mut self.found;
         self.grid
@@ -311,37 +353,19 @@ impl Within<'_> {
     }
 }
 
-impl Candidates for Within<'_> {
-    #[inline(always)]
-    fn of(&mut self, _: usize, xi: Vec3<Fx>) -> &[u32] {
-        // SAFETY: a `Within` is made only for a search that `admit` let through, which
-        // detected AVX-512F and CD.
-        unsafe { self.collect(xi) }
-    }
-}
-
-/// Appends `row` to `found` sixteen at a time: a masked load, then a whole store into the
-/// spare capacity. A grid row holds a few points (one per cell at rest), which a call to
-/// `memcpy` per row (`extend_from_slice`) copied at several times the cost.
-#[inline]
-#[target_feature(enable = "avx512f,avx512cd")]
+/// Appends `row` to `found`, a word at a time into the spare capacity: a grid row holds a
+/// few points (one per cell at rest), which a call to `memcpy` per row
+/// (`extend_from_slice`) copied at several times the cost.
+#[inline(always)]
 fn append(found: &mut Vec<u32>, row: &[u32]) {
-    let len = found.len();
-    found.reserve(row.len() + 16);
-    let mut first = 0;
-    while first < row.len() {
-        let count = (row.len() - first).min(16) as u32;
-        let mask = (u32::MAX >> (32 - count)) as u16;
-        // SAFETY: the masked load reads only `row[first..first + count]`; the store writes
-        // 16 values from `len + first`, within the capacity reserved above.
-        unsafe {
-            let lanes = _mm512_maskz_loadu_epi32(mask, row.as_ptr().add(first).cast());
-            _mm512_storeu_si512(found.as_mut_ptr().add(len + first).cast(), lanes);
-        }
-        first += 16;
+    found.reserve(row.len());
+    let spare = found.spare_capacity_mut();
+    for (slot, &j) in spare.iter_mut().zip(row) {
+        slot.write(j);
     }
-    // SAFETY: the `row.len()` values past `len` were stored above.
-    unsafe { found.set_len(len + row.len()) };
+    // SAFETY: the `row.len()` values past the length were written just above (the spare
+    // capacity holds at least that many).
+    unsafe { found.set_len(found.len() + row.len()) };
 }
 
 impl Candidates for &CandidateRows {
@@ -352,7 +376,8 @@ impl Candidates for &CandidateRows {
 }
 
 /// The survivors of the candidates of one query or more, in order: index, d and q², packed
-/// eight at a time with room for eight more.
+/// eight at a time, with room for eight more past the last (so that a block of eight may
+/// start at any survivor).
 #[derive(Default)]
 struct Survivors {
     len: usize,
@@ -366,23 +391,15 @@ impl Survivors {
     }
 
     /// Appends the lanes of `keep` of `values` (index, d_x, d_y, d_z, q²), in lane order.
-    #[inline]
-    #[target_feature(enable = "avx512f,avx512cd")]
-    fn append(&mut self, keep: __mmask8, values: [__m512i; 5]) {
+    #[inline(always)]
+    fn append<W: Wide>(&mut self, w: W, keep: u8, values: [W::V; 5]) {
         let at = self.len;
         for (list, lanes) in self.lanes.iter_mut().zip(values) {
-            if list.len() < at + 8 {
-                list.resize(at + 8, 0);
+            if list.len() < at + 2 * LANES {
+                list.resize(at + 2 * LANES, 0);
             }
-            // Packed in a register, then stored whole: a compressing store to memory is
-            // slow on some processors (Zen 4).
-            // SAFETY: eight values into `list[at..at + 8]`, which exists.
-            unsafe {
-                _mm512_storeu_si512(
-                    list.as_mut_ptr().add(at).cast(),
-                    _mm512_maskz_compress_epi64(keep, lanes),
-                );
-            }
+            // SAFETY: `list[at..at + 8]` exists.
+            unsafe { w.store_kept(list.as_mut_ptr().add(at), keep, lanes) };
         }
         self.len += keep.count_ones() as usize;
     }
@@ -395,49 +412,47 @@ impl Survivors {
 
 /// The search: the survivors of each query's candidates with their kernel values; returns
 /// false when a candidate is not a point's index (the lists then hold nothing of use).
-///
-/// # Safety
-/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
-#[target_feature(enable = "avx512f,avx512cd")]
-unsafe fn build_kernel(
+#[inline(always)]
+fn build_kernel<W: Wide>(
+    w: W,
     lists: &mut NeighbourLists<Fx>,
     queries: &[Vec3<Fx>],
     points: &[Vec3<Fx>],
     mut candidates: impl Candidates,
-    search: &Search,
+    search: Search,
 ) -> bool {
+    let search = SearchLanes::new(w, &search);
     lists.clear();
     let mut survivors = Survivors::default();
     for (i, &xi) in queries.iter().enumerate() {
         let candidates = candidates.of(i, xi);
-        // SAFETY: the caller's conditions are this function's.
-        if !unsafe { add_row(lists, &mut survivors, candidates, i, xi, points, search) } {
+        if !add_row(w, lists, &mut survivors, candidates, i, xi, points, &search) {
             return false;
         }
     }
-    evaluate_survivors(lists, &survivors, search);
+    evaluate_survivors(w, lists, &survivors, &search);
     true
 }
 
 /// [`build_kernel`] for two sets of points in grids of the same cells (the fluid, then
 /// the boundary), in one walk of the cells: each list gets the rows its own search would.
-///
-/// # Safety
-/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold for both
-/// searches.
-#[target_feature(enable = "avx512f,avx512cd")]
-unsafe fn build_both_kernel(
+#[inline(always)]
+fn build_both_kernel<W: Wide>(
+    w: W,
     lists: [&mut NeighbourLists<Fx>; 2],
     queries: &[Vec3<Fx>],
     [grid, other]: [&CellGrid<Fx>; 2],
     span: u32,
-    searches: [(&[Vec3<Fx>], &Search); 2],
+    [(fluid_points, fluid), (wall_points, walls)]: [(&[Vec3<Fx>], Search); 2],
 ) -> bool {
+    let inv_radius = fluid.inv_radius;
+    let searches = [
+        (fluid_points, SearchLanes::new(w, &fluid)),
+        (wall_points, SearchLanes::new(w, &walls)),
+    ];
     let mut survivors: [Survivors; 2] = Default::default();
     let mut found: [Vec<u32>; 2] = Default::default();
-    let inv_radius = searches[0].1.inv_radius;
-    let [fluid, walls] = lists;
-    let mut lists = [fluid, walls];
+    let mut lists = lists;
     for list in &mut lists {
         list.clear();
     }
@@ -449,44 +464,40 @@ unsafe fn build_both_kernel(
             append(&mut found[k], row);
         });
         for (k, list) in lists.iter_mut().enumerate() {
-            let (points, search) = searches[k];
-            // SAFETY: the caller's conditions are this function's.
-            if !unsafe { add_row(list, &mut survivors[k], &found[k], i, xi, points, search) } {
+            let (points, search) = &searches[k];
+            if !add_row(w, list, &mut survivors[k], &found[k], i, xi, points, search) {
                 return false;
             }
         }
     }
     for (k, list) in lists.into_iter().enumerate() {
-        evaluate_survivors(list, &survivors[k], searches[k].1);
+        evaluate_survivors(w, list, &survivors[k], &searches[k].1);
     }
     true
 }
 
 /// Tests the candidates of query `i` at `xi` and closes its row; evaluates the pending
 /// survivors once there are enough. False when a candidate is not a point's index.
-///
-/// # Safety
-/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
-#[inline]
-#[target_feature(enable = "avx512f,avx512cd")]
-unsafe fn add_row(
+#[inline(always)]
+#[allow(clippy::too_many_arguments)] // the kernel's state, passed down
+fn add_row<W: Wide>(
+    w: W,
     lists: &mut NeighbourLists<Fx>,
     survivors: &mut Survivors,
     candidates: &[u32],
     i: usize,
     xi: Vec3<Fx>,
     points: &[Vec3<Fx>],
-    search: &Search,
+    search: &SearchLanes<W>,
 ) -> bool {
-    // SAFETY: the caller's conditions are this function's.
-    if !unsafe { test_candidates(survivors, candidates, i, xi, points, search) } {
+    if !test_candidates(w, survivors, candidates, i, xi, points, search) {
         return false;
     }
     // The survivors of several rows are evaluated together, in full blocks: the row ends
     // where its survivors will have been appended.
     lists.start.push((lists.index.len() + survivors.len) as u32);
     if survivors.len >= PENDING {
-        evaluate_survivors(lists, survivors, search);
+        evaluate_survivors(w, lists, survivors, search);
         survivors.clear();
     }
     true
@@ -498,24 +509,22 @@ const PENDING: usize = 256;
 
 /// The selection: the survivors of each query's candidates, indices only; returns false
 /// when a candidate is not a point's index (the rows then hold nothing of use).
-///
-/// # Safety
-/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
-#[target_feature(enable = "avx512f,avx512cd")]
-unsafe fn select_kernel(
+#[inline(always)]
+fn select_kernel<W: Wide>(
+    w: W,
     rows: &mut CandidateRows,
     queries: &[Vec3<Fx>],
     points: &[Vec3<Fx>],
     mut candidates: Within<'_>,
-    search: &Search,
+    search: Search,
 ) -> bool {
+    let search = SearchLanes::new(w, &search);
     rows.clear();
     let mut survivors = Survivors::default();
     for (i, &xi) in queries.iter().enumerate() {
         survivors.clear();
         let candidates = candidates.of(i, xi);
-        // SAFETY: the caller's conditions are this function's.
-        if !unsafe { test_candidates(&mut survivors, candidates, i, xi, points, search) } {
+        if !test_candidates(w, &mut survivors, candidates, i, xi, points, &search) {
             return false;
         }
         rows.extend(survivors.indices());
@@ -526,57 +535,59 @@ unsafe fn select_kernel(
 
 /// Tests `candidates` for query `i` at `xi`, eight at a time, and appends the survivors
 /// with d and q²; false when a candidate is not a point's index.
-///
-/// # Safety
-/// The processor must have AVX-512F and CD; the bounds of [`build`] must hold.
-#[inline]
-#[target_feature(enable = "avx512f,avx512cd")]
-unsafe fn test_candidates(
+#[inline(always)]
+fn test_candidates<W: Wide>(
+    w: W,
     survivors: &mut Survivors,
     candidates: &[u32],
     i: usize,
     xi: Vec3<Fx>,
     points: &[Vec3<Fx>],
-    search: &Search,
+    search: &SearchLanes<W>,
 ) -> bool {
-    let x = [xi.x, xi.y, xi.z].map(|c| _mm512_set1_epi64(c.to_bits()));
-    let me = _mm512_set1_epi64(i as i64);
+    let x = [
+        w.splat(xi.x.to_bits()),
+        w.splat(xi.y.to_bits()),
+        w.splat(xi.z.to_bits()),
+    ];
+    let me = w.splat(i as i64);
     let mut first = 0;
     while first < candidates.len() {
-        let count = (candidates.len() - first).min(8);
-        let mask = ((1u16 << count) - 1) as __mmask8;
-        // SAFETY: the masked load reads only the `count` candidates from `first`.
-        let index32 = unsafe {
-            _mm512_maskz_loadu_epi32(u16::from(mask), candidates.as_ptr().add(first).cast())
-        };
+        let count = (candidates.len() - first).min(LANES);
+        let mask = ((1u16 << count) - 1) as u8;
+        // SAFETY: the `count` candidates from `first` exist.
+        let j = unsafe { w.load_prefix_u32(candidates.as_ptr().add(first), count) };
+        let block = &candidates[first..first + count];
         first += count;
-        let j = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(index32));
-        if _mm512_mask_cmplt_epu64_mask(mask, j, search.points) != mask {
+        // The lanes past `count` hold zero, below any positive number of points.
+        if w.at_least_unsigned(j, search.points) != 0 {
             return false;
         }
         let mut keep = mask;
         if search.skip_self {
-            keep = _mm512_mask_cmpneq_epi64_mask(keep, j, me);
+            keep &= !w.equal(j, me);
         }
-        // Every index in use is below `points.len()` (checked above).
-        let Some(xj) = gather3(points, &candidates[first - count..first]) else {
+        let Some(xj) = w.gather_vectors(points, block) else {
             return false;
         };
-        let offset: [__m512i; 3] = core::array::from_fn(|c| _mm512_sub_epi64(x[c], xj[c]));
+        let offset = [w.sub(x[0], xj[0]), w.sub(x[1], xj[1]), w.sub(x[2], xj[2])];
         for o in offset {
-            keep = _mm512_mask_cmplt_epi64_mask(keep, o, search.support);
-            keep = _mm512_mask_cmpgt_epi64_mask(keep, o, search.neg_support);
+            keep &= w.greater(search.support, o) & w.greater(o, search.neg_support);
         }
         if keep == 0 {
             continue;
         }
-        let d = offset.map(|o| product::<true>(search.inv_support, o));
-        let q2 = _mm512_add_epi64(
-            _mm512_add_epi64(mul(d[0], d[0]), mul(d[1], d[1])),
-            mul(d[2], d[2]),
+        let d = [
+            w.times::<true>(offset[0], search.inv_support),
+            w.times::<true>(offset[1], search.inv_support),
+            w.times::<true>(offset[2], search.inv_support),
+        ];
+        let q2 = w.add(
+            w.add(w.mul(d[0], d[0]), w.mul(d[1], d[1])),
+            w.mul(d[2], d[2]),
         );
-        keep = _mm512_mask_cmplt_epi64_mask(keep, q2, search.one);
-        survivors.append(keep, [j, d[0], d[1], d[2], q2]);
+        keep &= w.greater(search.one, q2);
+        survivors.append(w, keep, [j, d[0], d[1], d[2], q2]);
     }
     true
 }
@@ -584,42 +595,55 @@ unsafe fn test_candidates(
 /// Appends the survivors to the lists' entries with V₀W and V₀∇ᵢW (the caller closes the
 /// rows), eight at a time, up to four blocks of eight side by side (so that their square
 /// roots, each a chain of dependent steps, overlap).
-#[target_feature(enable = "avx512f,avx512cd")]
-fn evaluate_survivors(lists: &mut NeighbourLists<Fx>, survivors: &Survivors, search: &Search) {
+#[inline(always)]
+fn evaluate_survivors<W: Wide>(
+    w: W,
+    lists: &mut NeighbourLists<Fx>,
+    survivors: &Survivors,
+    search: &SearchLanes<W>,
+) {
     let mut first = 0;
     while first < survivors.len {
-        first = match (survivors.len - first).div_ceil(8) {
-            1 => evaluate_blocks::<1>(lists, survivors, first, search),
-            2 => evaluate_blocks::<2>(lists, survivors, first, search),
-            3 => evaluate_blocks::<3>(lists, survivors, first, search),
-            _ => evaluate_blocks::<4>(lists, survivors, first, search),
+        first = match (survivors.len - first).div_ceil(LANES) {
+            1 => evaluate_blocks::<W, 1>(w, lists, survivors, first, search),
+            2 => evaluate_blocks::<W, 2>(w, lists, survivors, first, search),
+            3 => evaluate_blocks::<W, 3>(w, lists, survivors, first, search),
+            _ => evaluate_blocks::<W, 4>(w, lists, survivors, first, search),
         };
     }
 }
 
 /// Evaluates and appends `BLOCKS` blocks of eight survivors from `first` (the last may be
 /// partial); returns the next survivor.
-#[inline]
-#[target_feature(enable = "avx512f,avx512cd")]
-fn evaluate_blocks<const BLOCKS: usize>(
+#[inline(always)]
+fn evaluate_blocks<W: Wide, const BLOCKS: usize>(
+    w: W,
     lists: &mut NeighbourLists<Fx>,
     survivors: &Survivors,
     first: usize,
-    search: &Search,
+    search: &SearchLanes<W>,
 ) -> usize {
     let [index, dx, dy, dz, q2] = &survivors.lanes;
-    // SAFETY: `append` keeps eight slots beyond every survivor it stored, and the blocks
-    // start at survivors it stored.
-    let load = |lanes: &Vec<i64>, block: usize| unsafe {
-        _mm512_loadu_si512(lanes.as_ptr().add(first + 8 * block).cast())
+    // `append` keeps eight slots beyond every survivor it stored, and the blocks start at
+    // survivors it stored.
+    let load = |lanes: &Vec<i64>, block: usize| {
+        let at = first + LANES * block;
+        let mut words = [0; LANES];
+        words.copy_from_slice(&lanes[at..at + LANES]);
+        w.load_words(words)
     };
-    let roots = sqrt::<BLOCKS>(core::array::from_fn(|b| load(q2, b)));
+    let mut squares = [w.zero(); BLOCKS];
+    for (b, square) in squares.iter_mut().enumerate() {
+        *square = load(q2, b);
+    }
+    let roots = sqrt(w, squares);
     // All the blocks' values before any is stored, so that their chains of products
     // overlap.
-    let values: [_; BLOCKS] = core::array::from_fn(|b| {
-        kernel_values(roots[b], [load(dx, b), load(dy, b), load(dz, b)], search)
-    });
-    let count = (survivors.len - first).min(8 * BLOCKS);
+    let mut values = [[w.zero(); 4]; BLOCKS];
+    for (b, value) in values.iter_mut().enumerate() {
+        *value = kernel_values(w, roots[b], [load(dx, b), load(dy, b), load(dz, b)], search);
+    }
+    let count = (survivors.len - first).min(LANES * BLOCKS);
     lists
         .index
         .extend(index[first..first + count].iter().map(|&j| j as u32));
@@ -627,33 +651,32 @@ fn evaluate_blocks<const BLOCKS: usize>(
     let outputs = [&mut lists.value, gx, gy, gz];
     for (output, list) in outputs.into_iter().enumerate() {
         let len = list.len();
-        list.reserve(8 * BLOCKS);
-        for (b, (value, gradient)) in values.iter().enumerate() {
-            let lanes = if output == 0 {
-                *value
-            } else {
-                gradient[output - 1]
-            };
-            // SAFETY: eight values into the capacity reserved just above, past the length;
-            // `Fx` is one `i64` (asserted above).
-            unsafe { _mm512_storeu_si512(list.as_mut_ptr().add(len + 8 * b).cast(), lanes) };
+        list.resize(len + LANES * BLOCKS, Fx::ZERO);
+        for (b, value) in values.iter().enumerate() {
+            let at = len + LANES * b;
+            let block: &mut [Fx; LANES] = (&mut list[at..at + LANES]).try_into().expect("eight");
+            w.store(block, value[output]);
         }
-        // SAFETY: the first `count` of the values stored are the survivors' (the blocks'
-        // other lanes, past them, are left out).
-        unsafe { list.set_len(len + count) };
+        // The first `count` of the values stored are the survivors' (the blocks' other
+        // lanes, past them, are left out).
+        list.truncate(len + count);
     }
-    (first + 8 * BLOCKS).min(survivors.len)
+    (first + LANES * BLOCKS).min(survivors.len)
 }
 
-/// V₀W and V₀∇ᵢW of eight survivors from q = √q² and d, as [`Kernel::evaluate_within`]
-/// computes them (see the module documentation).
-#[inline]
-#[target_feature(enable = "avx512f,avx512cd")]
-fn kernel_values(q: __m512i, d: [__m512i; 3], search: &Search) -> (__m512i, [__m512i; 3]) {
-    let t = _mm512_sub_epi64(search.one, q);
-    let t3 = mul(mul(t, t), t);
-    let grow = _mm512_add_epi64(search.one, _mm512_slli_epi64::<2>(q));
-    let value = mul(search.density_scale, mul(mul(t3, t), grow));
-    let slope = _mm512_sub_epi64(_mm512_setzero_si512(), mul(search.gradient_scale, t3));
-    (value, d.map(|c| mul(c, slope)))
+/// V₀W and V₀∇ᵢW (x, y, z) of eight survivors from q = √q² and d, as
+/// [`Kernel::evaluate_within`] computes them (see the module documentation).
+#[inline(always)]
+fn kernel_values<W: Wide>(w: W, q: W::V, d: [W::V; 3], search: &SearchLanes<W>) -> [W::V; 4] {
+    let t = w.sub(search.one, q);
+    let t3 = w.mul(w.mul(t, t), t);
+    let grow = w.add(search.one, w.shift_left(q, 2));
+    let value = w.mul(search.density_scale, w.mul(w.mul(t3, t), grow));
+    let slope = w.sub(w.zero(), w.mul(search.gradient_scale, t3));
+    [
+        value,
+        w.mul(d[0], slope),
+        w.mul(d[1], slope),
+        w.mul(d[2], slope),
+    ]
 }
