@@ -3,7 +3,7 @@
 //!
 //! | `FIXSTEP_SIMD` | kernels used on x86-64 |
 //! |---|---|
-//! | unset, empty or `avx512` | AVX-512 where the processor has it, else AVX2, else none |
+//! | unset, empty or `avx512` | AVX-512 (F, CD and DQ) where the processor has it, else AVX2, else none |
 //! | `avx2` | AVX2 where the processor has it, else none |
 //! | `scalar` | none: every stage runs its scalar code |
 //!
