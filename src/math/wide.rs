@@ -216,6 +216,41 @@ pub(crate) trait Wide: Copy {
     /// eight) indices, zero in the lanes past them; `None` if an index is out of bounds.
     fn gather_vectors(self, vectors: &[Vec3<Fx>], indices: &[u32]) -> Option<[Self::V; 3]>;
 
+    /// The x, y and z components of the eight consecutive vectors `vectors[first..first +
+    /// 8]` in lanes 0 to 7; `None` if they are out of bounds.
+    #[inline(always)]
+    fn load_run(self, vectors: &[Vec3<Fx>], first: usize) -> Option<[Self::V; 3]> {
+        let run = vectors.get(first..first + LANES)?;
+        let mut words = [[0; LANES]; 3];
+        for (l, vector) in run.iter().enumerate() {
+            words[0][l] = vector.x.to_bits();
+            words[1][l] = vector.y.to_bits();
+            words[2][l] = vector.z.to_bits();
+        }
+        Some([
+            self.load_words(words[0]),
+            self.load_words(words[1]),
+            self.load_words(words[2]),
+        ])
+    }
+
+    /// The four columns of eight rows of four values, one vector per column.
+    #[inline(always)]
+    fn load_columns(self, rows: &[[Fx; 4]; LANES]) -> [Self::V; 4] {
+        let mut words = [[0; LANES]; 4];
+        for (l, row) in rows.iter().enumerate() {
+            for (column, value) in words.iter_mut().zip(row) {
+                column[l] = value.to_bits();
+            }
+        }
+        [
+            self.load_words(words[0]),
+            self.load_words(words[1]),
+            self.load_words(words[2]),
+            self.load_words(words[3]),
+        ]
+    }
+
     /// The `count` words at `words` in the first lanes, zero in the others.
     ///
     /// # Safety

@@ -17,7 +17,7 @@
 //! (distance, bending, volume, attachment) · [`xpbd`] the substep loop ·
 //! [`spring_mass`] Hooke springs and the stability bound · `collide` static colliders
 //! with friction · `body_coupling` contacts with and ties to rigid bodies, two-way, seen
-//! through the traits of `rigid_bodies` · `lanes` I32F32 arithmetic on AVX-512 lanes for the kernels · `commands` inputs · [`hashing`] canonical state · `metrics` reporting.
+//! through the traits of `rigid_bodies` · `commands` inputs · [`hashing`] canonical state · `metrics` reporting.
 //!
 //! [`Stage::Soft`]: crate::types::Stage::Soft
 
@@ -28,8 +28,6 @@ mod commands;
 mod constraints;
 pub mod desc;
 pub mod hashing;
-#[cfg(target_arch = "x86_64")]
-pub(crate) mod lanes;
 mod metrics;
 pub(crate) mod rigid_bodies;
 pub mod spring_mass;

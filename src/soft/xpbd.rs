@@ -21,7 +21,7 @@ use super::system::{Model, SoftSystem};
 use crate::math::{Real, Vec3};
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests;
 
@@ -113,7 +113,7 @@ impl<R: Real> SoftSystem<R> {
             }
             let v = &mut self.vertices.velocity;
             #[cfg(target_arch = "x86_64")]
-            if avx512::update_velocities(body.range(), x, &s.previous, w, v, inv_h) {
+            if kernel::update_velocities(body.range(), x, &s.previous, w, v, inv_h) {
                 continue;
             }
             for i in body.range() {
@@ -189,7 +189,7 @@ impl<R: Real> SoftSystem<R> {
                 w,
             };
             #[cfg(target_arch = "x86_64")]
-            if avx512::predict(body.range(), &mut vertices, &motion) {
+            if kernel::predict(body.range(), &mut vertices, &motion) {
                 continue;
             }
             for i in body.range() {

@@ -624,24 +624,25 @@ fn evaluate_blocks<W: Wide, const BLOCKS: usize>(
     search: &SearchLanes<W>,
 ) -> usize {
     let [index, dx, dy, dz, q2] = &survivors.lanes;
-    // `append` keeps eight slots beyond every survivor it stored, and the blocks start at
-    // survivors it stored.
-    let load = |lanes: &Vec<i64>, block: usize| {
-        let at = first + LANES * block;
-        let mut words = [0; LANES];
-        words.copy_from_slice(&lanes[at..at + LANES]);
-        w.load_words(words)
-    };
     let mut squares = [w.zero(); BLOCKS];
     for (b, square) in squares.iter_mut().enumerate() {
-        *square = load(q2, b);
+        *square = load_block(w, q2, first + LANES * b);
     }
     let roots = sqrt(w, squares);
     // All the blocks' values before any is stored, so that their chains of products
     // overlap.
     let mut values = [[w.zero(); 4]; BLOCKS];
     for (b, value) in values.iter_mut().enumerate() {
-        *value = kernel_values(w, roots[b], [load(dx, b), load(dy, b), load(dz, b)], search);
+        *value = kernel_values(
+            w,
+            roots[b],
+            [
+                load_block(w, dx, first + LANES * b),
+                load_block(w, dy, first + LANES * b),
+                load_block(w, dz, first + LANES * b),
+            ],
+            search,
+        );
     }
     let count = (survivors.len - first).min(LANES * BLOCKS);
     lists
@@ -679,4 +680,13 @@ fn kernel_values<W: Wide>(w: W, q: W::V, d: [W::V; 3], search: &SearchLanes<W>) 
         w.mul(d[1], slope),
         w.mul(d[2], slope),
     ]
+}
+
+/// The eight survivors' values from `at` (`append` keeps eight slots beyond every survivor
+/// it stored, and the blocks start at survivors it stored).
+#[inline(always)]
+fn load_block<W: Wide>(w: W, lanes: &[i64], at: usize) -> W::V {
+    let mut words = [0; LANES];
+    words.copy_from_slice(&lanes[at..at + LANES]);
+    w.load_words(words)
 }

@@ -342,7 +342,11 @@ impl Wide for Avx2 {
             words[1][l] = vector.y.to_bits();
             words[2][l] = vector.z.to_bits();
         }
-        Some(words.map(|w| self.load_words(w)))
+        Some([
+            self.load_words(words[0]),
+            self.load_words(words[1]),
+            self.load_words(words[2]),
+        ])
     }
 
     /// Two masked loads of four words.

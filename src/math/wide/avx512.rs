@@ -211,6 +211,65 @@ impl Wide for Avx512 {
         Some([x, y, z])
     }
 
+    /// Three loads and a transpose.
+    #[inline(always)]
+    fn load_run(self, vectors: &[Vec3<Fx>], first: usize) -> Option<[__m512i; 3]> {
+        let run = vectors.get(first..first + LANES)?;
+        let words = run.as_ptr().cast::<i64>();
+        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`.
+        unsafe {
+            let (v0, v1, v2) = (
+                _mm512_loadu_si512(words.cast()),
+                _mm512_loadu_si512(words.add(LANES).cast()),
+                _mm512_loadu_si512(words.add(2 * LANES).cast()),
+            );
+            // Word 3i + c is component c of vector i: v0 holds words 0..8, v1 8..16, v2
+            // 16..24.
+            let x = _mm512_permutex2var_epi64(v0, _mm512_set_epi64(0, 0, 15, 12, 9, 6, 3, 0), v1);
+            let y = _mm512_permutex2var_epi64(v0, _mm512_set_epi64(0, 0, 0, 13, 10, 7, 4, 1), v1);
+            let z = _mm512_permutex2var_epi64(v0, _mm512_set_epi64(0, 0, 0, 14, 11, 8, 5, 2), v1);
+            Some([
+                _mm512_permutex2var_epi64(x, _mm512_set_epi64(13, 10, 5, 4, 3, 2, 1, 0), v2),
+                _mm512_permutex2var_epi64(y, _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0), v2),
+                _mm512_permutex2var_epi64(z, _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0), v2),
+            ])
+        }
+    }
+
+    /// Four loads and a transpose in registers.
+    #[inline(always)]
+    fn load_columns(self, rows: &[[Fx; 4]; LANES]) -> [__m512i; 4] {
+        let words = rows.as_ptr().cast::<i64>();
+        // SAFETY: eight rows of four `Fx` are 32 readable `i64`. Word 4l + k is column k
+        // of row l: v0 holds rows 0 and 1, v1 rows 2 and 3, and so on.
+        unsafe {
+            let (v0, v1, v2, v3) = (
+                _mm512_loadu_si512(words.cast()),
+                _mm512_loadu_si512(words.add(LANES).cast()),
+                _mm512_loadu_si512(words.add(2 * LANES).cast()),
+                _mm512_loadu_si512(words.add(3 * LANES).cast()),
+            );
+            let even = _mm512_set_epi64(13, 9, 5, 1, 12, 8, 4, 0);
+            let odd = _mm512_set_epi64(15, 11, 7, 3, 14, 10, 6, 2);
+            let (a, b) = (
+                _mm512_permutex2var_epi64(v0, even, v1),
+                _mm512_permutex2var_epi64(v0, odd, v1),
+            );
+            let (a4, b4) = (
+                _mm512_permutex2var_epi64(v2, even, v3),
+                _mm512_permutex2var_epi64(v2, odd, v3),
+            );
+            let low = _mm512_set_epi64(11, 10, 9, 8, 3, 2, 1, 0);
+            let high = _mm512_set_epi64(15, 14, 13, 12, 7, 6, 5, 4);
+            [
+                _mm512_permutex2var_epi64(a, low, a4),
+                _mm512_permutex2var_epi64(a, high, a4),
+                _mm512_permutex2var_epi64(b, low, b4),
+                _mm512_permutex2var_epi64(b, high, b4),
+            ]
+        }
+    }
+
     #[inline(always)]
     unsafe fn load_prefix(self, words: *const i64, count: usize) -> __m512i {
         let mask = ((1u16 << count) - 1) as u8;

@@ -18,7 +18,7 @@ use super::arithmetic::{Arithmetic, Checked, Guarded};
 use crate::math::{Guard, Real, Vec3};
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests;
 
@@ -95,8 +95,8 @@ impl<R: Real> Hinges<R> {
     /// One Gauss–Seidel pass: with μ = α̃λ and r = −C − μ, xₖ += (wₖcₖ/D) r and
     /// μ += (α̃/D) r. Each row is computed with guarded arithmetic and, if its guard trips,
     /// again with the checked operators (see [`arithmetic`](super::arithmetic)). In I32F32
-    /// on a processor with AVX-512F, the blocks marked in `independent` are solved eight
-    /// rows at a time with the same bits ([`avx512`]).
+    /// on a processor with AVX-512 or AVX2, the blocks marked in `independent` are solved
+    /// eight rows at a time with the same bits ([`kernel`]).
     pub fn solve(
         &mut self,
         positions: &mut [Vec3<R>],
@@ -105,7 +105,7 @@ impl<R: Real> Hinges<R> {
         #[cfg(target_arch = "x86_64")] independent: &[bool],
     ) {
         #[cfg(target_arch = "x86_64")]
-        if avx512::solve(self, positions, shares, relax, independent) {
+        if kernel::solve(self, positions, shares, relax, independent) {
             return;
         }
         for h in 0..self.vertices.len() {

@@ -27,7 +27,7 @@ use super::arithmetic::{Arithmetic, Checked, Guarded};
 use crate::math::{Guard, Real, Vec3};
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 #[cfg(test)]
 mod tests;
 
@@ -92,7 +92,7 @@ impl<R: Real> Distances<R> {
         }
         #[cfg(target_arch = "x86_64")]
         {
-            f.independent = avx512::independent_blocks(&self.a, &self.b);
+            f.independent = kernel::independent_blocks(&self.a, &self.b);
         }
         f
     }
@@ -100,11 +100,11 @@ impl<R: Real> Distances<R> {
     /// One Gauss–Seidel pass over every row, in order, moving `positions` (m). Each row
     /// is computed with guarded arithmetic and, if its guard trips, again with the checked
     /// operators (see [`arithmetic`](super::arithmetic)). In I32F32 on a processor with
-    /// AVX-512F, blocks of rows that share no vertex are solved eight at a time by a kernel
-    /// that gives the same bits ([`avx512`]).
+    /// AVX-512 or AVX2, blocks of rows that share no vertex are solved eight at a time by a
+    /// kernel that gives the same bits ([`kernel`]).
     pub fn solve(&mut self, positions: &mut [Vec3<R>], f: &DistanceFactors<R>) {
         #[cfg(target_arch = "x86_64")]
-        if avx512::solve(self, positions, f) {
+        if kernel::solve(self, positions, f) {
             return;
         }
         for c in 0..self.a.len() {

@@ -10,7 +10,7 @@ use serde::{Deserialize, Serialize};
 use crate::math::{Real, Vec3};
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests;
 
@@ -26,8 +26,8 @@ pub(crate) struct Tethers<R: Real> {
 }
 
 impl<R: Real> Tethers<R> {
-    /// One pass over every row. In I32F32 on a processor with AVX-512F, the slack rows of
-    /// the blocks marked in `independent` are found eight at a time ([`avx512`]); the
+    /// One pass over every row. In I32F32 on a processor with AVX-512 or AVX2, the rows of
+    /// the blocks marked in `independent` are solved eight at a time ([`kernel`]); the
     /// others run as before, with the same bits.
     pub fn solve(
         &self,
@@ -35,7 +35,7 @@ impl<R: Real> Tethers<R> {
         #[cfg(target_arch = "x86_64")] independent: &[bool],
     ) {
         #[cfg(target_arch = "x86_64")]
-        if avx512::solve(self, positions, independent) {
+        if kernel::solve(self, positions, independent) {
             return;
         }
         for t in 0..self.vertex.len() {

@@ -1,6 +1,6 @@
 //! The prediction and the velocity update against their scalar forms, vertex by vertex:
-//! whichever path a block of vertices takes (the AVX-512 kernels where the processor has
-//! them, the scalar step for the blocks that fail a check and the tail), the bits and the
+//! whichever path a block of vertices takes (the kernels, with every backend the processor
+//! has, the scalar step for the blocks that fail a check and the tail), the bits and the
 //! saturation count are the scalar step's.
 
 use super::{Motion, Vertices, predict_vertex, update_velocity};
@@ -70,7 +70,7 @@ fn prediction_matches_the_scalar_step() {
                 w: &w,
             };
             let ((), saturations) = count_saturations(|| {
-                if !(kernel && super::avx512::predict(range.clone(), &mut vertices, &motion)) {
+                if !(kernel && super::kernel::predict(range.clone(), &mut vertices, &motion)) {
                     for i in range.clone() {
                         predict_vertex(i, &mut vertices, &motion);
                     }
@@ -78,7 +78,7 @@ fn prediction_matches_the_scalar_step() {
             });
             (x, v, previous, saturations)
         };
-        assert_eq!(run(true), run(false), "trial {trial}");
+        crate::math::cpu::each_backend(|| assert_eq!(run(true), run(false), "trial {trial}"));
     }
 }
 
@@ -96,7 +96,7 @@ fn velocity_update_matches_the_scalar_step() {
             let mut v = v.clone();
             let ((), saturations) = count_saturations(|| {
                 if !(kernel
-                    && super::avx512::update_velocities(
+                    && super::kernel::update_velocities(
                         range.clone(),
                         &x,
                         &previous,
@@ -112,6 +112,6 @@ fn velocity_update_matches_the_scalar_step() {
             });
             (v, saturations)
         };
-        assert_eq!(run(true), run(false), "trial {trial}");
+        crate::math::cpu::each_backend(|| assert_eq!(run(true), run(false), "trial {trial}"));
     }
 }

@@ -69,20 +69,22 @@ fn hinges_match_the_scalar_row() {
             .map(|_| rng.range(Fx::ZERO, Fx::ONE))
             .collect();
         let independent = rows.independent_blocks();
-        let (mut fast, mut slow) = (rows.clone(), rows.clone());
-        let (mut fast_x, mut slow_x) = (positions.clone(), positions.clone());
-        let ((), fast_saturations) =
-            count_saturations(|| fast.solve(&mut fast_x, &shares, &relax, &independent));
-        let ((), slow_saturations) = count_saturations(|| {
-            for h in 0..slow.vertices.len() {
-                slow.solve_row(&mut slow_x, &shares, &relax, h);
-            }
+        crate::math::cpu::each_backend(|| {
+            let (mut fast, mut slow) = (rows.clone(), rows.clone());
+            let (mut fast_x, mut slow_x) = (positions.clone(), positions.clone());
+            let ((), fast_saturations) =
+                count_saturations(|| fast.solve(&mut fast_x, &shares, &relax, &independent));
+            let ((), slow_saturations) = count_saturations(|| {
+                for h in 0..slow.vertices.len() {
+                    slow.solve_row(&mut slow_x, &shares, &relax, h);
+                }
+            });
+            assert_eq!(fast_x, slow_x, "trial {trial}: positions");
+            assert_eq!(fast, slow, "trial {trial}: μ");
+            assert_eq!(
+                fast_saturations, slow_saturations,
+                "trial {trial}: saturations"
+            );
         });
-        assert_eq!(fast_x, slow_x, "trial {trial}: positions");
-        assert_eq!(fast, slow, "trial {trial}: μ");
-        assert_eq!(
-            fast_saturations, slow_saturations,
-            "trial {trial}: saturations"
-        );
     }
 }

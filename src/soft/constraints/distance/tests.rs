@@ -61,9 +61,19 @@ fn factors(rng: &mut Pcg32, d: &Distances<Fx>) -> DistanceFactors<Fx> {
     f
 }
 
-/// One pass by [`Distances::solve`] and one row by row; asserts the same bits and the same
-/// saturation count.
+/// One pass by [`Distances::solve`] and one row by row, with every backend of the kernel;
+/// asserts the same bits and the same saturation count.
 fn assert_same(d: &Distances<Fx>, f: &DistanceFactors<Fx>, positions: &[Vec3<Fx>], case: &str) {
+    crate::math::cpu::each_backend(|| assert_same_once(d, f, positions, case));
+}
+
+/// [`assert_same`] with the backend in force.
+fn assert_same_once(
+    d: &Distances<Fx>,
+    f: &DistanceFactors<Fx>,
+    positions: &[Vec3<Fx>],
+    case: &str,
+) {
     let (mut fast, mut slow) = (d.clone(), d.clone());
     let (mut fast_x, mut slow_x) = (positions.to_vec(), positions.to_vec());
     let ((), fast_saturations) = count_saturations(|| fast.solve(&mut fast_x, f));

@@ -60,14 +60,16 @@ fn tethers_match_the_scalar_row() {
             t.rest[r] = [Fx::MAX, Fx::MIN, Fx::ZERO][rng.below(3) as usize];
         }
         let independent = t.independent_blocks();
-        let (mut fast, mut slow) = (positions.clone(), positions.clone());
-        let ((), fast_saturations) = count_saturations(|| t.solve(&mut fast, &independent));
-        let ((), slow_saturations) = count_saturations(|| {
-            for r in 0..t.vertex.len() {
-                t.solve_row(&mut slow, r);
-            }
+        crate::math::cpu::each_backend(|| {
+            let (mut fast, mut slow) = (positions.clone(), positions.clone());
+            let ((), fast_saturations) = count_saturations(|| t.solve(&mut fast, &independent));
+            let ((), slow_saturations) = count_saturations(|| {
+                for r in 0..t.vertex.len() {
+                    t.solve_row(&mut slow, r);
+                }
+            });
+            assert_eq!(fast, slow, "trial {trial}");
+            assert_eq!(fast_saturations, slow_saturations, "trial {trial}");
         });
-        assert_eq!(fast, slow, "trial {trial}");
-        assert_eq!(fast_saturations, slow_saturations, "trial {trial}");
     }
 }

@@ -1,5 +1,5 @@
-//! The tethers of I32F32 in AVX-512: eight rows side by side, with the bits of the scalar
-//! row ([`Tethers::solve_row`]).
+//! The tethers of I32F32 on the lanes of [`Wide`] (every backend): eight rows side by side,
+//! with the bits of the scalar row ([`Tethers::solve_row`]).
 //!
 //! A slack row (|d|² ≤ ℓ₀²) changes nothing; a taut one moves its vertex by −(1 − ℓ₀/|d|) d.
 //! The kernel solves eight rows at once, 1/|d| of each taut one from the scalar square root
@@ -18,21 +18,21 @@
 //! product rounded once and added. The kernel checks that both ends' positions, d, ℓ₀,
 //! 1/√|d|² and −s lie in [−2⁴⁶, 2⁴⁶) as raw bits: then d·d is below 2⁹⁴ before rounding,
 //! every product below 2⁶⁰ after, no sum leaves the range and nothing saturates, so the
-//! kernel's exact values ([`dot3`], [`mul`]) are the scalar ones. The square root of a taut
+//! kernel's exact values ([`Wide::dot`], [`Wide::mul`]) are the scalar ones. The square root of a taut
 //! row (|d|² > ℓ₀² ≥ 0) never saturates, so computing it in the kernel and again in the
 //! scalar row of a lane that then fails a check counts nothing twice.
 
-use core::any::Any;
-use core::arch::x86_64::{
-    __mmask8, _mm512_cmple_epi64_mask, _mm512_loadu_si512, _mm512_setzero_si512,
-};
-
 use super::Tethers;
-use crate::math::{Fx, Real, Vec3};
-use crate::soft::lanes::{
-    LANES, add, dot3, gather3, lane, lane3, load, load_run3, mul, out_of_bound, out_of_bound3,
-    put3, splat, split, split3, sub,
-};
+use crate::math::over_real::Vectors;
+use crate::math::wide::{LANES, Wide, backend, kernel_entry};
+use crate::math::{Fx, OverReal, Real, Vec3};
+
+/// The family of [`Tethers`] over the scalar formats.
+struct TethersOf;
+
+impl OverReal for TethersOf {
+    type Of<R: Real> = Tethers<R>;
+}
 
 impl<R: Real> Tethers<R> {
     /// Whether rows 8k..8k+8 are independent (no two move the same vertex, none's anchor
@@ -52,38 +52,44 @@ impl<R: Real> Tethers<R> {
     }
 }
 
-/// One pass over every row with the kernel when `R` is I32F32 and the processor has
-/// AVX-512F; returns whether it ran (if not, nothing was written).
+/// One pass over every row with the kernel when `R` is I32F32 and a backend runs; returns
+/// whether it ran (if not, nothing was written).
 pub(super) fn solve<R: Real>(
     rows: &Tethers<R>,
     positions: &mut [Vec3<R>],
     independent: &[bool],
 ) -> bool {
-    if !crate::math::cpu::avx512f() {
-        return false;
-    }
-    let Some(rows) = (rows as &dyn Any).downcast_ref::<Tethers<Fx>>() else {
+    let (Some(backend), Some(rows), Some(positions)) = (
+        backend(),
+        R::as_fixed::<TethersOf>(rows),
+        R::as_fixed_mut::<Vectors>(positions),
+    ) else {
         return false;
     };
-    // SAFETY: `R` is `Fx` (the downcast succeeded), so the slice's type is unchanged.
-    let positions = unsafe { &mut *(core::ptr::from_mut(positions) as *mut [Vec3<Fx>]) };
-    // SAFETY: AVX-512F was detected on this processor just above.
-    unsafe { solve_rows(rows, positions, independent) };
+    solve_rows(backend, rows, positions, independent);
     true
+}
+
+kernel_entry! {
+    /// [`solve_rows_kernel`] with the instructions of `backend`.
+    fn solve_rows(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], independent: &[bool]) -> () =
+        solve_rows_kernel;
 }
 
 /// Every row in order: the independent blocks with the kernel and the scalar row for what
 /// it leaves; the other rows with the scalar row.
-///
-/// # Safety
-/// The processor must have AVX-512F.
-#[target_feature(enable = "avx512f")]
-unsafe fn solve_rows(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], independent: &[bool]) {
+#[inline(always)]
+fn solve_rows_kernel<W: Wide>(
+    w: W,
+    rows: &Tethers<Fx>,
+    positions: &mut [Vec3<Fx>],
+    independent: &[bool],
+) {
     let count = rows.vertex.len();
     for k in 0..count / LANES {
         let start = k * LANES;
         let done = if independent.get(k).copied().unwrap_or(false) {
-            solve_block(rows, positions, start)
+            solve_block(w, rows, positions, start)
         } else {
             0
         };
@@ -100,65 +106,68 @@ unsafe fn solve_rows(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], independent
 
 /// The kernel on the independent rows `start..start + 8`: returns the lanes it solved (the
 /// slack ones, which write nothing, and the taut ones it wrote).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn solve_block(rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> __mmask8 {
+#[inline(always)]
+fn solve_block<W: Wide>(w: W, rows: &Tethers<Fx>, positions: &mut [Vec3<Fx>], start: usize) -> u8 {
     let block = start..start + LANES;
     let anchors = &rows.anchor[block.clone()];
     // A round's rows to one pin share their anchor: one load instead of eight.
     let p = if anchors.iter().all(|&a| a == anchors[0]) {
-        positions
-            .get(anchors[0] as usize)
-            .map(|p| [splat(p.x), splat(p.y), splat(p.z)])
+        let Some(pin) = positions.get(anchors[0] as usize) else {
+            return 0;
+        };
+        Some([
+            w.splat(pin.x.to_bits()),
+            w.splat(pin.y.to_bits()),
+            w.splat(pin.z.to_bits()),
+        ])
     } else {
-        gather3(positions, anchors)
+        w.gather_vectors(positions, anchors)
     };
     let vertices = &rows.vertex[block.clone()];
-    // A round's rows of consecutive vertices: three loads instead of eight.
+    // A round's rows of consecutive vertices: one run instead of eight.
     let first = vertices[0];
     let x = if (1..LANES).all(|l| vertices[l] == first.wrapping_add(l as u32)) {
-        load_run3(positions, first as usize)
+        w.load_run(positions, first as usize)
     } else {
-        gather3(positions, vertices)
+        w.gather_vectors(positions, vertices)
     };
     let (Some(x), Some(p)) = (x, p) else {
         return 0;
     };
-    let rest = load(&rows.rest[block]);
-    let d = [sub(x[0], p[0]), sub(x[1], p[1]), sub(x[2], p[2])];
-    let bad = out_of_bound3(x) | out_of_bound3(p) | out_of_bound3(d) | out_of_bound(rest);
-    let d = split3(d);
-    let rest = split(rest);
-    let length_squared = dot3(d, d);
-    let slack = _mm512_cmple_epi64_mask(length_squared, mul(rest, rest)) & !bad;
+    let rest: &[Fx; LANES] = rows.rest[block].try_into().expect("eight values");
+    let rest = w.load(rest);
+    let d = w.sub3(x, p);
+    let bad = w.out_of_bound3(x) | w.out_of_bound3(p) | w.out_of_bound3(d) | w.out_of_bound(rest);
+    let length_squared = w.dot::<false>(d, d);
+    let slack = !w.greater(length_squared, w.mul(rest, rest)) & !bad;
     let taut = !slack & !bad;
     if taut == 0 {
         return slack;
     }
     // 1/|d| per taut lane with the scalar square root (|d|² > ℓ₀² ≥ 0, so it never
     // saturates); the lanes are independent, so the processor overlaps them.
+    let squares = w.store_words(length_squared);
     let mut inverse = [0i64; LANES];
     for (l, y) in inverse.iter_mut().enumerate() {
         if taut & (1 << l) != 0 {
-            *y = Fx::from_bits(lane(length_squared, l)).rsqrt().to_bits();
+            *y = Fx::from_bits(squares[l]).rsqrt().to_bits();
         }
     }
-    // SAFETY: 64 readable bytes.
-    let inverse = unsafe { _mm512_loadu_si512(inverse.as_ptr().cast()) };
-    let shrink = sub(splat(Fx::ONE), mul(rest, split(inverse)));
-    let minus = sub(_mm512_setzero_si512(), shrink);
-    let taut = taut & !(out_of_bound(inverse) | out_of_bound(minus));
-    let minus = split(minus);
+    let inverse = w.load_words(inverse);
+    let shrink = w.sub(w.splat(Fx::ONE.to_bits()), w.mul(rest, inverse));
+    let minus = w.sub(w.zero(), shrink);
+    let taut = taut & !(w.out_of_bound(inverse) | w.out_of_bound(minus));
     let moved = [
-        add(x[0], mul(d[0], minus)),
-        add(x[1], mul(d[1], minus)),
-        add(x[2], mul(d[2], minus)),
+        w.store_words(w.add(x[0], w.mul(d[0], minus))),
+        w.store_words(w.add(x[1], w.mul(d[1], minus))),
+        w.store_words(w.add(x[2], w.mul(d[2], minus))),
     ];
     for l in 0..LANES {
         if taut & (1 << l) != 0 {
-            put3(
-                &mut positions[rows.vertex[start + l] as usize],
-                lane3(moved, l),
+            positions[rows.vertex[start + l] as usize] = Vec3::new(
+                Fx::from_bits(moved[0][l]),
+                Fx::from_bits(moved[1][l]),
+                Fx::from_bits(moved[2][l]),
             );
         }
     }
