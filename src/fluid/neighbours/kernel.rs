@@ -650,17 +650,14 @@ fn evaluate_blocks<W: Wide, const BLOCKS: usize>(
         .extend(index[first..first + count].iter().map(|&j| j as u32));
     let [gx, gy, gz] = &mut lists.gradients;
     let outputs = [&mut lists.value, gx, gy, gz];
+    // Only the first `count` lanes of the blocks are survivors: each list grows by those,
+    // with no placeholder written first.
     for (output, list) in outputs.into_iter().enumerate() {
-        let len = list.len();
-        list.resize(len + LANES * BLOCKS, Fx::ZERO);
         for (b, value) in values.iter().enumerate() {
-            let at = len + LANES * b;
-            let block: &mut [Fx; LANES] = (&mut list[at..at + LANES]).try_into().expect("eight");
-            w.store(block, value[output]);
+            let kept = count.saturating_sub(LANES * b).min(LANES);
+            let words = w.store_words(value[output]);
+            list.extend(words[..kept].iter().map(|&bits| Fx::from_bits(bits)));
         }
-        // The first `count` of the values stored are the survivors' (the blocks' other
-        // lanes, past them, are left out).
-        list.truncate(len + count);
     }
     (first + LANES * BLOCKS).min(survivors.len)
 }
