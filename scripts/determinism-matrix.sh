@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The determinism matrix: build `fixstep` for every target this x86_64 Linux machine can
-# run, and verify every replay in replays/ with it (`fixstep verify`, which re-simulates each
-# replay and compares every checkpoint checksum bit for bit).
+# The determinism matrix: build the engine's replay verifier (examples/verify_replays.rs,
+# the verification of `fixstep verify` with the engine alone, so that a target compiles no
+# tool crate) for every target this x86_64 Linux machine can run, and verify every replay in
+# replays/ with it (it re-simulates each replay and compares every checkpoint checksum bit
+# for bit).
 #
 #   scripts/determinism-matrix.sh [--targets LIST] [--no-install] [--strict]
 #
@@ -75,27 +77,29 @@ rust_target_ensure() { # rust_target_ensure TRIPLE
   rustup target add "$1" >"$LOGS/rustup-$1.log" 2>&1
 }
 
-# build LOG ARGS...: cargo build of the fixstep binary, logged.
+# build LOG ARGS...: cargo build of the verifier, logged.
+VERIFIER=examples/verify_replays
 build() {
   local log=$1; shift
-  cargo build --locked --quiet --bin fixstep "$@" >"$LOGS/$log.build.log" 2>&1 \
+  cargo build --locked --quiet -p fixstep --example verify_replays "$@" \
+    >"$LOGS/$log.build.log" 2>&1 \
     || { echo "build failed (see $LOGS/$log.build.log)"; return 1; }
 }
 
-# verify LOG RUNNER... -- REPLAYS...: runs `fixstep verify` through RUNNER (a command
-# prefix ending with the binary), logging its output; the verify lines become the digest.
+# verify LOG RUNNER...: runs the verifier through RUNNER (a command prefix ending with the
+# binary) on every replay, logging its output; the verify lines become the digest.
 verify() {
   local log=$1; shift
-  "$@" verify "${REPLAYS[@]}" >"$LOGS/$log.log" 2>&1
+  "$@" "${REPLAYS[@]}" >"$LOGS/$log.log" 2>&1
 }
 
-t_host_debug()   { build host-debug && verify host-debug target/debug/fixstep; }
-t_host_release() { build host-release --release && verify host-release target/release/fixstep; }
-t_host_avx2()    { build host-release --release && FIXSTEP_SIMD=avx2 verify host-avx2 target/release/fixstep; }
-t_host_scalar()  { build host-release --release && FIXSTEP_SIMD=scalar verify host-scalar target/release/fixstep; }
+t_host_debug()   { build host-debug && verify host-debug target/debug/$VERIFIER; }
+t_host_release() { build host-release --release && verify host-release target/release/$VERIFIER; }
+t_host_avx2()    { build host-release --release && FIXSTEP_SIMD=avx2 verify host-avx2 target/release/$VERIFIER; }
+t_host_scalar()  { build host-release --release && FIXSTEP_SIMD=scalar verify host-scalar target/release/$VERIFIER; }
 t_host_native() {
   CARGO_TARGET_DIR=target/matrix-native RUSTFLAGS="${RUSTFLAGS:-} -C target-cpu=native" \
-    build host-native --release && verify host-native target/matrix-native/release/fixstep
+    build host-native --release && verify host-native target/matrix-native/release/$VERIFIER
 }
 
 t_i686() {
@@ -107,7 +111,7 @@ t_i686() {
       || { skip "cc -m32 cannot link (libc6-dev-i386, lib32gcc-N-dev)"; return; }
   fi
   "$probe" || { skip "this kernel cannot run 32-bit binaries"; return; }
-  build i686 --release --target $t && verify i686 target/$t/release/fixstep
+  build i686 --release --target $t && verify i686 target/$t/release/$VERIFIER
 }
 
 qemu_target() { # qemu_target LOG TRIPLE GNU-PREFIX QEMU PKGS...
@@ -118,7 +122,7 @@ qemu_target() { # qemu_target LOG TRIPLE GNU-PREFIX QEMU PKGS...
   have "$qemu" || { skip "no $qemu (qemu-user)"; return; }
   local up; up=$(echo "$t" | tr 'a-z-' 'A-Z_')
   ( export "CARGO_TARGET_${up}_LINKER=$pfx-gcc"; build "$log" --release --target "$t" ) \
-    && verify "$log" "$qemu" -L "/usr/$pfx" "target/$t/release/fixstep"
+    && verify "$log" "$qemu" -L "/usr/$pfx" "target/$t/release/$VERIFIER"
 }
 t_aarch64() { qemu_target aarch64 aarch64-unknown-linux-gnu aarch64-linux-gnu qemu-aarch64 \
                 gcc-aarch64-linux-gnu libc6-dev-arm64-cross qemu-user; }
@@ -126,7 +130,7 @@ t_s390x()   { qemu_target s390x s390x-unknown-linux-gnu s390x-linux-gnu qemu-s39
                 gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user; }
 
 t_wasm32_wasip1() {
-  local t=wasm32-wasip1 wasm=target/wasm32-wasip1/release/fixstep.wasm runner=()
+  local t=wasm32-wasip1 wasm=target/wasm32-wasip1/release/$VERIFIER.wasm runner=()
   rust_target_ensure $t || { skip "rust target $t unavailable"; return; }
   if have node && node --no-warnings -e "new (require('node:wasi').WASI)({version:'preview1'})" 2>/dev/null; then
     runner=(node --no-warnings scripts/wasi-run.mjs "$wasm")
@@ -146,8 +150,8 @@ t_miri_s390x() {
   fi
   # Isolation off so that the interpreted program can read the replay file.
   MIRIFLAGS="-Zmiri-disable-isolation" \
-    cargo +nightly miri run --quiet --target s390x-unknown-linux-gnu --bin fixstep -- \
-    verify "$MIRI_REPLAY" >"$LOGS/miri-s390x.log" 2>&1
+    cargo +nightly miri run --quiet --target s390x-unknown-linux-gnu -p fixstep \
+    --example verify_replays -- "$MIRI_REPLAY" >"$LOGS/miri-s390x.log" 2>&1
 }
 
 # The digest of a target's verify lines: equal digests mean equal checksums everywhere.
@@ -186,7 +190,7 @@ for r in "${ROWS[@]}"; do
   IFS='|' read -r n st ok d tc s note <<<"$r"
   printf '| %-14s | %-6s | %-8s | %-12s | %-16s | %5s | %s |\n' "$n" "$st" "$ok" "$d" "$tc" "$s" "$note"
 done
-echo "(digest: sha256 of the \`ok FILE TICKS CHECKSUM\` lines of \`fixstep verify\`: equal digests,"
+echo "(digest: sha256 of the verifier's \`ok FILE TICKS CHECKSUM\` lines: equal digests,"
 echo " equal bits; every target verifies every checkpoint against the committed replays)"
 if (( FAILED > 0 )); then echo "FAILED on $FAILED target(s)"; exit 1; fi
 if (( SKIPPED > 0 && STRICT == 1 )); then echo "SKIPPED $SKIPPED target(s) (--strict)"; exit 1; fi

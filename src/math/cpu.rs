@@ -48,29 +48,14 @@ pub fn cap() -> SimdCap {
     *CAP.get_or_init(|| cap_from_env().unwrap_or(SimdCap::Avx512))
 }
 
-/// Whether the kernels may use AVX-512F.
-#[cfg(target_arch = "x86_64")]
-pub(crate) fn avx512f() -> bool {
-    cap() >= SimdCap::Avx512 && std::arch::is_x86_feature_detected!("avx512f")
-}
-
-/// Whether the kernels may use AVX-512CD.
-#[cfg(target_arch = "x86_64")]
-pub(crate) fn avx512cd() -> bool {
-    cap() >= SimdCap::Avx512 && std::arch::is_x86_feature_detected!("avx512cd")
-}
-
-/// Whether the kernels may use AVX-512DQ.
-#[cfg(target_arch = "x86_64")]
-pub(crate) fn avx512dq() -> bool {
-    cap() >= SimdCap::Avx512 && std::arch::is_x86_feature_detected!("avx512dq")
-}
-
 /// Whether the kernels may use the AVX-512 backend of [`wide`](super::wide): AVX-512F, CD
 /// and DQ.
 #[cfg(target_arch = "x86_64")]
 pub(crate) fn avx512_kernels() -> bool {
-    avx512f() && avx512cd() && avx512dq()
+    cap() >= SimdCap::Avx512
+        && std::arch::is_x86_feature_detected!("avx512f")
+        && std::arch::is_x86_feature_detected!("avx512cd")
+        && std::arch::is_x86_feature_detected!("avx512dq")
 }
 
 /// Whether the kernels may use AVX2.

@@ -234,6 +234,21 @@ pub(crate) trait Wide: Copy {
         ])
     }
 
+    /// The 24 words of eight consecutive vectors in memory order, eight to a vector:
+    /// component c of vector i (word 3i + c) in lane (3i + c) mod 8 of vector
+    /// ⌊(3i + c)/8⌋. No transpose: for kernels that treat every component alike.
+    fn load_interleaved(self, vectors: &[Vec3<Fx>; LANES]) -> [Self::V; 3];
+
+    /// Writes three vectors of words back to eight consecutive vectors, in the layout of
+    /// [`load_interleaved`](Self::load_interleaved).
+    fn store_interleaved(self, vectors: &mut [Vec3<Fx>; LANES], words: [Self::V; 3]);
+
+    /// A value per vector of a run of eight (lane i of `a` for vector i) over the lanes of
+    /// that vector's three components in the layout of
+    /// [`load_interleaved`](Self::load_interleaved): lane j of result k holds lane
+    /// ⌊(8k + j)/3⌋ of `a`.
+    fn spread_thirds(self, a: Self::V) -> [Self::V; 3];
+
     /// The four columns of eight rows of four values, one vector per column.
     #[inline(always)]
     fn load_columns(self, rows: &[[Fx; 4]; LANES]) -> [Self::V; 4] {

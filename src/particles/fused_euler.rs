@@ -43,11 +43,12 @@
 //!
 //! # I32F32 in vector code
 //!
-//! On x86-64 processors with AVX2 or AVX-512 (detected at run time), I32F32 blocks go to
-//! `x86` first: one pass takes the magnitudes of the block's values, and when these bound
-//! every result of the block inside the range (so that the general path saturates nowhere
-//! in it), the block is computed in place, four or eight lanes at a time, by exact integer
-//! identities for the rounded products. Other blocks run as above. The result is the
+//! On x86-64 processors with AVX2 or AVX-512 (the backend of
+//! [`math::wide`](crate::math::wide)), I32F32 blocks go to [`kernel`] first: one pass takes
+//! the magnitudes of the block's values, and when these bound every result of the block
+//! inside the range (so that the general path saturates nowhere in it), the block is
+//! computed in place, eight particles at a time, by exact integer identities for the
+//! rounded products. Other blocks run as above. The result is the
 //! general path's in every case; other processors, targets and formats never take this
 //! path.
 
@@ -62,8 +63,8 @@ const BLOCK: usize = 64;
 
 /// One semi-implicit Euler step of length `h` (s) of every movable particle in `field`.
 ///
-/// I32F32 takes the vector kernels of `x86` on x86-64 processors that have AVX2 or AVX-512
-/// (checked at run time); everything else takes the portable guarded computation. Both
+/// I32F32 takes the vector kernel ([`kernel`]) on x86-64 processors that have AVX2 or
+/// AVX-512; everything else takes the portable guarded computation. Both
 /// give the general path's bits.
 pub(super) fn step<R: Real>(
     field: &LinearField<R>,
@@ -72,7 +73,7 @@ pub(super) fn step<R: Real>(
     attributes: &Attributes<R>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if x86::step(field, h, kinematics, attributes) {
+    if kernel::step(field, h, kinematics, attributes) {
         return;
     }
     step_portable(field, h, kinematics, attributes);
@@ -225,7 +226,7 @@ fn zip_with<R: Real>(a: Vec3<R>, b: Vec3<R>, mut f: impl FnMut(R, R) -> R) -> Ve
     Vec3::new(f(a.x, b.x), f(a.y, b.y), f(a.z, b.z))
 }
 
+#[cfg(target_arch = "x86_64")]
+mod kernel;
 #[cfg(test)]
 mod tests;
-#[cfg(target_arch = "x86_64")]
-mod x86;

@@ -15,6 +15,15 @@ pub struct Transform<R: Real = Fx> {
     pub translation: Vec3<R>,
 }
 
+/// The family of [`Transform`]s, for [`Real::as_fixed`].
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct TransformOf;
+
+#[cfg(target_arch = "x86_64")]
+impl crate::math::over_real::OverReal for TransformOf {
+    type Of<R: Real> = Transform<R>;
+}
+
 impl<R: Real> Transform<R> {
     /// The identity placement.
     pub const IDENTITY: Self = Self {

@@ -21,10 +21,10 @@ use core::arch::x86_64::{
     _mm256_add_epi64, _mm256_and_si256, _mm256_blend_epi32, _mm256_blendv_epi8,
     _mm256_castsi256_pd, _mm256_cmpeq_epi64, _mm256_cmpgt_epi64, _mm256_cvtepu32_epi64,
     _mm256_i64gather_epi64, _mm256_loadu_si256, _mm256_mask_i64gather_epi64, _mm256_maskload_epi64,
-    _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32, _mm256_or_si256, _mm256_set_epi64x,
-    _mm256_set1_epi64x, _mm256_setzero_si256, _mm256_sll_epi64, _mm256_slli_epi64,
-    _mm256_sllv_epi64, _mm256_srai_epi32, _mm256_srl_epi64, _mm256_srli_epi64, _mm256_srlv_epi64,
-    _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
+    _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32, _mm256_or_si256,
+    _mm256_permute4x64_epi64, _mm256_set_epi64x, _mm256_set1_epi64x, _mm256_setzero_si256,
+    _mm256_sll_epi64, _mm256_slli_epi64, _mm256_sllv_epi64, _mm256_srai_epi32, _mm256_srl_epi64,
+    _mm256_srli_epi64, _mm256_srlv_epi64, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
 };
 
 use super::{LANES, Wide};
@@ -347,6 +347,66 @@ impl Wide for Avx2 {
             self.load_words(words[1]),
             self.load_words(words[2]),
         ])
+    }
+
+    #[inline(always)]
+    fn load_interleaved(self, vectors: &[Vec3<Fx>; LANES]) -> [Self::V; 3] {
+        let words = vectors.as_ptr().cast::<i64>();
+        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`, six runs of four.
+        unsafe {
+            [
+                [
+                    _mm256_loadu_si256(words.cast()),
+                    _mm256_loadu_si256(words.add(4).cast()),
+                ],
+                [
+                    _mm256_loadu_si256(words.add(8).cast()),
+                    _mm256_loadu_si256(words.add(12).cast()),
+                ],
+                [
+                    _mm256_loadu_si256(words.add(16).cast()),
+                    _mm256_loadu_si256(words.add(20).cast()),
+                ],
+            ]
+        }
+    }
+
+    #[inline(always)]
+    fn store_interleaved(self, vectors: &mut [Vec3<Fx>; LANES], words: [Self::V; 3]) {
+        let out = vectors.as_mut_ptr().cast::<i64>();
+        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`, six runs of four, and every bit
+        // pattern is an `Fx`.
+        unsafe {
+            _mm256_storeu_si256(out.cast(), words[0][0]);
+            _mm256_storeu_si256(out.add(4).cast(), words[0][1]);
+            _mm256_storeu_si256(out.add(8).cast(), words[1][0]);
+            _mm256_storeu_si256(out.add(12).cast(), words[1][1]);
+            _mm256_storeu_si256(out.add(16).cast(), words[2][0]);
+            _mm256_storeu_si256(out.add(20).cast(), words[2][1]);
+        }
+    }
+
+    /// Each half of each result comes from one half of `a`: six permutes within halves.
+    #[inline(always)]
+    fn spread_thirds(self, a: Self::V) -> [Self::V; 3] {
+        let [low, high] = a;
+        // Lanes (0 0 0 1 | 1 1 2 2), (2 3 3 3 | 4 4 4 5), (5 5 6 6 | 6 7 7 7).
+        unsafe {
+            [
+                [
+                    _mm256_permute4x64_epi64::<0b01_00_00_00>(low),
+                    _mm256_permute4x64_epi64::<0b10_10_01_01>(low),
+                ],
+                [
+                    _mm256_permute4x64_epi64::<0b11_11_11_10>(low),
+                    _mm256_permute4x64_epi64::<0b01_00_00_00>(high),
+                ],
+                [
+                    _mm256_permute4x64_epi64::<0b10_10_01_01>(high),
+                    _mm256_permute4x64_epi64::<0b11_11_11_10>(high),
+                ],
+            ]
+        }
     }
 
     /// Two masked loads of four words.

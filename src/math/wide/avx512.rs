@@ -18,10 +18,11 @@ use core::arch::x86_64::{
     _mm512_mask_loadu_epi64, _mm512_mask_storeu_epi64, _mm512_maskz_compress_epi64,
     _mm512_maskz_loadu_epi32, _mm512_maskz_loadu_epi64, _mm512_max_epi64, _mm512_min_epi64,
     _mm512_min_epu64, _mm512_mul_epi32, _mm512_mul_epu32, _mm512_mullo_epi64, _mm512_or_si512,
-    _mm512_permutex2var_epi64, _mm512_reduce_add_epi64, _mm512_reduce_or_epi64, _mm512_set_epi64,
-    _mm512_set1_epi64, _mm512_setzero_si512, _mm512_sll_epi64, _mm512_sllv_epi64, _mm512_sra_epi64,
-    _mm512_srai_epi64, _mm512_srl_epi64, _mm512_srlv_epi64, _mm512_storeu_si512, _mm512_sub_epi64,
-    _mm512_unpackhi_epi64, _mm512_unpacklo_epi64, _mm512_xor_si512,
+    _mm512_permutex2var_epi64, _mm512_permutexvar_epi64, _mm512_reduce_add_epi64,
+    _mm512_reduce_or_epi64, _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
+    _mm512_sll_epi64, _mm512_sllv_epi64, _mm512_sra_epi64, _mm512_srai_epi64, _mm512_srl_epi64,
+    _mm512_srlv_epi64, _mm512_storeu_si512, _mm512_sub_epi64, _mm512_unpackhi_epi64,
+    _mm512_unpacklo_epi64, _mm512_xor_si512,
 };
 
 use super::{LANES, Wide};
@@ -233,6 +234,42 @@ impl Wide for Avx512 {
                 _mm512_permutex2var_epi64(y, _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0), v2),
                 _mm512_permutex2var_epi64(z, _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0), v2),
             ])
+        }
+    }
+
+    #[inline(always)]
+    fn load_interleaved(self, vectors: &[Vec3<Fx>; LANES]) -> [__m512i; 3] {
+        let words = vectors.as_ptr().cast::<i64>();
+        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`.
+        unsafe {
+            [
+                _mm512_loadu_si512(words.cast()),
+                _mm512_loadu_si512(words.add(LANES).cast()),
+                _mm512_loadu_si512(words.add(2 * LANES).cast()),
+            ]
+        }
+    }
+
+    #[inline(always)]
+    fn store_interleaved(self, vectors: &mut [Vec3<Fx>; LANES], words: [__m512i; 3]) {
+        let out = vectors.as_mut_ptr().cast::<i64>();
+        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`, and every bit pattern is an `Fx`.
+        unsafe {
+            _mm512_storeu_si512(out.cast(), words[0]);
+            _mm512_storeu_si512(out.add(LANES).cast(), words[1]);
+            _mm512_storeu_si512(out.add(2 * LANES).cast(), words[2]);
+        }
+    }
+
+    /// One permute per result.
+    #[inline(always)]
+    fn spread_thirds(self, a: __m512i) -> [__m512i; 3] {
+        unsafe {
+            [
+                _mm512_permutexvar_epi64(_mm512_set_epi64(2, 2, 1, 1, 1, 0, 0, 0), a),
+                _mm512_permutexvar_epi64(_mm512_set_epi64(5, 4, 4, 4, 3, 3, 3, 2), a),
+                _mm512_permutexvar_epi64(_mm512_set_epi64(7, 7, 7, 6, 6, 6, 5, 5), a),
+            ]
         }
     }
 

@@ -6,7 +6,7 @@
 use proptest::prelude::*;
 
 #[cfg(target_arch = "x86_64")]
-mod x86;
+mod kernel;
 
 use crate::math::saturation::count_saturations;
 use crate::math::{Fraction, Fx, FxI48F16, Real, Vec3};

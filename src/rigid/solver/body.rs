@@ -27,6 +27,15 @@ pub(crate) struct SolverBody<R: Real> {
     pub inv_inertia: Mat3<R>,
 }
 
+/// The family of solver body lists, `[SolverBody<R>]`, for [`Real::as_fixed`].
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct SolverBodiesOf;
+
+#[cfg(target_arch = "x86_64")]
+impl crate::math::over_real::OverReal for SolverBodiesOf {
+    type Of<R: Real> = [SolverBody<R>];
+}
+
 /// The solver index of every static body (and of bodies the solver does not move).
 pub(crate) const STATIC_BODY: u32 = 0;
 

@@ -40,6 +40,8 @@ use super::body::{SolverBody, pair};
 use super::lanes::{LANES, Lanes, Lanes3};
 use super::softness::Softness;
 use crate::math::Real;
+#[cfg(target_arch = "x86_64")]
+use crate::math::over_real::OverReal;
 use crate::rigid::contact::Contact;
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 
@@ -132,16 +134,36 @@ impl<R: Real> FrictionLanes<R> {
 }
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
-#[cfg(target_arch = "x86_64")]
 mod kernel;
 mod prepare;
 #[cfg(target_arch = "x86_64")]
 mod prepare_kernel;
+#[cfg(target_arch = "x86_64")]
+mod roots_kernel;
 #[cfg(test)]
 mod tests;
 
 pub(crate) use prepare::ContactArms;
+#[cfg(target_arch = "x86_64")]
+use prepare::ContactArmsOf;
+
+/// The family of [`ContactBlock`]s, for [`Real::as_fixed`].
+#[cfg(target_arch = "x86_64")]
+struct ContactBlockOf;
+
+#[cfg(target_arch = "x86_64")]
+impl OverReal for ContactBlockOf {
+    type Of<R: Real> = ContactBlock<R>;
+}
+
+/// The family of [`SolvePass`]es, for [`Real::as_fixed`].
+#[cfg(target_arch = "x86_64")]
+struct SolvePassOf;
+
+#[cfg(target_arch = "x86_64")]
+impl OverReal for SolvePassOf {
+    type Of<R: Real> = SolvePass<R>;
+}
 
 /// The constraints of up to [`LANES`] contacts for a step, one per lane.
 #[derive(Clone, Debug)]

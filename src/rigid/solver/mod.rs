@@ -19,8 +19,6 @@
 //! contact-key order; joints in slot order; bodies in slot order: the same on every
 //! machine.
 
-#[cfg(target_arch = "x86_64")]
-pub(crate) mod avx512;
 mod batching;
 mod body;
 mod contact_constraint;
@@ -46,27 +44,6 @@ pub(crate) use softness::Softness;
 
 use crate::math::Real;
 use batching::Batching;
-
-/// Whether this processor runs the rigid step's AVX-512 kernels (never off x86_64): for
-/// tests that check the kernels took their share of the cases they compare.
-#[cfg(test)]
-pub(crate) fn kernels_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return avx512::has_kernels();
-    #[cfg(not(target_arch = "x86_64"))]
-    false
-}
-
-/// Whether this processor runs the rigid step's kernels written against [`Wide`](crate::math::wide::Wide)
-/// (AVX-512 or AVX2; never off x86_64): for tests that check those kernels took their
-/// share of the cases they compare.
-#[cfg(test)]
-pub(crate) fn wide_kernels_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return crate::math::wide::backend().is_some();
-    #[cfg(not(target_arch = "x86_64"))]
-    false
-}
 
 /// Buffers the solver reuses from step to step. They hold no state between steps, only
 /// capacity.

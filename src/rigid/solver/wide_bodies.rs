@@ -52,4 +52,13 @@ pub(crate) trait WideBodies: Wide {
             self.load(&lanes.z),
         ]
     }
+
+    /// Writes the lanes of `mask` to the three lane arrays of a block's vector; the others
+    /// keep their values.
+    #[inline(always)]
+    fn store_lanes3(self, lanes: &mut Lanes3<Fx>, mask: u8, value: [Self::V; 3]) {
+        self.store_lanes(&mut lanes.x, mask, value[0]);
+        self.store_lanes(&mut lanes.y, mask, value[1]);
+        self.store_lanes(&mut lanes.z, mask, value[2]);
+    }
 }

@@ -25,11 +25,10 @@
 //! written and is left to the caller, even where the scalar test would have stopped
 //! before the value that failed.
 
-use core::any::Any;
-
 #[cfg(doc)]
 use super::separating_axes;
 use super::{Axes, BoxPair, Choice, LANES};
+use crate::math::over_real::{OverReal, Scalar};
 use crate::math::wide::{Wide, backend, kernel_entry};
 use crate::math::{Fx, Real};
 use crate::rigid::narrowphase::tolerance::parallel_sine_squared;
@@ -44,6 +43,20 @@ const B_CENTRE: usize = 21;
 const A_HALF: usize = 24;
 const B_HALF: usize = 27;
 
+/// The family of lists of box pairs, `[BoxPair<'a, R>]`, for [`Real::as_fixed`].
+struct BoxPairsOf<'a>(core::marker::PhantomData<&'a ()>);
+
+impl<'a> OverReal for BoxPairsOf<'a> {
+    type Of<R: Real> = [BoxPair<'a, R>];
+}
+
+/// The family of the lanes' results, `[Option<Axes<R>>; LANES]`, for [`Real::as_fixed`].
+struct AxesLanesOf;
+
+impl OverReal for AxesLanesOf {
+    type Of<R: Real> = [Option<Axes<R>>; LANES];
+}
+
 /// Tests the pairs `pairs` (at most [`LANES`]) with the kernel when `R` is I32F32 and the
 /// processor has AVX-512 (F and DQ) or AVX2, writing lane l's result to `out[l]`. Returns
 /// the lanes it is done with; the caller tests the others.
@@ -55,15 +68,12 @@ pub(super) fn separating_axes_lanes<R: Real>(
     let Some(backend) = backend() else {
         return 0;
     };
-    let Some(&margin) = (&margin as &dyn Any).downcast_ref::<Fx>() else {
+    let (Some(&margin), Some(pairs), Some(out)) = (
+        R::as_fixed::<Scalar>(&margin),
+        R::as_fixed::<BoxPairsOf>(pairs),
+        R::as_fixed_mut::<AxesLanesOf>(out),
+    ) else {
         return 0;
-    };
-    // SAFETY: `R` is `Fx` (the downcast succeeded), so the types are unchanged.
-    let (pairs, out) = unsafe {
-        (
-            &*(core::ptr::from_ref(pairs) as *const [BoxPair<'_, Fx>]),
-            &mut *(core::ptr::from_mut(out) as *mut [Option<Axes<Fx>>; LANES]),
-        )
     };
     let count = pairs.len().min(LANES);
     // The lanes' inputs, word by word (zero in lanes past `count`).

@@ -3,10 +3,10 @@
 //! of [`box_box`], with the same saturation count.
 
 use super::{Axes, BoxPair, Choice, box_box, contact, separating_axes, separating_axes_batch};
+use crate::math::cpu::kernels_present;
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Mat3, Pcg32, Quat, Real, Vec3};
 use crate::rigid::solver::LANES;
-use crate::rigid::solver::wide_kernels_present;
 use crate::rigid::transform::Transform;
 
 /// A value in [−scale, scale).
@@ -332,7 +332,7 @@ fn random_poses_match_the_scalar_test() {
     assert!(tally.face_a > 500, "{tally:?}");
     assert!(tally.face_b > 500, "{tally:?}");
     assert!(tally.edge > 300, "{tally:?}");
-    if wide_kernels_present() {
+    if kernels_present() {
         assert!(tally.taken * 10 > 13_500 * 9, "{tally:?}");
     }
 }
@@ -373,7 +373,7 @@ fn resting_stacked_and_edge_poses_match_with_other_margins() {
 fn values_past_the_bound_match_the_scalar_test() {
     let margin = Fx::from_ratio(2, 100);
     let tally = compare(5, 1000, &[5, 0, 5, 1], margin);
-    if wide_kernels_present() {
+    if kernels_present() {
         // Half of the pairs are past the bound: the kernel leaves those lanes.
         assert!(tally.taken > 1000 && tally.taken < 4000, "{tally:?}");
     }
@@ -390,7 +390,7 @@ fn face_b_deeper_by_the_bias_give_the_scalar_choice() {
     let margin = Fx::from_ratio(2, 100);
     let tally = compare(10, 2000, &[7, 0, 7, 1], margin);
     assert!(tally.face_a > 600 && tally.face_b > 600, "{tally:?}");
-    if wide_kernels_present() {
+    if kernels_present() {
         assert!(tally.taken * 10 > 9_000 * 9, "{tally:?}");
     }
 }

@@ -1,15 +1,17 @@
 //! The world positions of a face contact's points, all four at once: x ↦ R x + t (m), with
 //! the bits of [`Transform::point`] for each point.
 //!
-//! On I32F32 the four transforms run in one AVX-512 kernel (`world_points/avx512.rs`)
-//! when the processor has it and every operand lies within its bound; otherwise, and for
-//! every other format, they run one by one.
+//! On I32F32 the four transforms run in one kernel ([`kernel`]) when the processor has
+//! AVX-512 or AVX2 and every operand lies within its bound; otherwise, and for every
+//! other format, they run one by one.
 
 #[cfg(target_arch = "x86_64")]
-mod avx512;
+mod kernel;
 #[cfg(test)]
 mod tests;
 
+#[cfg(target_arch = "x86_64")]
+use crate::math::over_real::OverReal;
 use crate::math::{Real, Vec3};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 use crate::rigid::transform::Transform;
@@ -26,11 +28,21 @@ pub(super) fn to_world<R: Real>(
 ) -> [Vec3<R>; MAX_MANIFOLD_POINTS] {
     let mut world = [Vec3::ZERO; MAX_MANIFOLD_POINTS];
     #[cfg(target_arch = "x86_64")]
-    if avx512::to_world(xf, local, &mut world) {
+    if kernel::to_world(xf, local, &mut world) {
         return world;
     }
     for (w, &p) in world.iter_mut().zip(local).take(count) {
         *w = xf.point(p);
     }
     world
+}
+
+/// The family of a manifold's points, `[Vec3<R>; MAX_MANIFOLD_POINTS]`, for
+/// [`Real::as_fixed`].
+#[cfg(target_arch = "x86_64")]
+struct ManifoldPointsOf;
+
+#[cfg(target_arch = "x86_64")]
+impl OverReal for ManifoldPointsOf {
+    type Of<R: Real> = [Vec3<R>; MAX_MANIFOLD_POINTS];
 }

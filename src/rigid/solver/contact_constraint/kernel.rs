@@ -75,13 +75,11 @@
 //! disc, which needs 1/√x, runs per lane in scalar code with the checked operators, in the
 //! few lanes where it applies; the twist clamp is a min and a max.
 
-use core::any::Any;
-
-use super::{ContactArms, ContactBlock, SolvePass};
+use super::{ContactArms, ContactBlock, ContactBlockOf, SolvePass, SolvePassOf};
 use crate::math::wide::{Backend, backend};
 use crate::math::wide::{avx2::Avx2, avx512::Avx512};
 use crate::math::{Fx, Real};
-use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::body::{SolverBodiesOf, SolverBody};
 use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
 use crate::rigid::solver::wide_bodies::WideBodies;
 
@@ -100,14 +98,9 @@ pub(super) fn solve<R: Real>(
     bodies: &mut [SolverBody<R>],
     pass: &SolvePass<R>,
 ) -> Option<Kernel> {
-    let (Some(block), Some(pass)) = (
-        (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>(),
-        (pass as &dyn Any).downcast_ref::<SolvePass<Fx>>(),
-    ) else {
-        return None;
-    };
-    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
-    let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
+    let block = R::as_fixed_mut::<ContactBlockOf>(block)?;
+    let bodies = R::as_fixed_mut::<SolverBodiesOf>(bodies)?;
+    let pass = R::as_fixed::<SolvePassOf>(pass)?;
     match backend()? {
         Backend::Avx512(wide) => solve_on(wide, block, bodies, pass),
         Backend::Avx2(wide) => solve_on(wide, block, bodies, pass),
@@ -153,9 +146,8 @@ pub(super) fn warm_start<R: Real>(
     block: &mut ContactBlock<R>,
     bodies: &mut [SolverBody<R>],
 ) -> Option<Kernel> {
-    let block = (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>()?;
-    // SAFETY: `R` is `Fx` (the downcast succeeded), so the slice's type is unchanged.
-    let bodies = unsafe { &mut *(core::ptr::from_mut(bodies) as *mut [SolverBody<Fx>]) };
+    let block = R::as_fixed_mut::<ContactBlockOf>(block)?;
+    let bodies = R::as_fixed_mut::<SolverBodiesOf>(bodies)?;
     match backend()? {
         Backend::Avx512(wide) => warm_start_on(wide, block, bodies),
         Backend::Avx2(wide) => warm_start_on(wide, block, bodies),
@@ -339,7 +331,7 @@ impl KernelFacts {
     /// The facts of `block`, complete for the step; [`NONE`](Self::NONE) when `R` is not
     /// I32F32 or the processor has neither AVX-512 nor AVX2.
     pub(super) fn of<R: Real>(block: &ContactBlock<R>) -> Self {
-        let Some(block) = (block as &dyn Any).downcast_ref::<ContactBlock<Fx>>() else {
+        let Some(block) = R::as_fixed::<ContactBlockOf>(block) else {
             return Self::NONE;
         };
         match backend() {

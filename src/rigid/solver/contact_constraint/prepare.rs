@@ -5,10 +5,12 @@
 //! I⁻¹n and the tangent and twist effective masses.
 //!
 //! The products are the costly part (about forty multiplies per point and a hundred per
-//! contact); on I32F32 they go to the AVX-512 kernel when the processor has it, which gives
+//! contact); on I32F32 they go to a kernel when the processor has AVX-512 or AVX2, which gives
 //! the same bits.
 
 use super::{ContactBlock, SolvePass};
+#[cfg(target_arch = "x86_64")]
+use crate::math::over_real::OverReal;
 use crate::math::{Real, Vec3};
 use crate::rigid::contact::Contact;
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
@@ -28,6 +30,15 @@ pub(crate) struct ContactArms<R: Real> {
     pub centre_a: Lanes3<R>,
     pub centre_b: Lanes3<R>,
     pub twist_arm_squared: [Lanes<R>; MAX_MANIFOLD_POINTS],
+}
+
+/// The family of [`ContactArms`], for [`Real::as_fixed`].
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct ContactArmsOf;
+
+#[cfg(target_arch = "x86_64")]
+impl OverReal for ContactArmsOf {
+    type Of<R: Real> = ContactArms<R>;
 }
 
 impl<R: Real> ContactArms<R> {
@@ -163,12 +174,13 @@ impl<R: Real> ContactBlock<R> {
     /// Each lane's unit tangents (dimensionless) from the vector o ⟂ n that
     /// [`prepare_lane`](Self::prepare_lane) left in the first: t₁ = o/|o| as
     /// [`Vec3::normalize_or_zero`] computes it (|o| = √(o·o), then o·(1/|o|)), and
-    /// t₂ = n × t₁. On I32F32 the AVX-512 kernel takes the whole block when the processor
-    /// has it and every value lies within its bound; otherwise, and on other formats, one
+    /// t₂ = n × t₁. On I32F32 a kernel takes the whole block when the processor has
+    /// AVX-512 or AVX2 ([`roots_kernel`](super::roots_kernel)) and every value lies within
+    /// its bound; otherwise, and on other formats, one
     /// lane after another. Both give the same bits.
     pub(super) fn tangents(&mut self) {
         #[cfg(target_arch = "x86_64")]
-        if super::avx512::tangents(self) {
+        if super::roots_kernel::tangents(self) {
             return;
         }
         self.tangents_lanes();
@@ -184,12 +196,13 @@ impl<R: Real> ContactBlock<R> {
     }
 
     /// Each point's twist lever arm, d_k = √(d_k²) (m), from the squares in `arms`. On
-    /// I32F32 the AVX-512 square roots take the whole block when the processor has them;
+    /// I32F32 a kernel's square roots take the whole block when the processor has AVX-512 or
+    /// AVX2;
     /// otherwise, and on other formats, one point after another with [`Real::sqrt`]. Both
     /// give the same bits.
     fn twist_arms(&mut self, arms: &ContactArms<R>) {
         #[cfg(target_arch = "x86_64")]
-        if super::avx512::twist_arms(self, arms) {
+        if super::roots_kernel::twist_arms(self, arms) {
             return;
         }
         self.twist_arms_lanes(arms);

@@ -22,15 +22,14 @@
 //! kernel returns false and the caller recomputes every lane with the scalar form, which
 //! overwrites whatever the kernel wrote.
 
-use core::any::Any;
 use core::mem::{offset_of, size_of};
 
 use super::kernel::{Kernels, counts_of, points_in_use};
-use super::{ContactArms, ContactBlock};
+use super::{ContactArms, ContactArmsOf, ContactBlock, ContactBlockOf};
 use crate::math::wide::{Backend, Wide, backend};
 use crate::math::{Fx, Mat3, Real, Vec3};
-use crate::rigid::solver::body::SolverBody;
-use crate::rigid::solver::lanes::{LANES, Lanes3};
+use crate::rigid::solver::body::{SolverBodiesOf, SolverBody};
+use crate::rigid::solver::lanes::LANES;
 use crate::rigid::solver::wide_bodies::WideBodies;
 use crate::rigid::solver::wide_bodies::{BODY_WORDS, V, W};
 
@@ -54,14 +53,13 @@ pub(super) fn prepare<R: Real>(
     arms: &ContactArms<R>,
     bodies: &[SolverBody<R>],
 ) -> bool {
-    let (Some(block), Some(arms)) = (
-        (block as &mut dyn Any).downcast_mut::<ContactBlock<Fx>>(),
-        (arms as &dyn Any).downcast_ref::<ContactArms<Fx>>(),
+    let (Some(block), Some(arms), Some(bodies)) = (
+        R::as_fixed_mut::<ContactBlockOf>(block),
+        R::as_fixed::<ContactArmsOf>(arms),
+        R::as_fixed::<SolverBodiesOf>(bodies),
     ) else {
         return false;
     };
-    // SAFETY: `R` is `Fx` (the downcasts succeeded), so the slice's type is unchanged.
-    let bodies = unsafe { &*(core::ptr::from_ref(bodies) as *const [SolverBody<Fx>]) };
     match backend() {
         Some(Backend::Avx512(wide)) => wide.prepare_block(block, arms, bodies),
         Some(Backend::Avx2(wide)) => wide.prepare_block(block, arms, bodies),
@@ -219,10 +217,10 @@ pub(super) fn prepare_block<W: WideBodies>(
         if bad & in_use != 0 {
             return false;
         }
-        store3(w, &mut cp.rn_a, in_use, rn_a);
-        store3(w, &mut cp.rn_b, in_use, rn_b);
-        store3(w, &mut cp.in_a, in_use, row.turns.0);
-        store3(w, &mut cp.in_b, in_use, row.turns.1);
+        w.store_lanes3(&mut cp.rn_a, in_use, rn_a);
+        w.store_lanes3(&mut cp.rn_b, in_use, rn_b);
+        w.store_lanes3(&mut cp.in_a, in_use, row.turns.0);
+        w.store_lanes3(&mut cp.in_b, in_use, row.turns.1);
         w.store_lanes(&mut cp.normal_mass, in_use, row.k);
         w.store_lanes(&mut cp.relative_velocity, in_use, approach);
     }
@@ -237,10 +235,10 @@ pub(super) fn prepare_block<W: WideBodies>(
     for (j, &tangent) in tangents.iter().enumerate() {
         let row = Row::along(w, (r_a, r_b), tangent, (inertia_a, inertia_b), m_sum);
         bad |= row.bad;
-        store3(w, &mut f.rt_a[j], active, row.arms.0);
-        store3(w, &mut f.rt_b[j], active, row.arms.1);
-        store3(w, &mut f.it_a[j], active, row.turns.0);
-        store3(w, &mut f.it_b[j], active, row.turns.1);
+        w.store_lanes3(&mut f.rt_a[j], active, row.arms.0);
+        w.store_lanes3(&mut f.rt_b[j], active, row.arms.1);
+        w.store_lanes3(&mut f.it_a[j], active, row.turns.0);
+        w.store_lanes3(&mut f.it_b[j], active, row.turns.1);
         w.store_lanes(&mut f.tangent_mass[j], active, row.k);
     }
     let twist_a = mat_vec(w, inertia_a, normal);
@@ -253,30 +251,26 @@ pub(super) fn prepare_block<W: WideBodies>(
     if bad & active != 0 {
         return false;
     }
-    store3(w, &mut f.twist_a, active, twist_a);
-    store3(w, &mut f.twist_b, active, twist_b);
+    w.store_lanes3(&mut f.twist_a, active, twist_a);
+    w.store_lanes3(&mut f.twist_b, active, twist_b);
     w.store_lanes(&mut f.twist_mass, active, k_twist);
-    store3(
-        w,
+    w.store_lanes3(
         &mut block.normal_a,
         active,
         w.times3::<false>(normal, inv_mass_a),
     );
-    store3(
-        w,
+    w.store_lanes3(
         &mut block.normal_b,
         active,
         w.times3::<false>(normal, inv_mass_b),
     );
     for (j, tangent) in tangents.into_iter().enumerate() {
-        store3(
-            w,
+        w.store_lanes3(
             &mut block.tangents_a[j],
             active,
             w.times3::<false>(tangent, inv_mass_a),
         );
-        store3(
-            w,
+        w.store_lanes3(
             &mut block.tangents_b[j],
             active,
             w.times3::<false>(tangent, inv_mass_b),
@@ -347,12 +341,4 @@ fn mat_vec<W: WideBodies>(w: W, columns: Columns<W>, v: [W::V; 3]) -> [W::V; 3] 
 #[inline(always)]
 fn out_of_bound_matrix<W: WideBodies>(w: W, columns: Columns<W>) -> u8 {
     w.out_of_bound3(columns[0]) | w.out_of_bound3(columns[1]) | w.out_of_bound3(columns[2])
-}
-
-/// Writes the lanes of `mask` of a vector.
-#[inline(always)]
-fn store3<W: WideBodies>(w: W, lanes: &mut Lanes3<Fx>, mask: u8, value: [W::V; 3]) {
-    w.store_lanes(&mut lanes.x, mask, value[0]);
-    w.store_lanes(&mut lanes.y, mask, value[1]);
-    w.store_lanes(&mut lanes.z, mask, value[2]);
 }

@@ -6,6 +6,7 @@
 #[cfg(target_arch = "x86_64")]
 use super::kernel::{Kernel, KernelFacts, Kernels, solve_on, warm_start_on};
 use super::{ContactArms, ContactBlock, SolvePass};
+use crate::math::cpu::{each_backend, kernels_present};
 use crate::math::saturation::count_saturations;
 #[cfg(target_arch = "x86_64")]
 use crate::math::wide::{Backend, backends, with_backend};
@@ -13,7 +14,6 @@ use crate::math::{Fx, Mat3, Pcg32, Real, Vec3};
 use crate::rigid::contact::{Contact, ContactKey, ContactPoint};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
 use crate::rigid::solver::body::SolverBody;
-use crate::rigid::solver::kernels_present;
 use crate::rigid::solver::lanes::LANES;
 use crate::rigid::solver::softness::Softness;
 
@@ -687,7 +687,7 @@ fn compare_tangents(seed: u64, trials: usize, lengths: &[f64]) -> (usize, u64) /
 /// The tangents kernel on `block`; whether it took it.
 #[cfg(target_arch = "x86_64")]
 fn tangents_kernel(block: &mut ContactBlock<Fx>) -> bool {
-    super::avx512::tangents(block)
+    super::roots_kernel::tangents(block)
 }
 
 #[cfg(not(target_arch = "x86_64"))]
@@ -697,44 +697,50 @@ fn tangents_kernel(_: &mut ContactBlock<Fx>) -> bool {
 
 #[test]
 fn tangents_of_unit_normals_match_the_lanes() {
-    let (runs, saturations) = compare_tangents(7, 2000, &[1.0]);
-    assert_eq!(saturations, 0);
-    if kernels_present() {
-        assert_eq!(runs, 2000);
-    }
+    each_backend(|| {
+        let (runs, saturations) = compare_tangents(7, 2000, &[1.0]);
+        assert_eq!(saturations, 0);
+        if kernels_present() {
+            assert_eq!(runs, 2000);
+        }
+    });
 }
 
 #[test]
 fn tangents_near_the_kernel_bounds_match_the_lanes() {
-    // |o| ≥ 0.577 |n|: lengths of n about the shortest |o| the kernel takes (2⁻¹³) and
-    // about the bound of o and n (2¹⁴), on either side, and zero.
-    let shortest = 2f64.powi(-13);
-    let lengths = [
-        0.0,
-        shortest,
-        shortest * 1.5,
-        shortest * 1.8,
-        shortest * 2.0,
-        1.0,
-        16_000.0,
-        16_400.0,
-        20_000.0,
-    ];
-    let (runs, _) = compare_tangents(8, 2000, &lengths);
-    if kernels_present() {
-        assert!(runs > 0 && runs < 2000, "the kernel ran {runs} times");
-    }
+    each_backend(|| {
+        // |o| ≥ 0.577 |n|: lengths of n about the shortest |o| the kernel takes (2⁻¹³) and
+        // about the bound of o and n (2¹⁴), on either side, and zero.
+        let shortest = 2f64.powi(-13);
+        let lengths = [
+            0.0,
+            shortest,
+            shortest * 1.5,
+            shortest * 1.8,
+            shortest * 2.0,
+            1.0,
+            16_000.0,
+            16_400.0,
+            20_000.0,
+        ];
+        let (runs, _) = compare_tangents(8, 2000, &lengths);
+        if kernels_present() {
+            assert!(runs > 0 && runs < 2000, "the kernel ran {runs} times");
+        }
+    });
 }
 
 #[test]
 fn tangents_that_saturate_match_the_lanes() {
-    // |o|² leaves the range (2³¹ m²) beyond |o| ≈ 46 341 m; past the kernel's bound.
-    let (runs, saturations) = compare_tangents(9, 400, &[1.0, 50_000.0, 1.0e6, 2.0e9]);
-    assert!(saturations > 0);
-    if kernels_present() {
-        // Only blocks whose normals are all unit vectors.
-        assert!(runs > 0 && runs < 400, "the kernel ran {runs} times");
-    }
+    each_backend(|| {
+        // |o|² leaves the range (2³¹ m²) beyond |o| ≈ 46 341 m; past the kernel's bound.
+        let (runs, saturations) = compare_tangents(9, 400, &[1.0, 50_000.0, 1.0e6, 2.0e9]);
+        assert!(saturations > 0);
+        if kernels_present() {
+            // Only blocks whose normals are all unit vectors.
+            assert!(runs > 0 && runs < 400, "the kernel ran {runs} times");
+        }
+    });
 }
 
 /// Built-in scenes whose contacts the kernels take: each gives the same checksum after

@@ -22,13 +22,19 @@
 //! A lane that fails a check, or whose |ε| is past 2⁻¹⁰ (where [`Quat::integrate`] takes
 //! [`Quat::normalize`] instead), is not written and is left to the caller.
 
-use core::any::Any;
-
+use crate::math::over_real::{OverReal, Scalar};
 use crate::math::quat::{near_unit_excess, square_prescale, square_unscale};
 use crate::math::wide::{Wide, backend, kernel_entry};
 use crate::math::{Fx, Quat, Real};
-use crate::rigid::solver::body::SolverBody;
+use crate::rigid::solver::body::{SolverBodiesOf, SolverBody};
 use crate::rigid::solver::lanes::LANES;
+
+/// The family of orientation lists, `[Quat<R>]`, for [`Real::as_fixed`].
+struct QuatsOf;
+
+impl OverReal for QuatsOf {
+    type Of<R: Real> = [Quat<R>];
+}
 
 /// Integrates over `h` seconds the orientations of the bodies `bodies` (at most
 /// [`LANES`]), body l's orientation being `orientations[slots[l]]`, with the kernel when
@@ -44,15 +50,12 @@ pub(super) fn integrate_orientations<R: Real>(
     let Some(backend) = backend() else {
         return 0;
     };
-    let Some(&h) = (&h as &dyn Any).downcast_ref::<Fx>() else {
+    let (Some(&h), Some(bodies), Some(orientations)) = (
+        R::as_fixed::<Scalar>(&h),
+        R::as_fixed::<SolverBodiesOf>(bodies),
+        R::as_fixed_mut::<QuatsOf>(orientations),
+    ) else {
         return 0;
-    };
-    // SAFETY: `R` is `Fx` (the downcast succeeded), so the slices' types are unchanged.
-    let (bodies, orientations) = unsafe {
-        (
-            &*(core::ptr::from_ref(bodies) as *const [SolverBody<Fx>]),
-            &mut *(core::ptr::from_mut(orientations) as *mut [Quat<Fx>]),
-        )
     };
     integrate_on(backend, bodies, slots, orientations, h)
 }

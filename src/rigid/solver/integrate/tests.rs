@@ -1,11 +1,11 @@
 //! The orientation kernel against [`Quat::integrate`]: with each backend the processor has,
 //! whichever lanes it takes, the bits are those of the scalar update, body by body.
 
+use crate::math::cpu::kernels_present;
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, Pcg32, Quat, Real, Vec3};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::LANES;
-use crate::rigid::solver::wide_kernels_present;
 
 /// A value in [−scale, scale).
 fn value(rng: &mut Pcg32, scale: f64) -> Fx // ok-det: test input
@@ -122,7 +122,7 @@ fn rotations_near_unit_length_match_quat_integrate() {
     // Up to 5 rad/s in each axis: turns of up to 0.03 rad per substep, well inside the
     // near-unit path.
     let taken = compare_backends(1, 400, 5.0, 1.0e-6);
-    if wide_kernels_present() {
+    if kernels_present() {
         // About 1,440 spinning bodies, all within the kernel's reach.
         assert!(taken > 1400, "the kernel took {taken} lanes");
     }
@@ -133,7 +133,7 @@ fn rotations_off_unit_length_match_quat_integrate() {
     // Spins up to 20 rad/s and components off by up to 10⁻³: some past the near-unit test,
     // which the kernel leaves.
     let taken = compare_backends(2, 400, 20.0, 1.0e-3);
-    if wide_kernels_present() {
+    if kernels_present() {
         assert!(taken > 0, "the kernel took no lane");
     }
 }

@@ -4,10 +4,10 @@
 //! inputs within its bound. Other formats (I48F16, f64) go one by one, with the same bits.
 
 use super::to_world;
+use crate::math::cpu::{each_backend, kernels_present};
 use crate::math::saturation::count_saturations;
 use crate::math::{Fx, FxI48F16, Mat3, Pcg32, Quat, Vec3};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
-use crate::rigid::solver::kernels_present;
 use crate::rigid::transform::Transform;
 
 /// The kernel's bound on raw words: operands lie in [−2⁴⁶, 2⁴⁶).
@@ -60,7 +60,7 @@ fn kernel_takes(xf: &Transform<Fx>, local: &[Vec3<Fx>; MAX_MANIFOLD_POINTS]) -> 
     #[cfg(target_arch = "x86_64")]
     {
         let mut world = [Vec3::ZERO; MAX_MANIFOLD_POINTS];
-        let taken = super::avx512::to_world(xf, local, &mut world);
+        let taken = super::kernel::to_world(xf, local, &mut world);
         if taken {
             assert_eq!(world, local.map(|p| xf.point(p)), "{xf:?} {local:?}");
         }
@@ -88,84 +88,90 @@ fn within_bound(xf: &Transform<Fx>, local: &[Vec3<Fx>; MAX_MANIFOLD_POINTS]) -> 
 
 #[test]
 fn rotations_and_points_of_every_size_match_the_scalar_form() {
-    let mut rng = Pcg32::new(0x000f_0ce5, 7);
-    let mut taken = 0;
-    for trial in 0..40_000 {
-        let bits = [20, 34, 40, 45, 46][trial % 5];
-        let xf = Transform {
-            rotation: rotation(&mut rng),
-            translation: vector(&mut rng, bits),
-        };
-        let local = core::array::from_fn(|_| vector(&mut rng, bits));
-        let count = trial % (MAX_MANIFOLD_POINTS + 1);
-        let kernel = check(&xf, &local, count);
-        assert_eq!(kernel, kernels_present() && within_bound(&xf, &local));
-        taken += usize::from(kernel);
-    }
-    if kernels_present() {
-        assert!(taken > 30_000, "{taken}");
-    }
+    each_backend(|| {
+        let mut rng = Pcg32::new(0x000f_0ce5, 7);
+        let mut taken = 0;
+        for trial in 0..40_000 {
+            let bits = [20, 34, 40, 45, 46][trial % 5];
+            let xf = Transform {
+                rotation: rotation(&mut rng),
+                translation: vector(&mut rng, bits),
+            };
+            let local = core::array::from_fn(|_| vector(&mut rng, bits));
+            let count = trial % (MAX_MANIFOLD_POINTS + 1);
+            let kernel = check(&xf, &local, count);
+            assert_eq!(kernel, kernels_present() && within_bound(&xf, &local));
+            taken += usize::from(kernel);
+        }
+        if kernels_present() {
+            assert!(taken > 30_000, "{taken}");
+        }
+    });
 }
 
 #[test]
 fn any_matrix_up_to_and_past_the_bound_matches_the_scalar_form() {
-    let mut rng = Pcg32::new(0xb0_07d, 3);
-    let (mut taken, mut declined, mut saturated) = (0, 0, 0);
-    for trial in 0..40_000 {
-        // 46 bits: every word within the bound, its edges included; 47 and 62: some past
-        // it (the kernel declines), some saturating in the scalar form.
-        let bits = [46, 46, 47, 62][trial % 4];
-        let xf = Transform {
-            rotation: Mat3::from_cols(
-                vector(&mut rng, bits),
-                vector(&mut rng, bits),
-                vector(&mut rng, bits),
-            ),
-            translation: vector(&mut rng, bits),
-        };
-        let local = core::array::from_fn(|_| vector(&mut rng, bits));
-        let (_, saturations) = count_saturations(|| local.map(|p| xf.point(p)));
-        let kernel = check(&xf, &local, MAX_MANIFOLD_POINTS);
-        assert_eq!(kernel, kernels_present() && within_bound(&xf, &local));
-        assert!(!kernel || saturations == 0);
-        taken += usize::from(kernel);
-        declined += usize::from(!kernel);
-        saturated += usize::from(saturations > 0);
-    }
-    if kernels_present() {
-        assert!(
-            taken > 10_000 && declined > 15_000 && saturated > 5_000,
-            "{taken} {declined} {saturated}"
-        );
-    }
+    each_backend(|| {
+        let mut rng = Pcg32::new(0xb0_07d, 3);
+        let (mut taken, mut declined, mut saturated) = (0, 0, 0);
+        for trial in 0..40_000 {
+            // 46 bits: every word within the bound, its edges included; 47 and 62: some past
+            // it (the kernel declines), some saturating in the scalar form.
+            let bits = [46, 46, 47, 62][trial % 4];
+            let xf = Transform {
+                rotation: Mat3::from_cols(
+                    vector(&mut rng, bits),
+                    vector(&mut rng, bits),
+                    vector(&mut rng, bits),
+                ),
+                translation: vector(&mut rng, bits),
+            };
+            let local = core::array::from_fn(|_| vector(&mut rng, bits));
+            let (_, saturations) = count_saturations(|| local.map(|p| xf.point(p)));
+            let kernel = check(&xf, &local, MAX_MANIFOLD_POINTS);
+            assert_eq!(kernel, kernels_present() && within_bound(&xf, &local));
+            assert!(!kernel || saturations == 0);
+            taken += usize::from(kernel);
+            declined += usize::from(!kernel);
+            saturated += usize::from(saturations > 0);
+        }
+        if kernels_present() {
+            assert!(
+                taken > 10_000 && declined > 15_000 && saturated > 5_000,
+                "{taken} {declined} {saturated}"
+            );
+        }
+    });
 }
 
 #[test]
 fn one_word_past_the_bound_is_left_to_the_scalar_form() {
-    let mut rng = Pcg32::new(0xed6e, 5);
-    for trial in 0..2_000 {
-        let mut xf = Transform {
-            rotation: rotation(&mut rng),
-            translation: vector(&mut rng, 40),
-        };
-        let mut local: [Vec3<Fx>; MAX_MANIFOLD_POINTS] =
-            core::array::from_fn(|_| vector(&mut rng, 40));
-        // One word (of 24) on the edge of the bound, inside it or just past it.
-        let edge = [BOUND - 1, -BOUND, BOUND, -BOUND - 1][trial % 4];
-        let slot = (trial / 4) % 24;
-        let value = Fx::from_bits(edge);
-        let mut vectors: Vec<&mut Vec3<Fx>> = xf.rotation.cols.iter_mut().collect();
-        vectors.push(&mut xf.translation);
-        vectors.extend(local.iter_mut());
-        let v = &mut vectors[slot / 3];
-        match slot % 3 {
-            0 => v.x = value,
-            1 => v.y = value,
-            _ => v.z = value,
+    each_backend(|| {
+        let mut rng = Pcg32::new(0xed6e, 5);
+        for trial in 0..2_000 {
+            let mut xf = Transform {
+                rotation: rotation(&mut rng),
+                translation: vector(&mut rng, 40),
+            };
+            let mut local: [Vec3<Fx>; MAX_MANIFOLD_POINTS] =
+                core::array::from_fn(|_| vector(&mut rng, 40));
+            // One word (of 24) on the edge of the bound, inside it or just past it.
+            let edge = [BOUND - 1, -BOUND, BOUND, -BOUND - 1][trial % 4];
+            let slot = (trial / 4) % 24;
+            let value = Fx::from_bits(edge);
+            let mut vectors: Vec<&mut Vec3<Fx>> = xf.rotation.cols.iter_mut().collect();
+            vectors.push(&mut xf.translation);
+            vectors.extend(local.iter_mut());
+            let v = &mut vectors[slot / 3];
+            match slot % 3 {
+                0 => v.x = value,
+                1 => v.y = value,
+                _ => v.z = value,
+            }
+            let kernel = check(&xf, &local, MAX_MANIFOLD_POINTS);
+            assert_eq!(kernel, kernels_present() && trial % 4 < 2, "trial {trial}");
         }
-        let kernel = check(&xf, &local, MAX_MANIFOLD_POINTS);
-        assert_eq!(kernel, kernels_present() && trial % 4 < 2, "trial {trial}");
-    }
+    });
 }
 
 /// `v`'s raw words shifted right by `shift` bits, as I48F16 words.

@@ -1,19 +1,21 @@
-//! The vector kernels (AVX2 and AVX-512, each the processor has) against the checked scalar
+//! The vector kernel, with every backend the processor has (AVX2, AVX-512), against the checked scalar
 //! operators, the portable guarded step and the general path, bit for bit: their lane
 //! products on any operands (rounding ties and negative values included), single blocks
 //! whose magnitudes sit anywhere from zero to the range limits (so that the bound check
-//! accepts some and refuses others), and whole steps. A kernel the processor lacks is not
-//! checked; with neither, these tests check nothing.
+//! accepts some and refuses others), and whole steps. A backend the processor lacks is
+//! not checked; with neither, these tests check nothing.
 
 use core::cell::Cell;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
-use super::super::x86::{Constants, Kernel, step_with};
+use super::super::kernel::products::{mul_fraction_on, mul_mass_biased_on};
+use super::super::kernel::{Constants, step_block_on, step_with};
 use super::super::{Block, step_portable};
 use super::{Case, Slot, build};
 use crate::math::saturation::count_saturations;
+use crate::math::wide::{Backend, backends};
 use crate::math::{Fraction, Fx, Vec3};
 use crate::particles::forces::{ForceField, LinearField};
 use crate::particles::storage::{Attributes, Kinematics};
@@ -89,12 +91,16 @@ fn restriction() -> impl Strategy<Value = Option<u16>> {
     prop_oneof![3 => Just(None), 1 => (0u16..3).prop_map(Some)]
 }
 
-/// The kernels the processor has.
-fn kernels() -> Vec<Kernel> {
-    [Kernel::avx2(), Kernel::avx512()]
-        .into_iter()
-        .flatten()
-        .collect()
+/// The backends the processor has.
+fn kernels() -> Vec<Backend> {
+    backends()
+}
+
+/// Eight operands as the kernel's lanes take them.
+fn words(values: &[i64]) -> [i64; 8] {
+    let mut words = [0; 8];
+    words.copy_from_slice(values);
+    words
 }
 
 /// Eight operands: a vector of each kernel.
@@ -206,7 +212,7 @@ fn block<'a>(kinematics: &'a mut Kinematics<Fx>, attributes: &'a Attributes<Fx>)
 /// Steps one block of `case` with `kernel` and with the general path; the kernel must either
 /// refuse it and leave it untouched, or give the general path's bits when the general path
 /// saturates nowhere. Returns whether the kernel took the block.
-fn check_block(kernel: Kernel, case: &Case) -> Result<bool, TestCaseError> {
+fn check_block(kernel: Backend, case: &Case) -> Result<bool, TestCaseError> {
     let Some(Linear {
         kinematics,
         attributes,
@@ -218,7 +224,7 @@ fn check_block(kernel: Kernel, case: &Case) -> Result<bool, TestCaseError> {
     };
     let constants = Constants::new(&field, h);
     let mut fast = kinematics.clone();
-    let taken = kernel.step_block(&mut block(&mut fast, &attributes), &constants);
+    let taken = step_block_on(kernel, &mut block(&mut fast, &attributes), &constants);
     let mut general = kinematics.clone();
     let ((), saturations) = count_saturations(|| {
         block(&mut general, &attributes).step_checked(&field, h.get());
@@ -236,7 +242,7 @@ fn check_block(kernel: Kernel, case: &Case) -> Result<bool, TestCaseError> {
 
 /// Steps `case` with `kernel` and with the portable path; bits and saturation counts must
 /// agree.
-fn check_step(kernel: Kernel, case: &Case) -> Result<(), TestCaseError> {
+fn check_step(kernel: Backend, case: &Case) -> Result<(), TestCaseError> {
     let Some(Linear {
         kinematics,
         attributes,
@@ -269,7 +275,7 @@ proptest! {
         c in lanes(fraction_bits()),
     ) {
         for kernel in kernels() {
-            let lanes = kernel.mul_fraction(&a, &c);
+            let lanes = mul_fraction_on(kernel, words(&a), words(&c));
             for i in 0..a.len() {
                 let (product, saturations) =
                     count_saturations(|| Fx::from_bits(a[i]) * Fx::from_bits(c[i]));
@@ -287,7 +293,7 @@ proptest! {
         m in lanes(inv_mass_bits(62, false)),
     ) {
         for kernel in kernels() {
-            let lanes = kernel.mul_mass_biased(&a, &m);
+            let lanes = mul_mass_biased_on(kernel, words(&a), words(&m));
             for i in 0..a.len() {
                 let (product, saturations) =
                     count_saturations(|| Fx::from_bits(a[i]) * Fx::from_bits(m[i]));
