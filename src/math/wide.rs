@@ -234,19 +234,18 @@ pub(crate) trait Wide: Copy {
         ])
     }
 
-    /// The 24 words of eight consecutive vectors in memory order, eight to a vector:
-    /// component c of vector i (word 3i + c) in lane (3i + c) mod 8 of vector
-    /// ⌊(3i + c)/8⌋. No transpose: for kernels that treat every component alike.
-    fn load_interleaved(self, vectors: &[Vec3<Fx>; LANES]) -> [Self::V; 3];
+    /// Third `k` (0, 1 or 2; a larger k reads the last) of the 24 words of eight
+    /// consecutive vectors in memory order: words 8k to 8k + 7, where word 3i + c is
+    /// component c of vector i. No transpose: for kernels that treat every component alike.
+    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V;
 
-    /// Writes three vectors of words back to eight consecutive vectors, in the layout of
-    /// [`load_interleaved`](Self::load_interleaved).
-    fn store_interleaved(self, vectors: &mut [Vec3<Fx>; LANES], words: [Self::V; 3]);
+    /// Writes third `k` of eight consecutive vectors, in the layout of
+    /// [`load_third`](Self::load_third).
+    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: Self::V);
 
     /// A value per vector of a run of eight (lane i of `a` for vector i) over the lanes of
-    /// that vector's three components in the layout of
-    /// [`load_interleaved`](Self::load_interleaved): lane j of result k holds lane
-    /// ⌊(8k + j)/3⌋ of `a`.
+    /// that vector's three components in the layout of [`load_third`](Self::load_third):
+    /// lane j of result k holds lane ⌊(8k + j)/3⌋ of `a`.
     fn spread_thirds(self, a: Self::V) -> [Self::V; 3];
 
     /// The four columns of eight rows of four values, one vector per column.

@@ -350,39 +350,31 @@ impl Wide for Avx2 {
     }
 
     #[inline(always)]
-    fn load_interleaved(self, vectors: &[Vec3<Fx>; LANES]) -> [Self::V; 3] {
-        let words = vectors.as_ptr().cast::<i64>();
-        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`, six runs of four.
+    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V {
+        let words = vectors
+            .as_ptr()
+            .cast::<i64>()
+            .wrapping_add(LANES * k.min(2));
+        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`; words 8k to 8k + 7 with k ≤ 2.
         unsafe {
             [
-                [
-                    _mm256_loadu_si256(words.cast()),
-                    _mm256_loadu_si256(words.add(4).cast()),
-                ],
-                [
-                    _mm256_loadu_si256(words.add(8).cast()),
-                    _mm256_loadu_si256(words.add(12).cast()),
-                ],
-                [
-                    _mm256_loadu_si256(words.add(16).cast()),
-                    _mm256_loadu_si256(words.add(20).cast()),
-                ],
+                _mm256_loadu_si256(words.cast()),
+                _mm256_loadu_si256(words.add(4).cast()),
             ]
         }
     }
 
     #[inline(always)]
-    fn store_interleaved(self, vectors: &mut [Vec3<Fx>; LANES], words: [Self::V; 3]) {
-        let out = vectors.as_mut_ptr().cast::<i64>();
-        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`, six runs of four, and every bit
-        // pattern is an `Fx`.
+    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: Self::V) {
+        let out = vectors
+            .as_mut_ptr()
+            .cast::<i64>()
+            .wrapping_add(LANES * k.min(2));
+        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`; words 8k to 8k + 7 with k ≤ 2, and
+        // every bit pattern is an `Fx`.
         unsafe {
-            _mm256_storeu_si256(out.cast(), words[0][0]);
-            _mm256_storeu_si256(out.add(4).cast(), words[0][1]);
-            _mm256_storeu_si256(out.add(8).cast(), words[1][0]);
-            _mm256_storeu_si256(out.add(12).cast(), words[1][1]);
-            _mm256_storeu_si256(out.add(16).cast(), words[2][0]);
-            _mm256_storeu_si256(out.add(20).cast(), words[2][1]);
+            _mm256_storeu_si256(out.cast(), words[0]);
+            _mm256_storeu_si256(out.add(4).cast(), words[1]);
         }
     }
 

@@ -238,27 +238,18 @@ impl Wide for Avx512 {
     }
 
     #[inline(always)]
-    fn load_interleaved(self, vectors: &[Vec3<Fx>; LANES]) -> [__m512i; 3] {
+    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> __m512i {
         let words = vectors.as_ptr().cast::<i64>();
-        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`.
-        unsafe {
-            [
-                _mm512_loadu_si512(words.cast()),
-                _mm512_loadu_si512(words.add(LANES).cast()),
-                _mm512_loadu_si512(words.add(2 * LANES).cast()),
-            ]
-        }
+        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`; words 8k to 8k + 7 with k ≤ 2.
+        unsafe { _mm512_loadu_si512(words.add(LANES * k.min(2)).cast()) }
     }
 
     #[inline(always)]
-    fn store_interleaved(self, vectors: &mut [Vec3<Fx>; LANES], words: [__m512i; 3]) {
+    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: __m512i) {
         let out = vectors.as_mut_ptr().cast::<i64>();
-        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`, and every bit pattern is an `Fx`.
-        unsafe {
-            _mm512_storeu_si512(out.cast(), words[0]);
-            _mm512_storeu_si512(out.add(LANES).cast(), words[1]);
-            _mm512_storeu_si512(out.add(2 * LANES).cast(), words[2]);
-        }
+        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`; words 8k to 8k + 7 with k ≤ 2, and
+        // every bit pattern is an `Fx`.
+        unsafe { _mm512_storeu_si512(out.add(LANES * k.min(2)).cast(), words) }
     }
 
     /// One permute per result.
