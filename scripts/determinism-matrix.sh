@@ -15,7 +15,8 @@
 #                  its AVX-512 ones: what an x86-64 processor without AVX-512 runs)
 #   host-scalar    host-release's binary with FIXSTEP_SIMD=scalar (no kernels at all)
 #   i686           32-bit x86, run natively
-#   aarch64        64-bit ARM under qemu-user
+#   aarch64        64-bit ARM under qemu-user, with its NEON kernels
+#   aarch64-scalar aarch64's binary with FIXSTEP_SIMD=scalar (no kernels)
 #   s390x          64-bit big-endian IBM Z under qemu-user
 #   wasm32-wasip1  WebAssembly under Node's node:wasi (or the PyPI wasmtime)
 #   miri-s390x     s390x interpreted by nightly Miri, on replays/tiny.replay only
@@ -29,14 +30,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-ALL=host-debug,host-release,host-native,host-avx2,host-scalar,i686,aarch64,s390x,wasm32-wasip1,miri-s390x
+ALL=host-debug,host-release,host-native,host-avx2,host-scalar,i686,aarch64,aarch64-scalar,s390x,wasm32-wasip1,miri-s390x
 SELECTED=$ALL INSTALL=1 STRICT=0
 while [[ $# -gt 0 ]]; do
   case $1 in
     --targets) SELECTED=${2:?--targets needs a list}; shift 2 ;;
     --no-install) INSTALL=0; shift ;;
     --strict) STRICT=1; shift ;;
-    -h|--help) sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "error: unknown argument \`$1\` (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -126,6 +127,9 @@ qemu_target() { # qemu_target LOG TRIPLE GNU-PREFIX QEMU PKGS...
 }
 t_aarch64() { qemu_target aarch64 aarch64-unknown-linux-gnu aarch64-linux-gnu qemu-aarch64 \
                 gcc-aarch64-linux-gnu libc6-dev-arm64-cross qemu-user; }
+t_aarch64_scalar() { FIXSTEP_SIMD=scalar qemu_target aarch64-scalar aarch64-unknown-linux-gnu \
+                       aarch64-linux-gnu qemu-aarch64 gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
+                       qemu-user; }
 t_s390x()   { qemu_target s390x s390x-unknown-linux-gnu s390x-linux-gnu qemu-s390x \
                 gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user; }
 

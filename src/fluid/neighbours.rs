@@ -12,7 +12,7 @@
 //! that finds new candidates evaluates them in the same pass of the grid
 //! ([`NeighbourLists::build_keeping_candidates`]).
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 pub mod skin;
 #[cfg(test)]
@@ -85,7 +85,7 @@ impl<R: Real> NeighbourLists<R> {
         kernel: &Kernel<R>,
         skip_self: bool,
     ) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if kernel::build(self, queries, points, grid, kernel, skip_self) {
             return;
         }
@@ -105,7 +105,7 @@ impl<R: Real> NeighbourLists<R> {
         (boundary, boundary_grid): (&[Vec3<R>], &CellGrid<R>),
         kernel: &Kernel<R>,
     ) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if kernel::build_both(
             [&mut *fluid, &mut *walls],
             positions,

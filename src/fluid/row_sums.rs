@@ -32,15 +32,15 @@
 //! the substep ([`GradientBits`]), and [`density_rates`] and [`pressure_pushes`] take it
 //! from there.
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 #[cfg(test)]
 mod tests;
 
 use super::neighbours::NeighbourLists;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 use super::neighbours::NeighbourListsOf;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 use crate::math::over_real::{ScalarVec, Scalars, VectorVec, Vectors};
 use crate::math::{Real, Vec3};
 
@@ -61,7 +61,7 @@ pub(crate) fn density_rates<R: Real>(
     velocities: &[Vec3<R>],
     out: &mut Vec<R>,
 ) {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     if let GradientBits(Some(bits)) = gradients
         && let Some(backend) = crate::math::wide::backend()
         && let (Some(lists), Some(velocities), Some(out)) = (
@@ -73,7 +73,7 @@ pub(crate) fn density_rates<R: Real>(
     {
         return;
     }
-    #[cfg(not(target_arch = "x86_64"))]
+    #[cfg(not(vector_kernels))]
     let _ = gradients; // only the vector kernels read it
     density_rates_scalar(lists, velocities, out);
 }
@@ -104,7 +104,7 @@ pub(crate) fn pressure_pushes<R: Real>(
     stiffness: &[R],
     out: &mut Vec<Vec3<R>>,
 ) {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     if let GradientBits(Some(bits)) = gradients
         && let Some(backend) = crate::math::wide::backend()
         && let (Some(lists), Some(stiffness), Some(out)) = (
@@ -116,7 +116,7 @@ pub(crate) fn pressure_pushes<R: Real>(
     {
         return;
     }
-    #[cfg(not(target_arch = "x86_64"))]
+    #[cfg(not(vector_kernels))]
     let _ = gradients; // only the vector kernels read it
     pressure_pushes_scalar(lists, stiffness, out);
 }
@@ -147,7 +147,7 @@ pub(crate) fn smoothing_sums<R: Real>(
     inv_density: &[R],
     out: &mut Vec<Vec3<R>>,
 ) {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     if let Some(backend) = crate::math::wide::backend()
         && let (Some(lists), Some(velocities), Some(inv_density), Some(out)) = (
             R::as_fixed::<NeighbourListsOf>(lists),
@@ -189,7 +189,7 @@ pub(crate) fn gradient_sums<R: Real>(
     sums: &mut Vec<Vec3<R>>,
     squares: &mut Vec<R>,
 ) -> GradientBits {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     if let Some(backend) = crate::math::wide::backend()
         && let (Some(fixed_lists), Some(fixed_sums), Some(fixed_squares)) = (
             R::as_fixed::<NeighbourListsOf>(lists),

@@ -18,7 +18,7 @@ pub mod sqrt;
 pub mod state_hash;
 pub mod trig;
 pub mod vec3;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 pub(crate) mod wide;
 
 pub use fixed_scalar::{Fixed, FracBits, Fx, FxI32F32, FxI40F24, FxI48F16};

@@ -19,9 +19,9 @@
 
 use crate::math::saturation::record_saturation;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 pub(crate) mod lanes;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 pub(crate) mod lanes_below_one;
 
 /// Seeds for `1/√a`, `a ∈ [1, 4)`, in Q16 (value · 2^16).

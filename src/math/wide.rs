@@ -1,7 +1,8 @@
 //! The one lane abstraction of the step's vector kernels: eight `i64` lanes holding I32F32
-//! bits, behind the trait [`Wide`], with two backends for x86_64: AVX-512
-//! ([`avx512::Avx512`], AVX-512F, CD and DQ) and AVX2 ([`avx2::Avx2`]). A kernel is written once,
-//! generic over [`Wide`], and gives the same bits with either backend; one place,
+//! bits, behind the trait [`Wide`], with three backends: AVX-512 (`avx512::Avx512`,
+//! AVX-512F, CD and DQ) and AVX2 (`avx2::Avx2`) on x86-64, NEON (`neon::Neon`) on aarch64.
+//! A kernel is written once, generic over [`Wide`], and gives the same bits with every
+//! backend; one place,
 //! [`backend`], chooses the backend for this processor under the cap `FIXSTEP_SIMD`
 //! ([`cpu`](super::cpu)), and [`kernel_entry!`] compiles each kernel once per backend with
 //! its instructions enabled. A subsystem reaches the kernels at compile time through the
@@ -33,11 +34,19 @@
 //! the product needs two multiplies of 32-bit halves, both exact in 64 bits:
 //! ⌊(a·b + 2³¹)/2³²⌋ = a·b_h + ⌊(a·b_l + 2³¹)/2³²⌋ ([`Wide::times`]).
 
+#[cfg(target_arch = "x86_64")]
 pub(crate) mod avx2;
+#[cfg(target_arch = "x86_64")]
 pub(crate) mod avx512;
+#[cfg(target_arch = "aarch64")]
+pub(crate) mod neon;
 
+#[cfg(target_arch = "x86_64")]
 use avx2::Avx2;
+#[cfg(target_arch = "x86_64")]
 use avx512::Avx512;
+#[cfg(target_arch = "aarch64")]
+use neon::Neon;
 
 use crate::math::{Fx, Vec3};
 
@@ -76,22 +85,29 @@ fn magnitude_of(v: Fx) -> u64 {
 /// A backend of the kernels.
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Backend {
+    #[cfg(target_arch = "x86_64")]
     Avx512(Avx512),
+    #[cfg(target_arch = "x86_64")]
     Avx2(Avx2),
+    #[cfg(target_arch = "aarch64")]
+    Neon(Neon),
 }
 
-/// The backend of the kernels on this processor: AVX-512 (F, CD and DQ), else AVX2; none
-/// without either (the blocks then go lane by lane). Tests may choose one the processor
-/// has, or none, for the thread (`with_backend`).
+/// The backend of the kernels on this processor: on x86-64 AVX-512 (F, CD and DQ), else
+/// AVX2, else none (the blocks then go lane by lane); on aarch64 NEON. Tests may choose one
+/// the processor has, or none, for the thread (`with_backend`).
 #[inline]
 pub(crate) fn backend() -> Option<Backend> {
     #[cfg(test)]
     if let Some(chosen) = CHOSEN.get() {
         return chosen;
     }
-    Avx512::detect()
+    #[cfg(target_arch = "x86_64")]
+    return Avx512::detect()
         .map(Backend::Avx512)
-        .or_else(|| Avx2::detect().map(Backend::Avx2))
+        .or_else(|| Avx2::detect().map(Backend::Avx2));
+    #[cfg(target_arch = "aarch64")]
+    return Neon::detect().map(Backend::Neon);
 }
 
 #[cfg(test)]
@@ -103,13 +119,14 @@ std::thread_local! {
 /// The backends this processor runs.
 #[cfg(test)]
 pub(crate) fn backends() -> Vec<Backend> {
-    [
+    #[cfg(target_arch = "x86_64")]
+    let all = [
         Avx512::detect().map(Backend::Avx512),
         Avx2::detect().map(Backend::Avx2),
-    ]
-    .into_iter()
-    .flatten()
-    .collect()
+    ];
+    #[cfg(target_arch = "aarch64")]
+    let all = [Neon::detect().map(Backend::Neon)];
+    all.into_iter().flatten().collect()
 }
 
 /// Runs `f` with the kernels of `backend` (none: the lanes) on this thread.
@@ -129,30 +146,60 @@ macro_rules! kernel_entry {
     ($(#[$meta:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty = $kernel:path;) => {
         $(#[$meta])*
         $vis fn $name(backend: $crate::math::wide::Backend, $($arg: $ty),*) -> $ret {
-            use $crate::math::wide::{Backend, avx2::Avx2, avx512::Avx512};
+            #[cfg(target_arch = "x86_64")]
+            use $crate::math::wide::{avx2::Avx2, avx512::Avx512};
+            #[cfg(target_arch = "aarch64")]
+            use $crate::math::wide::neon::Neon;
             /// # Safety
             /// The processor must have AVX-512F, CD and DQ.
+            #[cfg(target_arch = "x86_64")]
             #[target_feature(enable = "avx512f,avx512cd,avx512dq")]
             unsafe fn on_avx512(wide: Avx512, $($arg: $ty),*) -> $ret {
                 $kernel(wide, $($arg),*)
             }
             /// # Safety
             /// The processor must have AVX2.
+            #[cfg(target_arch = "x86_64")]
             #[target_feature(enable = "avx2")]
             unsafe fn on_avx2(wide: Avx2, $($arg: $ty),*) -> $ret {
+                $kernel(wide, $($arg),*)
+            }
+            /// NEON is part of every aarch64 processor.
+            #[cfg(target_arch = "aarch64")]
+            fn on_neon(wide: Neon, $($arg: $ty),*) -> $ret {
                 $kernel(wide, $($arg),*)
             }
             match backend {
                 // SAFETY: a value of a backend exists only where the processor has its
                 // instructions.
-                Backend::Avx512(wide) => unsafe { on_avx512(wide, $($arg),*) },
+                #[cfg(target_arch = "x86_64")]
+                $crate::math::wide::Backend::Avx512(wide) => unsafe { on_avx512(wide, $($arg),*) },
                 // SAFETY: as above.
-                Backend::Avx2(wide) => unsafe { on_avx2(wide, $($arg),*) },
+                #[cfg(target_arch = "x86_64")]
+                $crate::math::wide::Backend::Avx2(wide) => unsafe { on_avx2(wide, $($arg),*) },
+                #[cfg(target_arch = "aarch64")]
+                $crate::math::wide::Backend::Neon(wide) => on_neon(wide, $($arg),*),
             }
         }
     };
 }
 pub(crate) use kernel_entry;
+
+/// `$body` with `$wide` bound to the backend value of `$backend`, whatever its kind: for
+/// callers whose kernels are methods of a trait implemented per backend.
+macro_rules! on_backend {
+    ($backend:expr, $wide:ident => $body:expr) => {
+        match $backend {
+            #[cfg(target_arch = "x86_64")]
+            $crate::math::wide::Backend::Avx512($wide) => $body,
+            #[cfg(target_arch = "x86_64")]
+            $crate::math::wide::Backend::Avx2($wide) => $body,
+            #[cfg(target_arch = "aarch64")]
+            $crate::math::wide::Backend::Neon($wide) => $body,
+        }
+    };
+}
+pub(crate) use on_backend;
 
 /// Eight `i64` lanes and the operations the kernels need, each modulo 2⁶⁴ lane by lane.
 /// A value of an implementing type proves that the processor runs its instructions.
@@ -205,16 +252,40 @@ pub(crate) trait Wide: Copy {
     /// In every lane of `active`, the word must lie in the allocation `base` points into.
     unsafe fn gather_words(self, base: *const i64, words: Self::V, active: u8) -> Self::V;
 
-    /// `values[indices[l]]` in lane l for the `count` first lanes, zero in the others.
+    /// `values[indices[l]]` in lane l for the `count` first lanes, zero in the others; by
+    /// default word by word into an array, then one load.
     ///
     /// # Safety
     /// `count` ≤ [`LANES`] and ≤ `indices.len()`; each of the first `count` indices must be
     /// below the number of words at `values`.
-    unsafe fn gather_values(self, values: *const i64, indices: &[u32], count: usize) -> Self::V;
+    #[inline(always)]
+    unsafe fn gather_values(self, values: *const i64, indices: &[u32], count: usize) -> Self::V {
+        let mut words = [0; LANES];
+        for (l, word) in words.iter_mut().enumerate().take(count) {
+            // SAFETY: the caller's conditions: index l exists and lies within `values`.
+            *word = unsafe { *values.add(*indices.get_unchecked(l) as usize) };
+        }
+        self.load_words(words)
+    }
 
     /// The x, y and z components of `vectors[indices[l]]` in lane l for the first (at most
-    /// eight) indices, zero in the lanes past them; `None` if an index is out of bounds.
-    fn gather_vectors(self, vectors: &[Vec3<Fx>], indices: &[u32]) -> Option<[Self::V; 3]>;
+    /// eight) indices, zero in the lanes past them; `None` if an index is out of bounds. By
+    /// default component by component into arrays, then one load each.
+    #[inline(always)]
+    fn gather_vectors(self, vectors: &[Vec3<Fx>], indices: &[u32]) -> Option<[Self::V; 3]> {
+        let mut words = [[0; LANES]; 3];
+        for (l, &i) in indices.iter().take(LANES).enumerate() {
+            let vector = vectors.get(i as usize)?;
+            words[0][l] = vector.x.to_bits();
+            words[1][l] = vector.y.to_bits();
+            words[2][l] = vector.z.to_bits();
+        }
+        Some([
+            self.load_words(words[0]),
+            self.load_words(words[1]),
+            self.load_words(words[2]),
+        ])
+    }
 
     /// The x, y and z components of the eight consecutive vectors `vectors[first..first +
     /// 8]` in lanes 0 to 7; `None` if they are out of bounds.
@@ -290,17 +361,36 @@ pub(crate) trait Wide: Copy {
     fn shift_right_unsigned_lanes(self, a: Self::V, n: Self::V) -> Self::V;
     /// The unsigned low 32 bits of a times those of b, in 64 bits.
     fn mul_unsigned_low_halves(self, a: Self::V, b: Self::V) -> Self::V;
-    /// The number of leading zero bits of each lane (64 for zero).
-    fn leading_zeros(self, a: Self::V) -> Self::V;
+    /// The number of leading zero bits of each lane (64 for zero); lane by lane by
+    /// default.
+    #[inline(always)]
+    fn leading_zeros(self, a: Self::V) -> Self::V {
+        let words = self.store_words(a);
+        let mut counts = [0; LANES];
+        for (count, word) in counts.iter_mut().zip(words) {
+            *count = i64::from(word.leading_zeros());
+        }
+        self.load_words(counts)
+    }
     /// `table[index mod 16]` per lane: the index's low four bits choose the word.
     fn lookup16(self, table: &[i64; 16], index: Self::V) -> Self::V;
 
     /// Writes the lanes of `keep`, in lane order, to the first words at `out`; the words
-    /// after them, up to eight in all, may be overwritten.
+    /// after them, up to eight in all, may be overwritten. By default the words one by
+    /// one, each written and the position advanced by whether it is kept (no branch).
     ///
     /// # Safety
     /// Eight words at `out` must be writable.
-    unsafe fn store_kept(self, out: *mut i64, keep: u8, a: Self::V);
+    #[inline(always)]
+    unsafe fn store_kept(self, out: *mut i64, keep: u8, a: Self::V) {
+        let words = self.store_words(a);
+        let mut at = 0;
+        for (l, word) in words.into_iter().enumerate() {
+            // SAFETY: `at` ≤ l < 8, within the eight writable words.
+            unsafe { *out.add(at) = word };
+            at += usize::from((keep >> l) & 1);
+        }
+    }
 
     /// The lanes where a > b, unsigned.
     #[inline(always)]

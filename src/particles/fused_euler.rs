@@ -72,7 +72,7 @@ pub(super) fn step<R: Real>(
     kinematics: &mut Kinematics<R>,
     attributes: &Attributes<R>,
 ) {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     if kernel::step(field, h, kinematics, attributes) {
         return;
     }
@@ -226,7 +226,7 @@ fn zip_with<R: Real>(a: Vec3<R>, b: Vec3<R>, mut f: impl FnMut(R, R) -> R) -> Ve
     Vec3::new(f(a.x, b.x), f(a.y, b.y), f(a.z, b.z))
 }
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 #[cfg(test)]
 mod tests;

@@ -16,10 +16,10 @@ pub struct Transform<R: Real = Fx> {
 }
 
 /// The family of [`Transform`]s, for [`Real::as_fixed`].
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 pub(crate) struct TransformOf;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 impl crate::math::over_real::OverReal for TransformOf {
     type Of<R: Real> = Transform<R>;
 }

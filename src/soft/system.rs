@@ -121,11 +121,11 @@ pub(crate) struct Scratch<R: Real> {
     pub distance: DistanceFactors<R>,
     /// Whether tethers 8k..8k+8 are independent, for each k (see
     /// [`Tethers::independent_blocks`]).
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     pub tether_blocks: Vec<bool>,
     /// Whether hinges 8k..8k+8 share no vertex, for each k (see
     /// [`Hinges::independent_blocks`]).
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     pub hinge_blocks: Vec<bool>,
     /// wₖcₖ/D of each hinge, m.
     pub hinge_share: Vec<[R; 4]>,

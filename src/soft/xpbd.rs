@@ -20,9 +20,9 @@ use super::rigid_bodies::RigidBodies;
 use super::system::{Model, SoftSystem};
 use crate::math::{Real, Vec3};
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
-#[cfg(all(test, target_arch = "x86_64"))]
+#[cfg(all(test, vector_kernels))]
 mod tests;
 
 impl<R: Real> SoftSystem<R> {
@@ -70,7 +70,7 @@ impl<R: Real> SoftSystem<R> {
         let inv_h2 = inv_h * inv_h;
         let w = &self.vertices.inv_mass;
         scratch.distance = self.distances.factors(w, inv_h2);
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         {
             scratch.tether_blocks = self.tethers.independent_blocks();
             scratch.hinge_blocks = self.hinges.independent_blocks();
@@ -112,7 +112,7 @@ impl<R: Real> SoftSystem<R> {
                 continue;
             }
             let v = &mut self.vertices.velocity;
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             if kernel::update_velocities(body.range(), x, &s.previous, w, v, inv_h) {
                 continue;
             }
@@ -133,7 +133,7 @@ impl<R: Real> SoftSystem<R> {
         let s = &self.scratch;
         self.tethers.solve(
             x,
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             &s.tether_blocks,
         );
         self.distances.solve(x, &s.distance);
@@ -141,7 +141,7 @@ impl<R: Real> SoftSystem<R> {
             x,
             &s.hinge_share,
             &s.hinge_relax,
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             &s.hinge_blocks,
         );
         self.tetrahedra.solve(x, w, s.inv_h2);
@@ -188,7 +188,7 @@ impl<R: Real> SoftSystem<R> {
                 previous: &mut *previous,
                 w,
             };
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             if kernel::predict(body.range(), &mut vertices, &motion) {
                 continue;
             }

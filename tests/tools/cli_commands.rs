@@ -297,7 +297,14 @@ fn every_simd_cap_gives_the_same_checksums() {
             is_checksum_line(checksum_line(&uncapped.stdout)),
             "{uncapped:?}"
         );
-        for cap in ["avx512", "avx2", "scalar"] {
+        // The caps of this machine's architecture (the tools' tests run on x86-64 and
+        // aarch64 hosts alike).
+        let caps: &[&str] = if cfg!(target_arch = "aarch64") {
+            &["avx512", "neon", "scalar"]
+        } else {
+            &["avx512", "avx2", "scalar"]
+        };
+        for &cap in caps {
             let capped = fixstep_with_env(&args, &[("FIXSTEP_SIMD", cap)]);
             assert_eq!(capped.code, 0, "{scene}, {cap}: {capped:?}");
             assert_eq!(
@@ -319,6 +326,24 @@ fn an_unknown_simd_cap_is_refused() {
     assert!(run.stdout.is_empty(), "{run:?}");
     assert!(
         run.stderr.contains("FIXSTEP_SIMD") && run.stderr.contains("`sse9`"),
+        "{}",
+        run.stderr
+    );
+}
+
+#[test]
+fn a_simd_cap_of_another_architecture_is_refused() {
+    let cap = if cfg!(target_arch = "aarch64") {
+        "avx2"
+    } else {
+        "neon"
+    };
+    let run = fixstep_with_env(&["run", "stack", "--ticks", "1"], &[("FIXSTEP_SIMD", cap)]);
+    assert_eq!(run.code, 2, "{run:?}");
+    assert!(run.stdout.is_empty(), "{run:?}");
+    assert!(
+        run.stderr.starts_with("error: ")
+            && run.stderr.contains(&format!("`{cap}` is not available")),
         "{}",
         run.stderr
     );

@@ -98,7 +98,7 @@ impl CandidateRows {
     }
 
     /// Appends the candidates `candidates` to the current row (the vector search's way).
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     #[inline(always)]
     pub(super) fn extend(&mut self, candidates: impl IntoIterator<Item = u32>) {
         self.index.extend(candidates);
@@ -265,7 +265,7 @@ impl<R: Real> NeighbourLists<R> {
         points: &[Vec3<R>],
         kernel: &Kernel<R>,
     ) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if super::kernel::evaluate(self, candidates, queries, points, kernel) {
             return;
         }
@@ -312,7 +312,7 @@ impl<R: Real> NeighbourLists<R> {
         kernel: &Kernel<R>,
         skip_self: bool,
     ) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         {
             let (points, grid) = searched;
             if super::kernel::select(candidates, queries, points, grid, reach, skip_self) {

@@ -82,7 +82,7 @@ fn assert_same(a: &NeighbourLists<Fx>, b: &NeighbourLists<Fx>) {
 }
 
 /// Whether the kernels took both the selection and the evaluation from `rows`.
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 fn kernel_takes_rows(
     rows: &CandidateRows,
     queries: &[Vec3<Fx>],
@@ -100,7 +100,7 @@ fn kernel_takes_rows(
     selects
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn kernel_takes_rows(
     _: &CandidateRows,
     _: &[Vec3<Fx>],
@@ -112,7 +112,7 @@ fn kernel_takes_rows(
     false
 }
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 fn kernel_takes(
     queries: &[Vec3<Fx>],
     points: &[Vec3<Fx>],
@@ -124,7 +124,7 @@ fn kernel_takes(
     super::kernel::build(&mut lists, queries, points, grid, kernel, skip_self)
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn kernel_takes(_: &[Vec3<Fx>], _: &[Vec3<Fx>], _: &CellGrid<Fx>, _: &Kernel<Fx>, _: bool) -> bool {
     false
 }

@@ -148,7 +148,7 @@ fn compare_once(seed: u64, n: usize, longest: u32, bits: [u32; 2], extremes: boo
 
 /// Whether the four kernels of the backend in force take the case (not falling back to the
 /// scalar form).
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: &[Fx]) -> bool {
     use super::kernel;
     let Some(backend) = crate::math::wide::backend() else {
@@ -168,7 +168,7 @@ fn kernel_takes(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffness: 
     takes.iter().all(|&t| t)
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn kernel_takes(_: &NeighbourLists<Fx>, _: &[Vec3<Fx>], _: &[Fx]) -> bool {
     false
 }
@@ -267,7 +267,7 @@ fn beyond_the_range(lists: &NeighbourLists<Fx>, velocities: &[Vec3<Fx>], stiffne
     assert_eq!(pushes[0][0], Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX));
 
     // The test can fail: with a stale bound the kernels take the row and wrap.
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     if kernels_present() {
         let mut wrapped = Vec::new();
         let backend = crate::math::wide::backend().expect("present");

@@ -287,17 +287,6 @@ impl Wide for Avx2 {
         halves!(a, b, |a, b| unsafe { _mm256_mul_epu32(a, b) })
     }
 
-    /// Lane by lane (AVX2 has no vector count).
-    #[inline(always)]
-    fn leading_zeros(self, a: Self::V) -> Self::V {
-        let words = self.store_words(a);
-        let mut counts = [0; LANES];
-        for (count, word) in counts.iter_mut().zip(words) {
-            *count = i64::from(word.leading_zeros());
-        }
-        self.load_words(counts)
-    }
-
     /// A gather from the table, four lanes at a time.
     #[inline(always)]
     fn lookup16(self, table: &[i64; 16], index: Self::V) -> Self::V {
@@ -306,47 +295,6 @@ impl Wide for Avx2 {
         halves!(index, index, |i, _j| unsafe {
             _mm256_i64gather_epi64::<8>(table.as_ptr(), i)
         })
-    }
-
-    /// The kept words one by one, each written and the position advanced by whether it is
-    /// kept (no branch).
-    #[inline(always)]
-    unsafe fn store_kept(self, out: *mut i64, keep: u8, a: Self::V) {
-        let words = self.store_words(a);
-        let mut at = 0;
-        for (l, word) in words.into_iter().enumerate() {
-            // SAFETY: `at` ≤ l < 8, within the eight writable words.
-            unsafe { *out.add(at) = word };
-            at += usize::from((keep >> l) & 1);
-        }
-    }
-
-    /// Word by word into an array, then one load.
-    #[inline(always)]
-    unsafe fn gather_values(self, values: *const i64, indices: &[u32], count: usize) -> Self::V {
-        let mut words = [0; LANES];
-        for (l, word) in words.iter_mut().enumerate().take(count) {
-            // SAFETY: the caller's conditions: index l exists and lies within `values`.
-            *word = unsafe { *values.add(*indices.get_unchecked(l) as usize) };
-        }
-        self.load_words(words)
-    }
-
-    /// Component by component into arrays, then one load each.
-    #[inline(always)]
-    fn gather_vectors(self, vectors: &[Vec3<Fx>], indices: &[u32]) -> Option<[Self::V; 3]> {
-        let mut words = [[0; LANES]; 3];
-        for (l, &i) in indices.iter().take(LANES).enumerate() {
-            let vector = vectors.get(i as usize)?;
-            words[0][l] = vector.x.to_bits();
-            words[1][l] = vector.y.to_bits();
-            words[2][l] = vector.z.to_bits();
-        }
-        Some([
-            self.load_words(words[0]),
-            self.load_words(words[1]),
-            self.load_words(words[2]),
-        ])
     }
 
     #[inline(always)]

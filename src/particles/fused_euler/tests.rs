@@ -5,7 +5,7 @@
 
 use proptest::prelude::*;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 
 use crate::math::saturation::count_saturations;

@@ -6,7 +6,7 @@
 mod axes;
 #[cfg(test)]
 mod face_tests;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 #[cfg(test)]
 mod tests;
@@ -63,9 +63,9 @@ pub(crate) fn separating_axes_batch<R: Real>(
     margin: R,
 ) -> [Option<Axes<R>>; LANES] {
     let mut out = [None; LANES];
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     let done = kernel::separating_axes_lanes(pairs, margin, &mut out);
-    #[cfg(not(target_arch = "x86_64"))]
+    #[cfg(not(vector_kernels))]
     let done = 0u8;
     for (l, pair) in pairs.iter().enumerate().take(LANES) {
         if done & (1 << l) == 0 {

@@ -28,10 +28,10 @@ pub(crate) struct SolverBody<R: Real> {
 }
 
 /// The family of solver body lists, `[SolverBody<R>]`, for [`Real::as_fixed`].
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 pub(crate) struct SolverBodiesOf;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 impl crate::math::over_real::OverReal for SolverBodiesOf {
     type Of<R: Real> = [SolverBody<R>];
 }

@@ -40,7 +40,7 @@ use super::body::{SolverBody, pair};
 use super::lanes::{LANES, Lanes, Lanes3};
 use super::softness::Softness;
 use crate::math::Real;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 use crate::math::over_real::OverReal;
 use crate::rigid::contact::Contact;
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
@@ -133,34 +133,34 @@ impl<R: Real> FrictionLanes<R> {
     };
 }
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 mod prepare;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod prepare_kernel;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod roots_kernel;
 #[cfg(test)]
 mod tests;
 
 pub(crate) use prepare::ContactArms;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 use prepare::ContactArmsOf;
 
 /// The family of [`ContactBlock`]s, for [`Real::as_fixed`].
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 struct ContactBlockOf;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 impl OverReal for ContactBlockOf {
     type Of<R: Real> = ContactBlock<R>;
 }
 
 /// The family of [`SolvePass`]es, for [`Real::as_fixed`].
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 struct SolvePassOf;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 impl OverReal for SolvePassOf {
     type Of<R: Real> = SolvePass<R>;
 }
@@ -175,7 +175,7 @@ pub(crate) struct ContactBlock<R: Real> {
     independent: bool,
     /// What the solve and warm-start kernels need to know of the block's coefficients,
     /// found once per step by [`soften`](Self::soften).
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     kernel: kernel::KernelFacts,
     /// Solver indices of the two bodies.
     a: [u32; LANES],
@@ -218,7 +218,7 @@ impl<R: Real> ContactBlock<R> {
         Self {
             len: 0,
             independent: false,
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             kernel: kernel::KernelFacts::NONE,
             a: [0; LANES],
             b: [0; LANES],
@@ -243,7 +243,7 @@ impl<R: Real> ContactBlock<R> {
     pub fn clear(&mut self, independent: bool) {
         self.len = 0;
         self.independent = independent;
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         {
             self.kernel = kernel::KernelFacts::NONE;
         }
@@ -257,7 +257,7 @@ impl<R: Real> ContactBlock<R> {
     /// An independent block of I32F32 constraints goes to a kernel ([`kernel`]) when the
     /// processor has AVX-512 or AVX2, which gives the same bits.
     pub fn warm_start(&mut self, bodies: &mut [SolverBody<R>]) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if self.independent && kernel::warm_start(self, bodies).is_some() {
             return;
         }
@@ -317,7 +317,7 @@ impl<R: Real> ContactBlock<R> {
     /// An independent block of I32F32 constraints goes to a kernel ([`kernel`]) when the
     /// processor has AVX-512 or AVX2, which gives the same bits.
     pub fn solve(&mut self, bodies: &mut [SolverBody<R>], pass: &SolvePass<R>) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if self.independent && kernel::solve(self, bodies, pass).is_some() {
             return;
         }

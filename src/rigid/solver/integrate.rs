@@ -1,6 +1,6 @@
 //! Integration of the moving bodies over one substep.
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 #[cfg(test)]
 mod tests;
@@ -82,9 +82,9 @@ impl<R: Real> Solver<R> {
                 // Nothing turns (bodies falling straight, say): no orientation to update.
                 continue;
             }
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             let done = kernel::integrate_orientations(chunk, slots, &mut bodies.orientation, h);
-            #[cfg(not(target_arch = "x86_64"))]
+            #[cfg(not(vector_kernels))]
             let done = 0u8;
             for (l, (sb, &slot)) in chunk.iter().zip(slots).enumerate() {
                 let i = slot as usize;

@@ -32,7 +32,7 @@ mod lanes;
 mod mixed_materials;
 mod prepare;
 mod softness;
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 pub(crate) mod wide_bodies;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};

@@ -17,9 +17,9 @@ use serde::{Deserialize, Serialize};
 use super::arithmetic::{Arithmetic, Checked, Guarded};
 use crate::math::{Guard, Real, Vec3};
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
-#[cfg(all(test, target_arch = "x86_64"))]
+#[cfg(all(test, vector_kernels))]
 mod tests;
 
 /// Bending rows.
@@ -102,9 +102,9 @@ impl<R: Real> Hinges<R> {
         positions: &mut [Vec3<R>],
         shares: &[[R; 4]],
         relax: &[R],
-        #[cfg(target_arch = "x86_64")] independent: &[bool],
+        #[cfg(vector_kernels)] independent: &[bool],
     ) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if kernel::solve(self, positions, shares, relax, independent) {
             return;
         }

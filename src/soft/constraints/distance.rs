@@ -26,7 +26,7 @@ use serde::{Deserialize, Serialize};
 use super::arithmetic::{Arithmetic, Checked, Guarded};
 use crate::math::{Guard, Real, Vec3};
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 #[cfg(test)]
 mod tests;
@@ -58,7 +58,7 @@ pub(crate) struct DistanceFactors<R: Real> {
     pub relax: Vec<R>,
     /// Whether rows 8k..8k+8 share no vertex, for each k (the blocks the AVX-512 kernel
     /// may solve side by side).
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     pub independent: Vec<bool>,
 }
 
@@ -90,7 +90,7 @@ impl<R: Real> Distances<R> {
             f.share_b.push(sb);
             f.relax.push(relax);
         }
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         {
             f.independent = kernel::independent_blocks(&self.a, &self.b);
         }
@@ -103,7 +103,7 @@ impl<R: Real> Distances<R> {
     /// AVX-512 or AVX2, blocks of rows that share no vertex are solved eight at a time by a
     /// kernel that gives the same bits ([`kernel`]).
     pub fn solve(&mut self, positions: &mut [Vec3<R>], f: &DistanceFactors<R>) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if kernel::solve(self, positions, f) {
             return;
         }

@@ -9,9 +9,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::math::{Real, Vec3};
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
-#[cfg(all(test, target_arch = "x86_64"))]
+#[cfg(all(test, vector_kernels))]
 mod tests;
 
 /// Tether rows.
@@ -29,12 +29,8 @@ impl<R: Real> Tethers<R> {
     /// One pass over every row. In I32F32 on a processor with AVX-512 or AVX2, the rows of
     /// the blocks marked in `independent` are solved eight at a time ([`kernel`]); the
     /// others run as before, with the same bits.
-    pub fn solve(
-        &self,
-        positions: &mut [Vec3<R>],
-        #[cfg(target_arch = "x86_64")] independent: &[bool],
-    ) {
-        #[cfg(target_arch = "x86_64")]
+    pub fn solve(&self, positions: &mut [Vec3<R>], #[cfg(vector_kernels)] independent: &[bool]) {
+        #[cfg(vector_kernels)]
         if kernel::solve(self, positions, independent) {
             return;
         }

@@ -287,12 +287,12 @@ fn compare_once(seed: u64, trials: usize, kinds: &[u32], margin: Fx) -> Tally {
 
 /// The lanes the kernel takes (none without it).
 fn kernel_lanes(pairs: &[BoxPair<'_, Fx>], margin: Fx) -> u8 {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     {
         let mut out = [None; LANES];
         super::kernel::separating_axes_lanes(pairs, margin, &mut out)
     }
-    #[cfg(not(target_arch = "x86_64"))]
+    #[cfg(not(vector_kernels))]
     {
         let _ = (pairs, margin);
         0
@@ -302,7 +302,7 @@ fn kernel_lanes(pairs: &[BoxPair<'_, Fx>], margin: Fx) -> u8 {
 /// [`compare_once`] with each backend the processor has (once, with none, off x86_64):
 /// the same outcomes each time; the tally of the backend that took the fewest lanes.
 fn compare(seed: u64, trials: usize, kinds: &[u32], margin: Fx) -> Tally {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     {
         use crate::math::wide::{backends, with_backend};
         let mut fewest: Option<Tally> = None;

@@ -5,12 +5,12 @@
 //! AVX-512 or AVX2 and every operand lies within its bound; otherwise, and for every
 //! other format, they run one by one.
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 mod kernel;
 #[cfg(test)]
 mod tests;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 use crate::math::over_real::OverReal;
 use crate::math::{Real, Vec3};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
@@ -27,7 +27,7 @@ pub(super) fn to_world<R: Real>(
     count: usize,
 ) -> [Vec3<R>; MAX_MANIFOLD_POINTS] {
     let mut world = [Vec3::ZERO; MAX_MANIFOLD_POINTS];
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     if kernel::to_world(xf, local, &mut world) {
         return world;
     }
@@ -39,10 +39,10 @@ pub(super) fn to_world<R: Real>(
 
 /// The family of a manifold's points, `[Vec3<R>; MAX_MANIFOLD_POINTS]`, for
 /// [`Real::as_fixed`].
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 struct ManifoldPointsOf;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 impl OverReal for ManifoldPointsOf {
     type Of<R: Real> = [Vec3<R>; MAX_MANIFOLD_POINTS];
 }

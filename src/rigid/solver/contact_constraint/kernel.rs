@@ -76,8 +76,11 @@
 //! few lanes where it applies; the twist clamp is a min and a max.
 
 use super::{ContactArms, ContactBlock, ContactBlockOf, SolvePass, SolvePassOf};
-use crate::math::wide::{Backend, backend};
+#[cfg(target_arch = "aarch64")]
+use crate::math::wide::neon::Neon;
+#[cfg(target_arch = "x86_64")]
 use crate::math::wide::{avx2::Avx2, avx512::Avx512};
+use crate::math::wide::{backend, on_backend};
 use crate::math::{Fx, Real};
 use crate::rigid::solver::body::{SolverBodiesOf, SolverBody};
 use crate::rigid::solver::lanes::{LANES, Lanes, Lanes3};
@@ -101,10 +104,7 @@ pub(super) fn solve<R: Real>(
     let block = R::as_fixed_mut::<ContactBlockOf>(block)?;
     let bodies = R::as_fixed_mut::<SolverBodiesOf>(bodies)?;
     let pass = R::as_fixed::<SolvePassOf>(pass)?;
-    match backend()? {
-        Backend::Avx512(wide) => solve_on(wide, block, bodies, pass),
-        Backend::Avx2(wide) => solve_on(wide, block, bodies, pass),
-    }
+    on_backend!(backend()?, wide => solve_on(wide, block, bodies, pass))
 }
 
 /// Solves an independent `block` with the backend `wide`: none (having written nothing)
@@ -148,10 +148,7 @@ pub(super) fn warm_start<R: Real>(
 ) -> Option<Kernel> {
     let block = R::as_fixed_mut::<ContactBlockOf>(block)?;
     let bodies = R::as_fixed_mut::<SolverBodiesOf>(bodies)?;
-    match backend()? {
-        Backend::Avx512(wide) => warm_start_on(wide, block, bodies),
-        Backend::Avx2(wide) => warm_start_on(wide, block, bodies),
-    }
+    on_backend!(backend()?, wide => warm_start_on(wide, block, bodies))
 }
 
 /// Warm starts an independent `block` with the backend `wide`, under the conditions of
@@ -288,8 +285,12 @@ macro_rules! kernels_for {
     };
 }
 
+#[cfg(target_arch = "x86_64")]
 kernels_for!(Avx512, "avx512f,avx512dq");
+#[cfg(target_arch = "x86_64")]
 kernels_for!(Avx2, "avx2");
+#[cfg(target_arch = "aarch64")]
+kernels_for!(Neon, "neon");
 
 /// What the kernels need to know of a block's coefficients, which do not change during a
 /// step: found once per step ([`KernelFacts::of`]).
@@ -335,8 +336,7 @@ impl KernelFacts {
             return Self::NONE;
         };
         match backend() {
-            Some(Backend::Avx512(wide)) => wide.facts(block),
-            Some(Backend::Avx2(wide)) => wide.facts(block),
+            Some(backend) => on_backend!(backend, wide => wide.facts(block)),
             None => Self::NONE,
         }
     }

@@ -9,7 +9,7 @@
 //! the same bits.
 
 use super::{ContactBlock, SolvePass};
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 use crate::math::over_real::OverReal;
 use crate::math::{Real, Vec3};
 use crate::rigid::contact::Contact;
@@ -33,10 +33,10 @@ pub(crate) struct ContactArms<R: Real> {
 }
 
 /// The family of [`ContactArms`], for [`Real::as_fixed`].
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 pub(crate) struct ContactArmsOf;
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 impl OverReal for ContactArmsOf {
     type Of<R: Real> = ContactArms<R>;
 }
@@ -161,9 +161,9 @@ impl<R: Real> ContactBlock<R> {
     pub fn prepare_products(&mut self, arms: &ContactArms<R>, bodies: &[SolverBody<R>]) {
         self.tangents();
         self.twist_arms(arms);
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         let done = super::prepare_kernel::prepare(self, arms, bodies);
-        #[cfg(not(target_arch = "x86_64"))]
+        #[cfg(not(vector_kernels))]
         let done = false;
         if !done {
             self.prepare_products_lanes(arms, bodies);
@@ -179,7 +179,7 @@ impl<R: Real> ContactBlock<R> {
     /// its bound; otherwise, and on other formats, one
     /// lane after another. Both give the same bits.
     pub(super) fn tangents(&mut self) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if super::roots_kernel::tangents(self) {
             return;
         }
@@ -201,7 +201,7 @@ impl<R: Real> ContactBlock<R> {
     /// otherwise, and on other formats, one point after another with [`Real::sqrt`]. Both
     /// give the same bits.
     fn twist_arms(&mut self, arms: &ContactArms<R>) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         if super::roots_kernel::twist_arms(self, arms) {
             return;
         }
@@ -287,7 +287,7 @@ impl<R: Real> ContactBlock<R> {
                 cp.soft_normal_mass[l] = cp.normal_mass[l] * scale;
             }
         }
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         {
             self.kernel = super::kernel::KernelFacts::of(self);
         }

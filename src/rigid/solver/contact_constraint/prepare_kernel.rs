@@ -26,7 +26,7 @@ use core::mem::{offset_of, size_of};
 
 use super::kernel::{Kernels, counts_of, points_in_use};
 use super::{ContactArms, ContactArmsOf, ContactBlock, ContactBlockOf};
-use crate::math::wide::{Backend, Wide, backend};
+use crate::math::wide::{Wide, backend, on_backend};
 use crate::math::{Fx, Mat3, Real, Vec3};
 use crate::rigid::solver::body::{SolverBodiesOf, SolverBody};
 use crate::rigid::solver::lanes::LANES;
@@ -61,8 +61,7 @@ pub(super) fn prepare<R: Real>(
         return false;
     };
     match backend() {
-        Some(Backend::Avx512(wide)) => wide.prepare_block(block, arms, bodies),
-        Some(Backend::Avx2(wide)) => wide.prepare_block(block, arms, bodies),
+        Some(backend) => on_backend!(backend, wide => wide.prepare_block(block, arms, bodies)),
         None => false,
     }
 }

@@ -3,13 +3,13 @@
 //! the fallback when a value leaves the kernels' bound), the bits and the saturation count
 //! are those of the lanes solved one after another.
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 use super::kernel::{Kernel, KernelFacts, Kernels, solve_on, warm_start_on};
 use super::{ContactArms, ContactBlock, SolvePass};
 use crate::math::cpu::{each_backend, kernels_present};
 use crate::math::saturation::count_saturations;
-#[cfg(target_arch = "x86_64")]
-use crate::math::wide::{Backend, backends, with_backend};
+#[cfg(vector_kernels)]
+use crate::math::wide::{Backend, backends, on_backend, with_backend};
 use crate::math::{Fx, Mat3, Pcg32, Real, Vec3};
 use crate::rigid::contact::{Contact, ContactKey, ContactPoint};
 use crate::rigid::manifold::MAX_MANIFOLD_POINTS;
@@ -210,28 +210,25 @@ fn state(bodies: &[SolverBody<Fx>], block: &ContactBlock<Fx>) -> Vec<i64> {
 }
 
 /// No kernel exists off x86_64.
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 enum Kernel {}
 
 /// No backend exists off x86_64.
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 #[derive(Clone, Copy, Debug)]
 enum Backend {}
 
 /// The backends this processor runs (none off x86_64).
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn backends() -> Vec<Backend> {
     Vec::new()
 }
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 impl Backend {
     /// The facts of `block` as this backend finds them.
     fn facts(self, block: &ContactBlock<Fx>) -> KernelFacts {
-        match self {
-            Self::Avx512(wide) => wide.facts(block),
-            Self::Avx2(wide) => wide.facts(block),
-        }
+        on_backend!(self, wide => wide.facts(block))
     }
 
     /// The solve pass of `block` with this backend's kernels, as [`ContactBlock::solve`]
@@ -243,10 +240,7 @@ impl Backend {
         pass: &SolvePass<Fx>,
     ) -> Option<Kernel> {
         let taken = if block.independent {
-            match self {
-                Self::Avx512(wide) => solve_on(wide, block, bodies, pass),
-                Self::Avx2(wide) => solve_on(wide, block, bodies, pass),
-            }
+            on_backend!(self, wide => solve_on(wide, block, bodies, pass))
         } else {
             None
         };
@@ -259,18 +253,14 @@ impl Backend {
     /// The warm start of `block` with this backend's kernels, likewise.
     fn warm_start(self, block: &mut ContactBlock<Fx>, bodies: &mut [SolverBody<Fx>]) {
         let taken = block.independent
-            && match self {
-                Self::Avx512(wide) => warm_start_on(wide, block, bodies),
-                Self::Avx2(wide) => warm_start_on(wide, block, bodies),
-            }
-            .is_some();
+            && on_backend!(self, wide => warm_start_on(wide, block, bodies)).is_some();
         if !taken {
             block.warm_start_lanes(bodies);
         }
     }
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 impl Backend {
     fn solve(
         self,
@@ -326,12 +316,12 @@ struct Runs {
 impl Runs {
     /// One more pass taken by `kernel`.
     fn count(&mut self, kernel: Kernel) {
-        #[cfg(target_arch = "x86_64")]
+        #[cfg(vector_kernels)]
         match kernel {
             Kernel::Narrow => self.narrow += 1,
             Kernel::Wide => self.wide += 1,
         }
-        #[cfg(not(target_arch = "x86_64"))]
+        #[cfg(not(vector_kernels))]
         match kernel {}
     }
 }
@@ -372,7 +362,7 @@ fn compare(seed: u64, trials: usize, scales: &Scales) -> Runs {
         let ((), slow_saturations) =
             count_saturations(|| run_passes(&mut slow_block, &mut slow_bodies, None));
         for (&backend, runs) in backends.iter().zip(&mut runs) {
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             assert_eq!(
                 backend.facts(&block),
                 block.kernel,
@@ -409,12 +399,12 @@ fn compare(seed: u64, trials: usize, scales: &Scales) -> Runs {
 }
 
 /// Whether the kernels share the products λ n/m and λ t/m between the sides of `block`.
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 fn shares_linear_products(block: &ContactBlock<Fx>) -> bool {
     block.kernel.linear_shared
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn shares_linear_products(_: &ContactBlock<Fx>) -> bool {
     false
 }
@@ -538,7 +528,7 @@ fn blocks_that_saturate_match_the_lanes() {
 /// without one.
 fn compare_preparation(seed: u64, trials: usize, scale: f64, reach: f64) -> usize // ok-det: test input
 {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     {
         let runs: Vec<usize> = backends()
             .into_iter()
@@ -601,7 +591,7 @@ fn compare_preparation_once(seed: u64, trials: usize, scale: f64, reach: f64) ->
 }
 
 /// The preparation kernel on `block`; whether it took it.
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 fn prepare_kernel(
     block: &mut ContactBlock<Fx>,
     arms: &ContactArms<Fx>,
@@ -610,7 +600,7 @@ fn prepare_kernel(
     super::prepare_kernel::prepare(block, arms, bodies)
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn prepare_kernel(_: &mut ContactBlock<Fx>, _: &ContactArms<Fx>, _: &[SolverBody<Fx>]) -> bool {
     false
 }
@@ -685,12 +675,12 @@ fn compare_tangents(seed: u64, trials: usize, lengths: &[f64]) -> (usize, u64) /
 }
 
 /// The tangents kernel on `block`; whether it took it.
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 fn tangents_kernel(block: &mut ContactBlock<Fx>) -> bool {
     super::roots_kernel::tangents(block)
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn tangents_kernel(_: &mut ContactBlock<Fx>) -> bool {
     false
 }
@@ -765,9 +755,9 @@ fn scenes_match_the_lanes_with_every_backend() {
                 }
                 world.checksum()
             };
-            #[cfg(target_arch = "x86_64")]
+            #[cfg(vector_kernels)]
             return with_backend(_backend, steps);
-            #[cfg(not(target_arch = "x86_64"))]
+            #[cfg(not(vector_kernels))]
             steps()
         };
         let lanes = run(None);

@@ -88,12 +88,12 @@ fn compare(seed: u64, trials: usize, spin: f64, drift: f64) -> usize // ok-det: 
 }
 
 /// The kernel on a chunk: the lanes it is done with.
-#[cfg(target_arch = "x86_64")]
+#[cfg(vector_kernels)]
 fn kernel(bodies: &[SolverBody<Fx>], slots: &[u32], orientations: &mut [Quat<Fx>], h: Fx) -> u8 {
     super::kernel::integrate_orientations(bodies, slots, orientations, h)
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(vector_kernels))]
 fn kernel(_: &[SolverBody<Fx>], _: &[u32], _: &mut [Quat<Fx>], _: Fx) -> u8 {
     0
 }
@@ -102,7 +102,7 @@ fn kernel(_: &[SolverBody<Fx>], _: &[u32], _: &mut [Quat<Fx>], _: Fx) -> u8 {
 /// fewest lanes a backend took.
 fn compare_backends(seed: u64, trials: usize, spin: f64, drift: f64) -> usize // ok-det: test input
 {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     {
         use crate::math::wide::{backends, with_backend};
         let mut fewest = usize::MAX;

@@ -2,31 +2,12 @@
 //! into one vector per component by a transpose, and written back the same way.
 
 use core::arch::x86_64::{__m512i, _mm512_mask_storeu_epi64, _mm512_maskz_loadu_epi64};
-use core::mem::{offset_of, size_of};
 
-use super::WideBodies;
+use super::{BODY_WORDS, DP, V, WideBodies};
+use crate::math::Fx;
 use crate::math::wide::{Wide, avx512::Avx512};
-use crate::math::{Fx, Vec3};
 use crate::rigid::solver::body::SolverBody;
 use crate::rigid::solver::lanes::LANES;
-
-pub(crate) const BODY_WORDS: i64 = (size_of::<SolverBody<Fx>>() / 8) as i64;
-pub(crate) const V: i64 = (offset_of!(SolverBody<Fx>, v) / 8) as i64;
-pub(crate) const W: i64 = (offset_of!(SolverBody<Fx>, w) / 8) as i64;
-const DP: i64 = (offset_of!(SolverBody<Fx>, dp) / 8) as i64;
-const DTHETA: i64 = (offset_of!(SolverBody<Fx>, dtheta) / 8) as i64;
-
-// The layout the loads rely on: `Fx` is one `i64`, `Vec3<Fx>` x, y, z in a row, the body
-// a whole number of words; v, ω, Δp and Δθ in a row from word 0, so that words 0–7 (v, ω,
-// Δp_x, Δp_y) and 8–15 (Δp_z, Δθ, ...) are two rows of eight.
-const _: () = {
-    assert!(size_of::<Fx>() == 8);
-    assert!(size_of::<Vec3<Fx>>() == 24);
-    assert!(size_of::<SolverBody<Fx>>().is_multiple_of(8));
-    assert!(V == 0 && W == 3 && DP == 6 && DTHETA == 9);
-    assert!(BODY_WORDS >= 16);
-    assert!(LANES == 8);
-};
 
 // SAFETY (every `unsafe` block below that calls an intrinsic): a value of `Avx512` exists
 // only on a processor with AVX-512F, CD and DQ (`Avx512::detect`).

@@ -57,7 +57,7 @@ fn check(xf: &Transform<Fx>, local: &[Vec3<Fx>; MAX_MANIFOLD_POINTS], count: usi
 
 /// Whether the kernel takes the input (and then gives the scalar form's four points).
 fn kernel_takes(xf: &Transform<Fx>, local: &[Vec3<Fx>; MAX_MANIFOLD_POINTS]) -> bool {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(vector_kernels)]
     {
         let mut world = [Vec3::ZERO; MAX_MANIFOLD_POINTS];
         let taken = super::kernel::to_world(xf, local, &mut world);
@@ -66,7 +66,7 @@ fn kernel_takes(xf: &Transform<Fx>, local: &[Vec3<Fx>; MAX_MANIFOLD_POINTS]) -> 
         }
         taken
     }
-    #[cfg(not(target_arch = "x86_64"))]
+    #[cfg(not(vector_kernels))]
     {
         let _ = (xf, local);
         false
