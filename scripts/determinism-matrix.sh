@@ -19,6 +19,7 @@
 #   aarch64-scalar aarch64's binary with FIXSTEP_SIMD=scalar (no kernels)
 #   s390x          64-bit big-endian IBM Z under qemu-user
 #   wasm32-wasip1  WebAssembly under Node's node:wasi (or the PyPI wasmtime)
+#   wasm32-simd128 the same built with +simd128, with its simd128 kernels
 #   miri-s390x     s390x interpreted by nightly Miri, on replays/tiny.replay only
 #
 # Installs what a target needs when it is missing (idempotent): rustup targets; Debian's
@@ -30,14 +31,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-ALL=host-debug,host-release,host-native,host-avx2,host-scalar,i686,aarch64,aarch64-scalar,s390x,wasm32-wasip1,miri-s390x
+ALL=host-debug,host-release,host-native,host-avx2,host-scalar,i686,aarch64,aarch64-scalar,s390x,wasm32-wasip1,wasm32-simd128,miri-s390x
 SELECTED=$ALL INSTALL=1 STRICT=0
 while [[ $# -gt 0 ]]; do
   case $1 in
     --targets) SELECTED=${2:?--targets needs a list}; shift 2 ;;
     --no-install) INSTALL=0; shift ;;
     --strict) STRICT=1; shift ;;
-    -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,30p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "error: unknown argument \`$1\` (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -133,8 +134,11 @@ t_aarch64_scalar() { FIXSTEP_SIMD=scalar qemu_target aarch64-scalar aarch64-unkn
 t_s390x()   { qemu_target s390x s390x-unknown-linux-gnu s390x-linux-gnu qemu-s390x \
                 gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user; }
 
-t_wasm32_wasip1() {
-  local t=wasm32-wasip1 wasm=target/wasm32-wasip1/release/$VERIFIER.wasm runner=()
+# wasm_target LOG DIR [RUSTFLAGS]: the verifier for wasm32-wasip1 into target DIR, built with
+# RUSTFLAGS added, run under Node's WASI (or wasmtime).
+wasm_target() {
+  local log=$1 dir=$2 flags=${3:-} t=wasm32-wasip1 runner=()
+  local wasm=$dir/wasm32-wasip1/release/$VERIFIER.wasm
   rust_target_ensure $t || { skip "rust target $t unavailable"; return; }
   if have node && node --no-warnings -e "new (require('node:wasi').WASI)({version:'preview1'})" 2>/dev/null; then
     runner=(node --no-warnings scripts/wasi-run.mjs "$wasm")
@@ -143,8 +147,11 @@ t_wasm32_wasip1() {
   else
     skip "neither Node >= 20 (node:wasi) nor the PyPI wasmtime module"; return
   fi
-  build wasm32-wasip1 --release --target $t && verify wasm32-wasip1 "${runner[@]}"
+  CARGO_TARGET_DIR=$dir RUSTFLAGS="${RUSTFLAGS:-} $flags" build "$log" --release --target $t \
+    && verify "$log" "${runner[@]}"
 }
+t_wasm32_wasip1()  { wasm_target wasm32-wasip1 target; }
+t_wasm32_simd128() { wasm_target wasm32-simd128 target/matrix-simd128 "-C target-feature=+simd128"; }
 
 t_miri_s390x() {
   if ! cargo +nightly miri --version >/dev/null 2>&1; then

@@ -6,6 +6,7 @@
 //! | unset, empty or `avx512` | every kernel the processor runs: on x86-64 AVX-512 (F, CD and DQ) where the processor has it, else AVX2, else none; on aarch64 NEON |
 //! | `avx2` | x86-64: AVX2 where the processor has it, else none |
 //! | `neon` | aarch64: NEON |
+//! | `simd128` | wasm32 built with `+simd128` (`RUSTFLAGS="-C target-feature=+simd128"`): `simd128` |
 //! | `scalar` | none: every stage runs its scalar code |
 //!
 //! Every kernel gives the bits of the scalar code it replaces, so the cap changes speed
@@ -29,6 +30,8 @@ pub enum SimdCap {
     Avx512,
     /// NEON kernels (aarch64).
     Neon,
+    /// `simd128` kernels (wasm32 built with `+simd128`).
+    Simd128,
 }
 
 impl SimdCap {
@@ -40,6 +43,7 @@ impl SimdCap {
             Self::Scalar | Self::Avx512 => true,
             Self::Avx2 => cfg!(target_arch = "x86_64"),
             Self::Neon => cfg!(target_arch = "aarch64"),
+            Self::Simd128 => cfg!(all(target_arch = "wasm32", target_feature = "simd128")),
         }
     }
 }
@@ -55,11 +59,12 @@ pub fn cap_from_env() -> Result<SimdCap, String> {
         "" | "avx512" => SimdCap::Avx512,
         "avx2" => SimdCap::Avx2,
         "neon" => SimdCap::Neon,
+        "simd128" => SimdCap::Simd128,
         "scalar" => SimdCap::Scalar,
         other => {
             return Err(format!(
                 "environment variable {SIMD_VARIABLE}: `{other}` is not one of avx512, avx2, \
-                 neon, scalar"
+                 neon, simd128, scalar"
             ));
         }
     };
@@ -72,6 +77,8 @@ pub fn cap_from_env() -> Result<SimdCap, String> {
                 "avx512, avx2 and scalar"
             } else if cfg!(target_arch = "aarch64") {
                 "neon and scalar"
+            } else if cfg!(all(target_arch = "wasm32", target_feature = "simd128")) {
+                "simd128 and scalar"
             } else {
                 "scalar only"
             }
@@ -106,6 +113,12 @@ pub(crate) fn avx2() -> bool {
 #[cfg(target_arch = "aarch64")]
 pub(crate) fn neon() -> bool {
     matches!(cap(), SimdCap::Neon | SimdCap::Avx512)
+}
+
+/// Whether the kernels may use `simd128`, which a module built with it has.
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+pub(crate) fn simd128() -> bool {
+    matches!(cap(), SimdCap::Simd128 | SimdCap::Avx512)
 }
 
 /// Runs `f` with each backend of the vector kernels this processor runs

@@ -1,6 +1,7 @@
 //! The one lane abstraction of the step's vector kernels: eight `i64` lanes holding I32F32
-//! bits, behind the trait [`Wide`], with three backends: AVX-512 (`avx512::Avx512`,
-//! AVX-512F, CD and DQ) and AVX2 (`avx2::Avx2`) on x86-64, NEON (`neon::Neon`) on aarch64.
+//! bits, behind the trait [`Wide`], with four backends: AVX-512 (`avx512::Avx512`,
+//! AVX-512F, CD and DQ) and AVX2 (`avx2::Avx2`) on x86-64, NEON (`neon::Neon`) on aarch64,
+//! `simd128` (`simd128::Simd128`) on wasm32 built with it.
 //! A kernel is written once, generic over [`Wide`], and gives the same bits with every
 //! backend; one place,
 //! [`backend`], chooses the backend for this processor under the cap `FIXSTEP_SIMD`
@@ -40,6 +41,8 @@ pub(crate) mod avx2;
 pub(crate) mod avx512;
 #[cfg(target_arch = "aarch64")]
 pub(crate) mod neon;
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+pub(crate) mod simd128;
 
 #[cfg(target_arch = "x86_64")]
 use avx2::Avx2;
@@ -47,6 +50,8 @@ use avx2::Avx2;
 use avx512::Avx512;
 #[cfg(target_arch = "aarch64")]
 use neon::Neon;
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+use simd128::Simd128;
 
 use crate::math::{Fx, Vec3};
 
@@ -91,6 +96,8 @@ pub(crate) enum Backend {
     Avx2(Avx2),
     #[cfg(target_arch = "aarch64")]
     Neon(Neon),
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    Simd128(Simd128),
 }
 
 /// The backend of the kernels on this processor: on x86-64 AVX-512 (F, CD and DQ), else
@@ -108,6 +115,8 @@ pub(crate) fn backend() -> Option<Backend> {
         .or_else(|| Avx2::detect().map(Backend::Avx2));
     #[cfg(target_arch = "aarch64")]
     return Neon::detect().map(Backend::Neon);
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    return Simd128::detect().map(Backend::Simd128);
 }
 
 #[cfg(test)]
@@ -126,6 +135,8 @@ pub(crate) fn backends() -> Vec<Backend> {
     ];
     #[cfg(target_arch = "aarch64")]
     let all = [Neon::detect().map(Backend::Neon)];
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let all = [Simd128::detect().map(Backend::Simd128)];
     all.into_iter().flatten().collect()
 }
 
@@ -150,6 +161,8 @@ macro_rules! kernel_entry {
             use $crate::math::wide::{avx2::Avx2, avx512::Avx512};
             #[cfg(target_arch = "aarch64")]
             use $crate::math::wide::neon::Neon;
+            #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+            use $crate::math::wide::simd128::Simd128;
             /// # Safety
             /// The processor must have AVX-512F, CD and DQ.
             #[cfg(target_arch = "x86_64")]
@@ -169,6 +182,11 @@ macro_rules! kernel_entry {
             fn on_neon(wide: Neon, $($arg: $ty),*) -> $ret {
                 $kernel(wide, $($arg),*)
             }
+            /// The module is built with `simd128`.
+            #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+            fn on_simd128(wide: Simd128, $($arg: $ty),*) -> $ret {
+                $kernel(wide, $($arg),*)
+            }
             match backend {
                 // SAFETY: a value of a backend exists only where the processor has its
                 // instructions.
@@ -179,6 +197,8 @@ macro_rules! kernel_entry {
                 $crate::math::wide::Backend::Avx2(wide) => unsafe { on_avx2(wide, $($arg),*) },
                 #[cfg(target_arch = "aarch64")]
                 $crate::math::wide::Backend::Neon(wide) => on_neon(wide, $($arg),*),
+                #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+                $crate::math::wide::Backend::Simd128(wide) => on_simd128(wide, $($arg),*),
             }
         }
     };
@@ -196,6 +216,8 @@ macro_rules! on_backend {
             $crate::math::wide::Backend::Avx2($wide) => $body,
             #[cfg(target_arch = "aarch64")]
             $crate::math::wide::Backend::Neon($wide) => $body,
+            #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+            $crate::math::wide::Backend::Simd128($wide) => $body,
         }
     };
 }
@@ -246,11 +268,22 @@ pub(crate) trait Wide: Copy {
     fn select(self, mask: u8, on: Self::V, off: Self::V) -> Self::V;
 
     /// The words of `base` at the word offsets `words` in the lanes of `active`, zero
-    /// elsewhere.
+    /// elsewhere; by default word by word into an array, then one load.
     ///
     /// # Safety
     /// In every lane of `active`, the word must lie in the allocation `base` points into.
-    unsafe fn gather_words(self, base: *const i64, words: Self::V, active: u8) -> Self::V;
+    #[inline(always)]
+    unsafe fn gather_words(self, base: *const i64, words: Self::V, active: u8) -> Self::V {
+        let offsets = self.store_words(words);
+        let mut out = [0; LANES];
+        for (l, (word, offset)) in out.iter_mut().zip(offsets).enumerate() {
+            if active & (1 << l) != 0 {
+                // SAFETY: the caller's promise for the lanes of `active`.
+                *word = unsafe { *base.offset(offset as isize) };
+            }
+        }
+        self.load_words(out)
+    }
 
     /// `values[indices[l]]` in lane l for the `count` first lanes, zero in the others; by
     /// default word by word into an array, then one load.
@@ -316,8 +349,22 @@ pub(crate) trait Wide: Copy {
 
     /// A value per vector of a run of eight (lane i of `a` for vector i) over the lanes of
     /// that vector's three components in the layout of [`load_third`](Self::load_third):
-    /// lane j of result k holds lane ⌊(8k + j)/3⌋ of `a`.
-    fn spread_thirds(self, a: Self::V) -> [Self::V; 3];
+    /// lane j of result k holds lane ⌊(8k + j)/3⌋ of `a`. By default through arrays.
+    #[inline(always)]
+    fn spread_thirds(self, a: Self::V) -> [Self::V; 3] {
+        let words = self.store_words(a);
+        let mut out = [[0; LANES]; 3];
+        for (k, lanes) in out.iter_mut().enumerate() {
+            for (j, lane) in lanes.iter_mut().enumerate() {
+                *lane = words[(LANES * k + j) / 3];
+            }
+        }
+        [
+            self.load_words(out[0]),
+            self.load_words(out[1]),
+            self.load_words(out[2]),
+        ]
+    }
 
     /// The four columns of eight rows of four values, one vector per column.
     #[inline(always)]
@@ -336,18 +383,35 @@ pub(crate) trait Wide: Copy {
         ]
     }
 
-    /// The `count` words at `words` in the first lanes, zero in the others.
+    /// The `count` words at `words` in the first lanes, zero in the others; by default word
+    /// by word into an array, then one load.
     ///
     /// # Safety
     /// `count` ≤ [`LANES`], and the `count` words must be readable.
-    unsafe fn load_prefix(self, words: *const i64, count: usize) -> Self::V;
+    #[inline(always)]
+    unsafe fn load_prefix(self, words: *const i64, count: usize) -> Self::V {
+        let mut out = [0; LANES];
+        for (l, word) in out.iter_mut().enumerate().take(count) {
+            // SAFETY: the caller's promise: the `count` words are readable.
+            *word = unsafe { *words.add(l) };
+        }
+        self.load_words(out)
+    }
 
     /// The `count` unsigned 32-bit numbers at `numbers`, widened, in the first lanes, zero
-    /// in the others.
+    /// in the others; by default one by one into an array, then one load.
     ///
     /// # Safety
     /// `count` ≤ [`LANES`], and the `count` numbers must be readable.
-    unsafe fn load_prefix_u32(self, numbers: *const u32, count: usize) -> Self::V;
+    #[inline(always)]
+    unsafe fn load_prefix_u32(self, numbers: *const u32, count: usize) -> Self::V {
+        let mut out = [0; LANES];
+        for (l, word) in out.iter_mut().enumerate().take(count) {
+            // SAFETY: the caller's promise: the `count` numbers are readable.
+            *word = i64::from(unsafe { *numbers.add(l) });
+        }
+        self.load_words(out)
+    }
 
     /// a·2ⁿ, the bits shifted out lost (n < 64).
     fn shift_left(self, a: Self::V, n: u32) -> Self::V;
@@ -372,8 +436,17 @@ pub(crate) trait Wide: Copy {
         }
         self.load_words(counts)
     }
-    /// `table[index mod 16]` per lane: the index's low four bits choose the word.
-    fn lookup16(self, table: &[i64; 16], index: Self::V) -> Self::V;
+    /// `table[index mod 16]` per lane: the index's low four bits choose the word; by
+    /// default lane by lane.
+    #[inline(always)]
+    fn lookup16(self, table: &[i64; 16], index: Self::V) -> Self::V {
+        let indices = self.store_words(index);
+        let mut out = [0; LANES];
+        for (word, index) in out.iter_mut().zip(indices) {
+            *word = table[(index & 15) as usize];
+        }
+        self.load_words(out)
+    }
 
     /// Writes the lanes of `keep`, in lane order, to the first words at `out`; the words
     /// after them, up to eight in all, may be overwritten. By default the words one by

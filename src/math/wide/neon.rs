@@ -245,20 +245,6 @@ impl Wide for Neon {
         }
     }
 
-    /// Word by word into an array, then one load.
-    #[inline(always)]
-    unsafe fn gather_words(self, base: *const i64, words: Self::V, active: u8) -> Self::V {
-        let offsets = self.store_words(words);
-        let mut out = [0; LANES];
-        for (l, (word, offset)) in out.iter_mut().zip(offsets).enumerate() {
-            if active & (1 << l) != 0 {
-                // SAFETY: the caller's promise for the lanes of `active`.
-                *word = unsafe { *base.offset(offset as isize) };
-            }
-        }
-        self.load_words(out)
-    }
-
     #[inline(always)]
     fn shift_left(self, a: Self::V, n: u32) -> Self::V {
         let count = i64::from(n);
@@ -317,17 +303,6 @@ impl Wide for Neon {
         })
     }
 
-    /// Lane by lane from the table.
-    #[inline(always)]
-    fn lookup16(self, table: &[i64; 16], index: Self::V) -> Self::V {
-        let indices = self.store_words(index);
-        let mut out = [0; LANES];
-        for (word, index) in out.iter_mut().zip(indices) {
-            *word = table[(index & 15) as usize];
-        }
-        self.load_words(out)
-    }
-
     #[inline(always)]
     fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V {
         let words = vectors
@@ -359,44 +334,5 @@ impl Wide for Neon {
             vst1q_s64(out.add(4), words[2]);
             vst1q_s64(out.add(6), words[3]);
         }
-    }
-
-    /// Through arrays.
-    #[inline(always)]
-    fn spread_thirds(self, a: Self::V) -> [Self::V; 3] {
-        let words = self.store_words(a);
-        let mut out = [[0; LANES]; 3];
-        for (k, lanes) in out.iter_mut().enumerate() {
-            for (j, lane) in lanes.iter_mut().enumerate() {
-                *lane = words[(LANES * k + j) / 3];
-            }
-        }
-        [
-            self.load_words(out[0]),
-            self.load_words(out[1]),
-            self.load_words(out[2]),
-        ]
-    }
-
-    /// Word by word into an array, then one load.
-    #[inline(always)]
-    unsafe fn load_prefix(self, words: *const i64, count: usize) -> Self::V {
-        let mut out = [0; LANES];
-        for (l, word) in out.iter_mut().enumerate().take(count) {
-            // SAFETY: the caller's promise: the `count` words are readable.
-            *word = unsafe { *words.add(l) };
-        }
-        self.load_words(out)
-    }
-
-    /// Number by number into an array, widened, then one load.
-    #[inline(always)]
-    unsafe fn load_prefix_u32(self, numbers: *const u32, count: usize) -> Self::V {
-        let mut out = [0; LANES];
-        for (l, word) in out.iter_mut().enumerate().take(count) {
-            // SAFETY: the caller's promise: the `count` numbers are readable.
-            *word = i64::from(unsafe { *numbers.add(l) });
-        }
-        self.load_words(out)
     }
 }

@@ -143,3 +143,6 @@ impl WideBodies for crate::math::wide::avx2::Avx2 {}
 
 #[cfg(target_arch = "aarch64")]
 impl WideBodies for crate::math::wide::neon::Neon {}
+
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+impl WideBodies for crate::math::wide::simd128::Simd128 {}

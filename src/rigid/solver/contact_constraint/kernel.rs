@@ -78,6 +78,8 @@
 use super::{ContactArms, ContactBlock, ContactBlockOf, SolvePass, SolvePassOf};
 #[cfg(target_arch = "aarch64")]
 use crate::math::wide::neon::Neon;
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+use crate::math::wide::simd128::Simd128;
 #[cfg(target_arch = "x86_64")]
 use crate::math::wide::{avx2::Avx2, avx512::Avx512};
 use crate::math::wide::{backend, on_backend};
@@ -291,6 +293,8 @@ kernels_for!(Avx512, "avx512f,avx512dq");
 kernels_for!(Avx2, "avx2");
 #[cfg(target_arch = "aarch64")]
 kernels_for!(Neon, "neon");
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+kernels_for!(Simd128, "simd128");
 
 /// What the kernels need to know of a block's coefficients, which do not change during a
 /// step: found once per step ([`KernelFacts::of`]).
