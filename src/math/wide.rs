@@ -149,6 +149,42 @@ pub(crate) fn with_backend<T>(backend: Option<Backend>, f: impl FnOnce() -> T) -
     result
 }
 
+/// `f` of each quarter of two values of four 128-bit registers (the NEON and `simd128`
+/// backends). A macro, not a closure: the kernels are large, and a closure there may not
+/// be inlined (nor, then, the intrinsics inside it).
+#[cfg(any(
+    target_arch = "aarch64",
+    all(target_arch = "wasm32", target_feature = "simd128")
+))]
+macro_rules! quarters {
+    ($t:ty; $a:expr, $b:expr, |$x:ident, $y:ident| $f:expr) => {{
+        let (a, b): ([$t; 4], [$t; 4]) = ($a, $b);
+        [
+            {
+                let ($x, $y) = (a[0], b[0]);
+                $f
+            },
+            {
+                let ($x, $y) = (a[1], b[1]);
+                $f
+            },
+            {
+                let ($x, $y) = (a[2], b[2]);
+                $f
+            },
+            {
+                let ($x, $y) = (a[3], b[3]);
+                $f
+            },
+        ]
+    }};
+}
+#[cfg(any(
+    target_arch = "aarch64",
+    all(target_arch = "wasm32", target_feature = "simd128")
+))]
+pub(crate) use quarters;
+
 /// Defines `fn $name(backend: Backend, args…) -> ret`, which runs the generic kernel
 /// `$kernel(wide, args…)` in a function compiled with the instructions of the chosen
 /// backend, one such function per backend, so that the kernel and the operations of

@@ -24,34 +24,8 @@ use core::arch::aarch64::{
     vreinterpretq_u64_s64, vshlq_s64, vshlq_u64, vshrq_n_s64, vst1q_s64, vsubq_s64, vtstq_u64,
 };
 
-use super::{LANES, Wide};
+use super::{LANES, Wide, quarters};
 use crate::math::{Fx, Vec3};
-
-/// `f` of each quarter of two values. A macro, not a closure: the kernels are large, and a
-/// closure there may not be inlined (nor, then, the intrinsics inside it).
-macro_rules! quarters {
-    ($a:expr, $b:expr, |$x:ident, $y:ident| $f:expr) => {{
-        let (a, b): ([int64x2_t; 4], [int64x2_t; 4]) = ($a, $b);
-        [
-            {
-                let ($x, $y) = (a[0], b[0]);
-                $f
-            },
-            {
-                let ($x, $y) = (a[1], b[1]);
-                $f
-            },
-            {
-                let ($x, $y) = (a[2], b[2]);
-                $f
-            },
-            {
-                let ($x, $y) = (a[3], b[3]);
-                $f
-            },
-        ]
-    }};
-}
 
 /// The NEON backend. A value exists only on aarch64, where every processor has NEON, and
 /// only when `FIXSTEP_SIMD` allows it.
@@ -141,43 +115,43 @@ impl Wide for Neon {
 
     #[inline(always)]
     fn add(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe { vaddq_s64(a, b) })
+        quarters!(int64x2_t; a, b, |a, b| unsafe { vaddq_s64(a, b) })
     }
 
     #[inline(always)]
     fn sub(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe { vsubq_s64(a, b) })
+        quarters!(int64x2_t; a, b, |a, b| unsafe { vsubq_s64(a, b) })
     }
 
     #[inline(always)]
     fn and(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe { vandq_s64(a, b) })
+        quarters!(int64x2_t; a, b, |a, b| unsafe { vandq_s64(a, b) })
     }
 
     #[inline(always)]
     fn or(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe { vorrq_s64(a, b) })
+        quarters!(int64x2_t; a, b, |a, b| unsafe { vorrq_s64(a, b) })
     }
 
     #[inline(always)]
     fn xor(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe { veorq_s64(a, b) })
+        quarters!(int64x2_t; a, b, |a, b| unsafe { veorq_s64(a, b) })
     }
 
     /// An arithmetic shift by 63.
     #[inline(always)]
     fn sign(self, a: Self::V) -> Self::V {
-        quarters!(a, a, |a, _b| unsafe { vshrq_n_s64::<63>(a) })
+        quarters!(int64x2_t; a, a, |a, _b| unsafe { vshrq_n_s64::<63>(a) })
     }
 
     #[inline(always)]
     fn max(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe { vbslq_s64(vcgtq_s64(a, b), a, b) })
+        quarters!(int64x2_t; a, b, |a, b| unsafe { vbslq_s64(vcgtq_s64(a, b), a, b) })
     }
 
     #[inline(always)]
     fn min(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe { vbslq_s64(vcgtq_s64(a, b), b, a) })
+        quarters!(int64x2_t; a, b, |a, b| unsafe { vbslq_s64(vcgtq_s64(a, b), b, a) })
     }
 
     /// −a where a is negative (wrapping: i64::MIN stays itself).
@@ -189,7 +163,7 @@ impl Wide for Neon {
 
     #[inline(always)]
     fn mul_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe {
+        quarters!(int64x2_t; a, b, |a, b| unsafe {
             vmull_s32(vmovn_s64(a), vmovn_s64(b))
         })
     }
@@ -204,31 +178,31 @@ impl Wide for Neon {
 
     #[inline(always)]
     fn shift_down_32(self, a: Self::V) -> Self::V {
-        quarters!(a, a, |a, _b| unsafe { vshrq_n_s64::<32>(a) })
+        quarters!(int64x2_t; a, a, |a, _b| unsafe { vshrq_n_s64::<32>(a) })
     }
 
     #[inline(always)]
     fn greater(self, a: Self::V, b: Self::V) -> u8 {
-        self.mask_of(quarters!(a, b, |a, b| unsafe { vcgtq_s64(a, b) }))
+        self.mask_of(quarters!(int64x2_t; a, b, |a, b| unsafe { vcgtq_s64(a, b) }))
     }
 
     #[inline(always)]
     fn at_least_unsigned(self, a: Self::V, b: Self::V) -> u8 {
-        self.mask_of(quarters!(a, b, |a, b| unsafe {
+        self.mask_of(quarters!(int64x2_t; a, b, |a, b| unsafe {
             vcgeq_u64(vreinterpretq_u64_s64(a), vreinterpretq_u64_s64(b))
         }))
     }
 
     #[inline(always)]
     fn greater_unsigned(self, a: Self::V, b: Self::V) -> u8 {
-        self.mask_of(quarters!(a, b, |a, b| unsafe {
+        self.mask_of(quarters!(int64x2_t; a, b, |a, b| unsafe {
             vcgtq_u64(vreinterpretq_u64_s64(a), vreinterpretq_u64_s64(b))
         }))
     }
 
     #[inline(always)]
     fn equal(self, a: Self::V, b: Self::V) -> u8 {
-        self.mask_of(quarters!(a, b, |a, b| unsafe { vceqq_s64(a, b) }))
+        self.mask_of(quarters!(int64x2_t; a, b, |a, b| unsafe { vceqq_s64(a, b) }))
     }
 
     #[inline(always)]
@@ -248,13 +222,13 @@ impl Wide for Neon {
     #[inline(always)]
     fn shift_left(self, a: Self::V, n: u32) -> Self::V {
         let count = i64::from(n);
-        quarters!(a, a, |a, _b| unsafe { vshlq_s64(a, vdupq_n_s64(count)) })
+        quarters!(int64x2_t; a, a, |a, _b| unsafe { vshlq_s64(a, vdupq_n_s64(count)) })
     }
 
     #[inline(always)]
     fn shift_right_unsigned(self, a: Self::V, n: u32) -> Self::V {
         let count = -i64::from(n);
-        quarters!(a, a, |a, _b| unsafe {
+        quarters!(int64x2_t; a, a, |a, _b| unsafe {
             vreinterpretq_s64_u64(vshlq_u64(vreinterpretq_u64_s64(a), vdupq_n_s64(count)))
         })
     }
@@ -262,7 +236,7 @@ impl Wide for Neon {
     #[inline(always)]
     fn shift_right(self, a: Self::V, n: u32) -> Self::V {
         let count = -i64::from(n);
-        quarters!(a, a, |a, _b| unsafe { vshlq_s64(a, vdupq_n_s64(count)) })
+        quarters!(int64x2_t; a, a, |a, _b| unsafe { vshlq_s64(a, vdupq_n_s64(count)) })
     }
 
     /// `vshl` reads the low byte of each count as signed; counts from 64 up are first
@@ -270,21 +244,21 @@ impl Wide for Neon {
     #[inline(always)]
     fn shift_left_lanes(self, a: Self::V, n: Self::V) -> Self::V {
         let n = self.min_unsigned(n, self.splat(64));
-        quarters!(a, n, |a, n| unsafe { vshlq_s64(a, n) })
+        quarters!(int64x2_t; a, n, |a, n| unsafe { vshlq_s64(a, n) })
     }
 
     /// As [`shift_left_lanes`](Self::shift_left_lanes), by the negated counts.
     #[inline(always)]
     fn shift_right_unsigned_lanes(self, a: Self::V, n: Self::V) -> Self::V {
         let n = self.sub(self.zero(), self.min_unsigned(n, self.splat(64)));
-        quarters!(a, n, |a, n| unsafe {
+        quarters!(int64x2_t; a, n, |a, n| unsafe {
             vreinterpretq_s64_u64(vshlq_u64(vreinterpretq_u64_s64(a), n))
         })
     }
 
     #[inline(always)]
     fn min_unsigned(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe {
+        quarters!(int64x2_t; a, b, |a, b| unsafe {
             vbslq_s64(
                 vcgtq_u64(vreinterpretq_u64_s64(a), vreinterpretq_u64_s64(b)),
                 b,
@@ -295,7 +269,7 @@ impl Wide for Neon {
 
     #[inline(always)]
     fn mul_unsigned_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| unsafe {
+        quarters!(int64x2_t; a, b, |a, b| unsafe {
             vreinterpretq_s64_u64(vmull_u32(
                 vmovn_u64(vreinterpretq_u64_s64(a)),
                 vmovn_u64(vreinterpretq_u64_s64(b)),

@@ -17,34 +17,8 @@ use core::arch::wasm32::{
     i64x2_sub, u64x2_shr, v128, v128_and, v128_bitselect, v128_load, v128_or, v128_store, v128_xor,
 };
 
-use super::{LANES, Wide};
+use super::{LANES, Wide, quarters};
 use crate::math::{Fx, Vec3};
-
-/// `f` of each quarter of two values. A macro, not a closure: the kernels are large, and a
-/// closure there may not be inlined.
-macro_rules! quarters {
-    ($a:expr, $b:expr, |$x:ident, $y:ident| $f:expr) => {{
-        let (a, b): ([v128; 4], [v128; 4]) = ($a, $b);
-        [
-            {
-                let ($x, $y) = (a[0], b[0]);
-                $f
-            },
-            {
-                let ($x, $y) = (a[1], b[1]);
-                $f
-            },
-            {
-                let ($x, $y) = (a[2], b[2]);
-                $f
-            },
-            {
-                let ($x, $y) = (a[3], b[3]);
-                $f
-            },
-        ]
-    }};
-}
 
 /// The `simd128` backend. A value exists only in a module built with `simd128`, and only
 /// when `FIXSTEP_SIMD` allows it.
@@ -73,7 +47,7 @@ impl Simd128 {
     fn spread(self, mask: u8) -> [v128; 4] {
         let all = i64x2_splat(i64::from(mask));
         let bits = self.load_words([1, 2, 4, 8, 16, 32, 64, 128]);
-        quarters!(bits, bits, |b, _c| i64x2_eq(v128_and(all, b), b))
+        quarters!(v128; bits, bits, |b, _c| i64x2_eq(v128_and(all, b), b))
     }
 
     /// a ^ 2⁶³ per lane: unsigned order as signed order.
@@ -126,42 +100,42 @@ impl Wide for Simd128 {
 
     #[inline(always)]
     fn add(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| i64x2_add(a, b))
+        quarters!(v128; a, b, |a, b| i64x2_add(a, b))
     }
 
     #[inline(always)]
     fn sub(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| i64x2_sub(a, b))
+        quarters!(v128; a, b, |a, b| i64x2_sub(a, b))
     }
 
     #[inline(always)]
     fn and(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| v128_and(a, b))
+        quarters!(v128; a, b, |a, b| v128_and(a, b))
     }
 
     #[inline(always)]
     fn or(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| v128_or(a, b))
+        quarters!(v128; a, b, |a, b| v128_or(a, b))
     }
 
     #[inline(always)]
     fn xor(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| v128_xor(a, b))
+        quarters!(v128; a, b, |a, b| v128_xor(a, b))
     }
 
     #[inline(always)]
     fn sign(self, a: Self::V) -> Self::V {
-        quarters!(a, a, |a, _b| i64x2_shr(a, 63))
+        quarters!(v128; a, a, |a, _b| i64x2_shr(a, 63))
     }
 
     #[inline(always)]
     fn max(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| v128_bitselect(a, b, i64x2_gt(a, b)))
+        quarters!(v128; a, b, |a, b| v128_bitselect(a, b, i64x2_gt(a, b)))
     }
 
     #[inline(always)]
     fn min(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| v128_bitselect(b, a, i64x2_gt(a, b)))
+        quarters!(v128; a, b, |a, b| v128_bitselect(b, a, i64x2_gt(a, b)))
     }
 
     /// −a where a is negative (wrapping: i64::MIN stays itself).
@@ -174,7 +148,7 @@ impl Wide for Simd128 {
     /// The low halves sign-extended, then one 64-bit multiply.
     #[inline(always)]
     fn mul_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
-        quarters!(a, b, |a, b| i64x2_mul(
+        quarters!(v128; a, b, |a, b| i64x2_mul(
             i64x2_shr(i64x2_shl(a, 32), 32),
             i64x2_shr(i64x2_shl(b, 32), 32)
         ))
@@ -183,17 +157,17 @@ impl Wide for Simd128 {
     /// The 64-bit multiply, modulo 2⁶⁴.
     #[inline(always)]
     fn mul_low_by_high(self, a: Self::V, _a_high: Self::V, b_high: Self::V) -> Self::V {
-        quarters!(a, b_high, |a, b| i64x2_mul(a, b))
+        quarters!(v128; a, b_high, |a, b| i64x2_mul(a, b))
     }
 
     #[inline(always)]
     fn shift_down_32(self, a: Self::V) -> Self::V {
-        quarters!(a, a, |a, _b| i64x2_shr(a, 32))
+        quarters!(v128; a, a, |a, _b| i64x2_shr(a, 32))
     }
 
     #[inline(always)]
     fn greater(self, a: Self::V, b: Self::V) -> u8 {
-        self.mask_of(quarters!(a, b, |a, b| i64x2_gt(a, b)))
+        self.mask_of(quarters!(v128; a, b, |a, b| i64x2_gt(a, b)))
     }
 
     #[inline(always)]
@@ -203,7 +177,7 @@ impl Wide for Simd128 {
 
     #[inline(always)]
     fn equal(self, a: Self::V, b: Self::V) -> u8 {
-        self.mask_of(quarters!(a, b, |a, b| i64x2_eq(a, b)))
+        self.mask_of(quarters!(v128; a, b, |a, b| i64x2_eq(a, b)))
     }
 
     #[inline(always)]
@@ -223,7 +197,7 @@ impl Wide for Simd128 {
         if n >= 64 {
             return self.zero();
         }
-        quarters!(a, a, |a, _b| i64x2_shl(a, n))
+        quarters!(v128; a, a, |a, _b| i64x2_shl(a, n))
     }
 
     /// Zero for counts from 64 up.
@@ -232,14 +206,14 @@ impl Wide for Simd128 {
         if n >= 64 {
             return self.zero();
         }
-        quarters!(a, a, |a, _b| u64x2_shr(a, n))
+        quarters!(v128; a, a, |a, _b| u64x2_shr(a, n))
     }
 
     /// The sign's copies for counts from 64 up.
     #[inline(always)]
     fn shift_right(self, a: Self::V, n: u32) -> Self::V {
         let n = n.min(63);
-        quarters!(a, a, |a, _b| i64x2_shr(a, n))
+        quarters!(v128; a, a, |a, _b| i64x2_shr(a, n))
     }
 
     /// Lane by lane.
@@ -274,7 +248,7 @@ impl Wide for Simd128 {
     #[inline(always)]
     fn mul_unsigned_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
         let low = i64x2_splat(0xffff_ffff);
-        quarters!(a, b, |a, b| i64x2_mul(v128_and(a, low), v128_and(b, low)))
+        quarters!(v128; a, b, |a, b| i64x2_mul(v128_and(a, low), v128_and(b, low)))
     }
 
     #[inline(always)]

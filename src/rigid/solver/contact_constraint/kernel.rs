@@ -288,7 +288,7 @@ macro_rules! kernels_for {
 }
 
 #[cfg(target_arch = "x86_64")]
-kernels_for!(Avx512, "avx512f,avx512dq");
+kernels_for!(Avx512, "avx512f,avx512cd,avx512dq");
 #[cfg(target_arch = "x86_64")]
 kernels_for!(Avx2, "avx2");
 #[cfg(target_arch = "aarch64")]
