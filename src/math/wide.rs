@@ -273,8 +273,31 @@ pub(crate) trait Wide: Copy {
 
     fn zero(self) -> Self::V;
     fn splat(self, x: i64) -> Self::V;
-    fn load_words(self, x: [i64; LANES]) -> Self::V;
-    fn store_words(self, x: Self::V) -> [i64; LANES];
+    /// The eight words at `words` (any alignment).
+    ///
+    /// # Safety
+    /// Eight words at `words` must be readable.
+    unsafe fn load_at(self, words: *const i64) -> Self::V;
+
+    /// Writes eight words to `out` (any alignment).
+    ///
+    /// # Safety
+    /// Eight words at `out` must be writable.
+    unsafe fn store_at(self, out: *mut i64, x: Self::V);
+
+    #[inline(always)]
+    fn load_words(self, x: [i64; LANES]) -> Self::V {
+        // SAFETY: eight readable words.
+        unsafe { self.load_at(x.as_ptr()) }
+    }
+
+    #[inline(always)]
+    fn store_words(self, x: Self::V) -> [i64; LANES] {
+        let mut out = [0; LANES];
+        // SAFETY: eight writable words.
+        unsafe { self.store_at(out.as_mut_ptr(), x) };
+        out
+    }
     fn add(self, a: Self::V, b: Self::V) -> Self::V;
     fn sub(self, a: Self::V, b: Self::V) -> Self::V;
     fn and(self, a: Self::V, b: Self::V) -> Self::V;
@@ -377,11 +400,29 @@ pub(crate) trait Wide: Copy {
     /// Third `k` (0, 1 or 2; a larger k reads the last) of the 24 words of eight
     /// consecutive vectors in memory order: words 8k to 8k + 7, where word 3i + c is
     /// component c of vector i. No transpose: for kernels that treat every component alike.
-    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V;
+    #[inline(always)]
+    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V {
+        let words = vectors
+            .as_ptr()
+            .cast::<i64>()
+            .wrapping_add(LANES * k.min(2));
+        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64` (three in a row, `repr(C)`); words
+        // 8k to 8k + 7 with k ≤ 2.
+        unsafe { self.load_at(words) }
+    }
 
     /// Writes third `k` of eight consecutive vectors, in the layout of
     /// [`load_third`](Self::load_third).
-    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: Self::V);
+    #[inline(always)]
+    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: Self::V) {
+        let out = vectors
+            .as_mut_ptr()
+            .cast::<i64>()
+            .wrapping_add(LANES * k.min(2));
+        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`; words 8k to 8k + 7 with k ≤ 2, and
+        // every bit pattern is an `Fx`.
+        unsafe { self.store_at(out, words) }
+    }
 
     /// A value per vector of a run of eight (lane i of `a` for vector i) over the lanes of
     /// that vector's three components in the layout of [`load_third`](Self::load_third):

@@ -27,8 +27,7 @@ use core::arch::x86_64::{
     _mm256_srli_epi64, _mm256_srlv_epi64, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
 };
 
-use super::{LANES, Wide};
-use crate::math::{Fx, Vec3};
+use super::Wide;
 
 /// `f` of each half of two values. A macro, not a closure: the kernels are large, and a
 /// closure there may not be inlined (nor, then, the intrinsics inside it).
@@ -105,25 +104,23 @@ impl Wide for Avx2 {
     }
 
     #[inline(always)]
-    fn load_words(self, x: [i64; LANES]) -> Self::V {
-        // SAFETY: 2 × 32 readable bytes.
+    unsafe fn load_at(self, words: *const i64) -> Self::V {
+        // SAFETY: the caller's promise: eight readable words, two runs of four.
         unsafe {
             [
-                _mm256_loadu_si256(x.as_ptr().cast()),
-                _mm256_loadu_si256(x.as_ptr().add(4).cast()),
+                _mm256_loadu_si256(words.cast()),
+                _mm256_loadu_si256(words.add(4).cast()),
             ]
         }
     }
 
     #[inline(always)]
-    fn store_words(self, x: Self::V) -> [i64; LANES] {
-        let mut out = [0; LANES];
-        // SAFETY: 2 × 32 writable bytes.
+    unsafe fn store_at(self, out: *mut i64, x: Self::V) {
+        // SAFETY: the caller's promise: eight writable words, two runs of four.
         unsafe {
-            _mm256_storeu_si256(out.as_mut_ptr().cast(), x[0]);
-            _mm256_storeu_si256(out.as_mut_ptr().add(4).cast(), x[1]);
+            _mm256_storeu_si256(out.cast(), x[0]);
+            _mm256_storeu_si256(out.add(4).cast(), x[1]);
         }
-        out
     }
 
     #[inline(always)]
@@ -295,35 +292,6 @@ impl Wide for Avx2 {
         halves!(index, index, |i, _j| unsafe {
             _mm256_i64gather_epi64::<8>(table.as_ptr(), i)
         })
-    }
-
-    #[inline(always)]
-    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V {
-        let words = vectors
-            .as_ptr()
-            .cast::<i64>()
-            .wrapping_add(LANES * k.min(2));
-        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`; words 8k to 8k + 7 with k ≤ 2.
-        unsafe {
-            [
-                _mm256_loadu_si256(words.cast()),
-                _mm256_loadu_si256(words.add(4).cast()),
-            ]
-        }
-    }
-
-    #[inline(always)]
-    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: Self::V) {
-        let out = vectors
-            .as_mut_ptr()
-            .cast::<i64>()
-            .wrapping_add(LANES * k.min(2));
-        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`; words 8k to 8k + 7 with k ≤ 2, and
-        // every bit pattern is an `Fx`.
-        unsafe {
-            _mm256_storeu_si256(out.cast(), words[0]);
-            _mm256_storeu_si256(out.add(4).cast(), words[1]);
-        }
     }
 
     /// Each half of each result comes from one half of `a`: six permutes within halves.

@@ -56,17 +56,15 @@ impl Wide for Avx512 {
     }
 
     #[inline(always)]
-    fn load_words(self, x: [i64; LANES]) -> __m512i {
-        // SAFETY: 64 readable bytes.
-        unsafe { _mm512_loadu_si512(x.as_ptr().cast()) }
+    unsafe fn load_at(self, words: *const i64) -> __m512i {
+        // SAFETY: the caller's promise: eight readable words.
+        unsafe { _mm512_loadu_si512(words.cast()) }
     }
 
     #[inline(always)]
-    fn store_words(self, x: __m512i) -> [i64; LANES] {
-        let mut out = [0; LANES];
-        // SAFETY: 64 writable bytes.
-        unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), x) };
-        out
+    unsafe fn store_at(self, out: *mut i64, x: __m512i) {
+        // SAFETY: the caller's promise: eight writable words.
+        unsafe { _mm512_storeu_si512(out.cast(), x) }
     }
 
     #[inline(always)]
@@ -235,21 +233,6 @@ impl Wide for Avx512 {
                 _mm512_permutex2var_epi64(z, _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0), v2),
             ])
         }
-    }
-
-    #[inline(always)]
-    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> __m512i {
-        let words = vectors.as_ptr().cast::<i64>();
-        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`; words 8k to 8k + 7 with k ≤ 2.
-        unsafe { _mm512_loadu_si512(words.add(LANES * k.min(2)).cast()) }
-    }
-
-    #[inline(always)]
-    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: __m512i) {
-        let out = vectors.as_mut_ptr().cast::<i64>();
-        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`; words 8k to 8k + 7 with k ≤ 2, and
-        // every bit pattern is an `Fx`.
-        unsafe { _mm512_storeu_si512(out.add(LANES * k.min(2)).cast(), words) }
     }
 
     /// One permute per result.

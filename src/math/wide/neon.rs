@@ -25,7 +25,6 @@ use core::arch::aarch64::{
 };
 
 use super::{LANES, Wide, quarters};
-use crate::math::{Fx, Vec3};
 
 /// The NEON backend. A value exists only on aarch64, where every processor has NEON, and
 /// only when `FIXSTEP_SIMD` allows it.
@@ -86,31 +85,27 @@ impl Wide for Neon {
     }
 
     #[inline(always)]
-    fn load_words(self, x: [i64; LANES]) -> Self::V {
-        // SAFETY: 4 × 16 readable bytes.
+    unsafe fn load_at(self, words: *const i64) -> Self::V {
+        // SAFETY: the caller's promise: eight readable words, four runs of two.
         unsafe {
-            let p = x.as_ptr();
             [
-                vld1q_s64(p),
-                vld1q_s64(p.add(2)),
-                vld1q_s64(p.add(4)),
-                vld1q_s64(p.add(6)),
+                vld1q_s64(words),
+                vld1q_s64(words.add(2)),
+                vld1q_s64(words.add(4)),
+                vld1q_s64(words.add(6)),
             ]
         }
     }
 
     #[inline(always)]
-    fn store_words(self, x: Self::V) -> [i64; LANES] {
-        let mut out = [0; LANES];
-        // SAFETY: 4 × 16 writable bytes.
+    unsafe fn store_at(self, out: *mut i64, x: Self::V) {
+        // SAFETY: the caller's promise: eight writable words, four runs of two.
         unsafe {
-            let p = out.as_mut_ptr();
-            vst1q_s64(p, x[0]);
-            vst1q_s64(p.add(2), x[1]);
-            vst1q_s64(p.add(4), x[2]);
-            vst1q_s64(p.add(6), x[3]);
+            vst1q_s64(out, x[0]);
+            vst1q_s64(out.add(2), x[1]);
+            vst1q_s64(out.add(4), x[2]);
+            vst1q_s64(out.add(6), x[3]);
         }
-        out
     }
 
     #[inline(always)]
@@ -275,38 +270,5 @@ impl Wide for Neon {
                 vmovn_u64(vreinterpretq_u64_s64(b)),
             ))
         })
-    }
-
-    #[inline(always)]
-    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V {
-        let words = vectors
-            .as_ptr()
-            .cast::<i64>()
-            .wrapping_add(LANES * k.min(2));
-        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`; words 8k to 8k + 7 with k ≤ 2.
-        unsafe {
-            [
-                vld1q_s64(words),
-                vld1q_s64(words.add(2)),
-                vld1q_s64(words.add(4)),
-                vld1q_s64(words.add(6)),
-            ]
-        }
-    }
-
-    #[inline(always)]
-    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: Self::V) {
-        let out = vectors
-            .as_mut_ptr()
-            .cast::<i64>()
-            .wrapping_add(LANES * k.min(2));
-        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`; words 8k to 8k + 7 with k ≤ 2, and
-        // every bit pattern is an `Fx`.
-        unsafe {
-            vst1q_s64(out, words[0]);
-            vst1q_s64(out.add(2), words[1]);
-            vst1q_s64(out.add(4), words[2]);
-            vst1q_s64(out.add(6), words[3]);
-        }
     }
 }

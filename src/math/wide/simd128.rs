@@ -18,7 +18,6 @@ use core::arch::wasm32::{
 };
 
 use super::{LANES, Wide, quarters};
-use crate::math::{Fx, Vec3};
 
 /// The `simd128` backend. A value exists only in a module built with `simd128`, and only
 /// when `FIXSTEP_SIMD` allows it.
@@ -71,9 +70,10 @@ impl Wide for Simd128 {
     }
 
     #[inline(always)]
-    fn load_words(self, x: [i64; LANES]) -> Self::V {
-        let p = x.as_ptr().cast::<v128>();
-        // SAFETY: 4 × 16 readable bytes (`v128_load` needs no alignment).
+    unsafe fn load_at(self, words: *const i64) -> Self::V {
+        let p = words.cast::<v128>();
+        // SAFETY: the caller's promise: eight readable words, four runs of two
+        // (`v128_load` needs no alignment).
         unsafe {
             [
                 v128_load(p),
@@ -85,17 +85,15 @@ impl Wide for Simd128 {
     }
 
     #[inline(always)]
-    fn store_words(self, x: Self::V) -> [i64; LANES] {
-        let mut out = [0; LANES];
-        let p = out.as_mut_ptr().cast::<v128>();
-        // SAFETY: 4 × 16 writable bytes.
+    unsafe fn store_at(self, out: *mut i64, x: Self::V) {
+        let p = out.cast::<v128>();
+        // SAFETY: the caller's promise: eight writable words, four runs of two.
         unsafe {
             v128_store(p, x[0]);
             v128_store(p.add(1), x[1]);
             v128_store(p.add(2), x[2]);
             v128_store(p.add(3), x[3]);
         }
-        out
     }
 
     #[inline(always)]
@@ -249,40 +247,5 @@ impl Wide for Simd128 {
     fn mul_unsigned_low_halves(self, a: Self::V, b: Self::V) -> Self::V {
         let low = i64x2_splat(0xffff_ffff);
         quarters!(v128; a, b, |a, b| i64x2_mul(v128_and(a, low), v128_and(b, low)))
-    }
-
-    #[inline(always)]
-    fn load_third(self, vectors: &[Vec3<Fx>; LANES], k: usize) -> Self::V {
-        let p = vectors
-            .as_ptr()
-            .cast::<i64>()
-            .wrapping_add(LANES * k.min(2))
-            .cast::<v128>();
-        // SAFETY: eight `Vec3<Fx>` are 24 readable `i64`; words 8k to 8k + 7 with k ≤ 2.
-        unsafe {
-            [
-                v128_load(p),
-                v128_load(p.add(1)),
-                v128_load(p.add(2)),
-                v128_load(p.add(3)),
-            ]
-        }
-    }
-
-    #[inline(always)]
-    fn store_third(self, vectors: &mut [Vec3<Fx>; LANES], k: usize, words: Self::V) {
-        let p = vectors
-            .as_mut_ptr()
-            .cast::<i64>()
-            .wrapping_add(LANES * k.min(2))
-            .cast::<v128>();
-        // SAFETY: eight `Vec3<Fx>` are 24 writable `i64`; words 8k to 8k + 7 with k ≤ 2, and
-        // every bit pattern is an `Fx`.
-        unsafe {
-            v128_store(p, words[0]);
-            v128_store(p.add(1), words[1]);
-            v128_store(p.add(2), words[2]);
-            v128_store(p.add(3), words[3]);
-        }
     }
 }
