@@ -4,7 +4,7 @@
 //! [`Real::sqrt`](crate::math::Real::sqrt) of I32F32, from an estimate by Newton's method
 //! on integers that two exact steps then correct. The fluid's neighbour search takes the
 //! roots of q² = |xᵢ − xⱼ|²/H² with it, and the rigid solver's square roots
-//! (`rigid::solver::avx512::sqrt`) take it when every value lies in its domain.
+//! ([`lanes`](super::lanes)) take it when every value lies in its domain.
 //!
 //! # The estimate
 //!
