@@ -372,11 +372,17 @@ pub(crate) trait Wide: Copy {
             words[1][l] = vector.y.to_bits();
             words[2][l] = vector.z.to_bits();
         }
-        Some([
+        Some(self.load_components(&words))
+    }
+
+    /// One vector per component from words gathered lane by lane (x, y, z).
+    #[inline(always)]
+    fn load_components(self, words: &[[i64; LANES]; 3]) -> [Self::V; 3] {
+        [
             self.load_words(words[0]),
             self.load_words(words[1]),
             self.load_words(words[2]),
-        ])
+        ]
     }
 
     /// The x, y and z components of the eight consecutive vectors `vectors[first..first +
@@ -390,11 +396,7 @@ pub(crate) trait Wide: Copy {
             words[1][l] = vector.y.to_bits();
             words[2][l] = vector.z.to_bits();
         }
-        Some([
-            self.load_words(words[0]),
-            self.load_words(words[1]),
-            self.load_words(words[2]),
-        ])
+        Some(self.load_components(&words))
     }
 
     /// Third `k` (0, 1 or 2; a larger k reads the last) of the 24 words of eight

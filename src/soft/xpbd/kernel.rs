@@ -274,11 +274,7 @@ fn load3<W: Wide>(w: W, vertices: &[Vec3<Fx>]) -> [W::V; 3] {
             words[lane / LANES][lane % LANES] = value.to_bits();
         }
     }
-    [
-        w.load_words(words[0]),
-        w.load_words(words[1]),
-        w.load_words(words[2]),
-    ]
+    w.load_components(&words)
 }
 
 /// Writes the lanes of `lanes` of three vectors to the 24 coordinates of eight vertices.

@@ -72,11 +72,7 @@ fn transform<W: Wide>(
         words[1][i] = p.y.to_bits();
         words[2][i] = p.z.to_bits();
     }
-    let p = [
-        w.load_words(words[0]),
-        w.load_words(words[1]),
-        w.load_words(words[2]),
-    ];
+    let p = w.load_components(&words);
     let columns = xf.rotation.cols.map(|c| c.to_array().map(Fx::to_bits));
     let translation = xf.translation.to_array().map(Fx::to_bits);
     let mut unchecked = w.out_of_bound3(p);
