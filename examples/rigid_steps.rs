@@ -2,10 +2,11 @@
 //! profiling (`perf record ./target/release/examples/rigid_steps pyramid 300`). The
 //! benchmark figures come from `cargo bench --bench rigid`, not from here.
 //!
-//! Usage: `cargo run --release --example rigid_steps [SCENE] [STEPS]` (default `pyramid`
-//! 500).
+//! Usage: `cargo run --release --example rigid_steps [SCENE] [STEPS] [f64]` (default
+//! `pyramid` 500, in I32F32; `f64` runs the same generic code in `f64`, where no vector
+//! kernel runs: the structure's cost alone).
 
-use fixstep::math::Fx;
+use fixstep::math::{Fx, Real};
 use fixstep::world::TickInput;
 use fixstep_scenes::builtin_scene;
 
@@ -15,7 +16,19 @@ fn main() {
         .nth(2)
         .and_then(|s| s.parse().ok())
         .unwrap_or(500);
-    let Some(mut scene) = builtin_scene::<Fx>(&name) else {
+    match std::env::args().nth(3).as_deref() {
+        None => run::<Fx>(&name, steps),
+        Some("f64") => run::<f64>(&name, steps),
+        Some(other) => {
+            eprintln!("error: the third argument is `f64` or nothing, not `{other}`");
+            std::process::exit(2);
+        }
+    }
+}
+
+/// Steps built-in scene `name` in `R` and prints the mean time per step.
+fn run<R: Real>(name: &str, steps: u32) {
+    let Some(mut scene) = builtin_scene::<R>(name) else {
         eprintln!("error: no built-in scene `{name}`");
         std::process::exit(2);
     };
