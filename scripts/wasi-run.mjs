@@ -1,6 +1,8 @@
 // Runs a wasm32-wasip1 program under Node's built-in WASI (Node >= 20), for the
-// determinism matrix: node scripts/wasi-run.mjs PROGRAM.wasm [ARGS...]
+// determinism matrix, the cross-target unit tests and the peer bench:
+//   node scripts/wasi-run.mjs PROGRAM.wasm [ARGS...]
 // The current directory is the only one the program sees (as `.`), so pass relative paths.
+// Of the environment it sees only FIXSTEP_SIMD (the cap on the engine's kernels), when set.
 // Exits with the program's exit code; a trap (a Rust panic aborts) exits 101.
 import { readFile } from 'node:fs/promises';
 import process from 'node:process';
@@ -14,7 +16,7 @@ if (!program) {
 const wasi = new WASI({
   version: 'preview1',
   args: [program, ...args],
-  env: {},
+  env: process.env.FIXSTEP_SIMD === undefined ? {} : { FIXSTEP_SIMD: process.env.FIXSTEP_SIMD },
   preopens: { '.': process.cwd() },
   returnOnExit: true,
 });

@@ -6,6 +6,12 @@
 //! enhanced-determinism` for Rapier's cross-platform determinism mode.
 //! `scripts/peer-bench.sh` builds and runs both.
 //!
+//! Everything here also builds for `wasm32-wasip1`, with and without `-C
+//! target-feature=+simd128` (fixstep's `simd128` kernels), and runs under Node's WASI
+//! (`scripts/wasi-run.mjs`, which passes `FIXSTEP_SIMD` on): `scripts/peer-bench.sh --wasm`
+//! builds both with Rapier's enhanced-determinism mode and runs them, what a browser game
+//! pays. The clock there is WASI's monotonic `clock_time_get`, behind [`Instant`].
+//!
 //! Rigid bodies, the same for every engine: dt = 1/60 s, each engine's default solver
 //! substeps (Rapier's `num_solver_iterations`, 4; fixstep's, 5 since state version 4), one
 //! thread, gravity −9.81 m/s² along y, sleeping off, then `pyramid` and `balls` again with
