@@ -3,6 +3,10 @@
 //! kernels and their dispatch compile there and nowhere else.
 
 fn main() {
+    // The outcome depends only on the target and its features (a change of either rebuilds
+    // everything anyway): without this, any change to any file of the package would rerun
+    // the script and recompile the engine.
+    println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rustc-check-cfg=cfg(vector_kernels)");
     let arch = std::env::var("CARGO_CFG_TARGET_ARCH").unwrap_or_default();
     let features = std::env::var("CARGO_CFG_TARGET_FEATURE").unwrap_or_default();
