@@ -32,6 +32,7 @@ use super::guarded::{Fraction, Guard};
 use super::over_real::OverReal;
 use super::real::{ParseRealError, Real};
 use super::saturation::{record_saturation, saturate_i128};
+use super::wide_product::wide_product;
 use super::{exp, sqrt, trig};
 
 /// The fractional-bit count of a [`Fixed`] type: a `typenum` unsigned from the `fixed`
@@ -101,7 +102,7 @@ const PI_Q61: i64 = 7_244_019_458_077_122_842;
 /// i.e. rounded to nearest with ties toward +∞, saturated and counted.
 #[inline(always)]
 pub(crate) fn mul_bits(a: i64, b: i64, frac: u32) -> i64 {
-    let product = a as i128 * b as i128;
+    let product = wide_product(a, b);
     saturate_i128((product + (1i128 << (frac - 1))) >> frac)
 }
 
@@ -111,7 +112,7 @@ pub(crate) fn mul_bits(a: i64, b: i64, frac: u32) -> i64 {
 /// shift (`shrd`/`shld`, several micro-operations on some x86 cores).
 #[inline(always)]
 fn round_mul_high(a: i64, c: i64) -> i64 {
-    let product = a as i128 * c as i128;
+    let product = wide_product(a, c);
     (product >> 64) as i64 + (product as u64 >> 63) as i64
 }
 
@@ -398,7 +399,7 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
     /// the exact sum, saturated, rather than the sum of a saturated product.
     #[inline(always)]
     fn add_product(self, a: Self, b: Self) -> Self {
-        let product = a.to_bits() as i128 * b.to_bits() as i128;
+        let product = wide_product(a.to_bits(), b.to_bits());
         let sum = ((self.to_bits() as i128) << Self::FRAC_BITS) + product;
         Self::from_bits(saturate_i128(
             (sum + (1i128 << (Self::FRAC_BITS - 1))) >> Self::FRAC_BITS,
@@ -410,7 +411,7 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
     /// which needs operands near the ends of the range; the 128-bit sum then saturates too.
     #[inline(always)]
     fn dot3(a: [Self; 3], b: [Self; 3]) -> Self {
-        let product = |i: usize| a[i].to_bits() as i128 * b[i].to_bits() as i128;
+        let product = |i: usize| wide_product(a[i].to_bits(), b[i].to_bits());
         let sum = product(0)
             .saturating_add(product(1))
             .saturating_add(product(2));
@@ -478,7 +479,7 @@ impl<Frac: FracBits> Real for Fixed<Frac> {
             guard.trip_if(high_overflow | sum_overflow);
             Self::from_bits(sum)
         } else {
-            let product = a as i128 * b as i128;
+            let product = wide_product(a, b);
             let rounded = (product + (1i128 << (Self::FRAC_BITS - 1))) >> Self::FRAC_BITS;
             let narrow = rounded as i64;
             guard.trip_if(narrow as i128 != rounded);

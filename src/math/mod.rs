@@ -20,6 +20,7 @@ pub mod trig;
 pub mod vec3;
 #[cfg(vector_kernels)]
 pub(crate) mod wide;
+pub(crate) mod wide_product;
 
 pub use fixed_scalar::{Fixed, FracBits, Fx, FxI32F32, FxI40F24, FxI48F16};
 pub use guarded::{Fraction, Guard};
