@@ -1,13 +1,25 @@
-//! Build errors: which field of a scene (or of a snapshot's state) is wrong, and how.
+//! The one error of reading and building a scene: which file, line and field (or which field
+//! of a snapshot's state) is wrong, and how.
 
 use core::fmt;
 
 use crate::math::{Quat, Real};
 
-/// A scene that cannot be built. `field` is a path such as `particles.emitters[2].rate`.
+/// A scene that cannot be read or built: the file it came from and the line and column
+/// where reading stopped (when known), the field that is wrong (a path such as
+/// `particles.emitters[2].rate`, empty when the error is not about one field) and what is
+/// wrong. Its `Display` is one line: `FILE: line L, column C: field `F`: MESSAGE`, each part
+/// present only when known.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SceneError {
-    /// Path of the offending field from the scene root.
+    /// The file (or other origin, such as `inline`) the scene was read from; `None` for a
+    /// scene built in code.
+    pub file: Option<String>,
+    /// Line and column (from 1) where reading the file stopped; `None` for an error found
+    /// after reading, when building.
+    pub line: Option<(usize, usize)>,
+    /// Path of the offending field from the scene root; empty when the error is about the
+    /// file as a whole.
     pub field: String,
     /// What is wrong with it.
     pub message: String,
@@ -17,9 +29,28 @@ impl SceneError {
     /// An error about `field`.
     pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
         Self {
+            file: None,
+            line: None,
             field: field.into(),
             message: message.into(),
         }
+    }
+
+    /// An error about the file `file` as a whole (it cannot be read, it is not text, …).
+    pub fn in_file(file: impl Into<String>, message: impl Into<String>) -> Self {
+        Self::new("", message).with_file(file)
+    }
+
+    /// The same error, found in the file `file`.
+    pub fn with_file(mut self, file: impl Into<String>) -> Self {
+        self.file = Some(file.into());
+        self
+    }
+
+    /// The same error, found where reading stopped: `line` and `column`, from 1.
+    pub fn at_line(mut self, line: usize, column: usize) -> Self {
+        self.line = Some((line, column));
+        self
     }
 
     /// An error about `field` unless `lo ≤ value ≤ hi`: "must be lo to hi unit (got value)",
@@ -69,7 +100,16 @@ impl SceneError {
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "field `{}`: {}", self.field, self.message)
+        if let Some(file) = &self.file {
+            write!(f, "{file}: ")?;
+        }
+        if let Some((line, column)) = self.line {
+            write!(f, "line {line}, column {column}: ")?;
+        }
+        if !self.field.is_empty() {
+            write!(f, "field `{}`: ", self.field)?;
+        }
+        f.write_str(&self.message)
     }
 }
 

@@ -288,7 +288,9 @@ fn a_script_spawning_an_unknown_template_or_past_the_limit_is_refused_by_field()
 fn a_negative_filter_in_a_scene_file_is_refused_by_field() {
     let text =
         "(name: \"x\", rigid: (bodies: [(shape: Sphere(radius: 1.0), filter: (layers: -1))]))";
-    let e = fixstep::scene::parse_scene::<Fx>(text, "x.ron").expect_err("refused");
+    let e = fixstep::scene::parse_scene::<Fx>(text, "x.ron")
+        .expect_err("refused")
+        .to_string();
     assert!(e.contains("x.ron"), "{e}");
     assert!(e.contains("line 1"), "{e}");
 }

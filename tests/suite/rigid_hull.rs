@@ -257,7 +257,9 @@ fn a_scene_with_a_flat_hull_is_refused_with_file_line_and_reason() {
     let text = "(name: \"x\", rigid: (bodies: [(shape: ConvexHull(points: [\n\
         (x: 0.0, y: 0.0, z: 0.0), (x: 1.0, y: 0.0, z: 0.0), (x: 0.0, y: 1.0, z: 0.0),\n\
         (x: 1.0, y: 1.0, z: 0.0)]))]))";
-    let e = fixstep::scene::parse_scene::<Fx>(text, "x.ron").expect_err("refused");
+    let e = fixstep::scene::parse_scene::<Fx>(text, "x.ron")
+        .expect_err("refused")
+        .to_string();
     assert!(e.contains("x.ron"), "{e}");
     // ron places the error at the end of the list it could not turn into a hull.
     assert!(e.contains("line 3"), "{e}");

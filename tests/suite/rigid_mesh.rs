@@ -289,7 +289,7 @@ fn meshes_are_written_and_read_as_source_data() {
     let again = parse_scene::<Fx>(&written, "again").expect("reads back");
     assert_eq!(again, scene);
     let bad = text.replace("(0, 1, 2)", "(0, 1, 3)");
-    let error = parse_scene::<Fx>(&bad, "bad").unwrap_err();
+    let error = parse_scene::<Fx>(&bad, "bad").unwrap_err().to_string();
     assert!(
         error.contains("triangles[0]") && error.contains("out of range"),
         "{error}"

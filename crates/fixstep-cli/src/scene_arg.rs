@@ -18,7 +18,7 @@ pub fn resolve_scene(arg: &str) -> Result<Scene<Fx>, String> {
         return Ok(scene);
     }
     if looks_like_path || path.exists() {
-        return load_scene_file(path);
+        return load_scene_file(path).map_err(|e| e.to_string());
     }
     let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(name, _)| *name).collect();
     Err(format!(
