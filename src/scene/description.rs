@@ -3,6 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::simulation::input_at;
 use crate::fluid::{FluidDesc, FluidSystem};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{ParticleSystem, ParticlesDesc};
@@ -56,7 +57,8 @@ pub struct Scene<R: Real = Fx> {
     /// scene when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joints: Option<JointsDesc<R>>,
-    /// Scripted inputs, fed to the world at their ticks by `fixstep run`.
+    /// Scripted inputs, fed to the world at their ticks by [`Simulation`](super::Simulation)
+    /// (and so by `fixstep run`).
     #[serde(default)]
     pub script: Vec<TickInput<R>>,
 }
@@ -156,11 +158,9 @@ impl<R: Real> Scene<R> {
         Ok(world)
     }
 
-    /// The scripted inputs for `tick`, if any.
+    /// The scripted inputs for `tick`, if any. [`Simulation`](super::Simulation) feeds them
+    /// to a world tick by tick.
     pub fn script_at(&self, tick: u64) -> Option<&TickInput<R>> {
-        self.script
-            .binary_search_by_key(&tick, |input| input.tick)
-            .ok()
-            .map(|i| &self.script[i])
+        input_at(&self.script, tick)
     }
 }

@@ -12,8 +12,8 @@ use super::query_spec::{QueryKind, QuerySpec};
 use super::scene_arg::resolve_source;
 use super::status::Status;
 use fixstep::math::{Fx, Quat, Real, Vec3};
-use fixstep::replay::InputFeed;
 use fixstep::rigid::{QueryFilter, RayHit};
+use fixstep::scene::Simulation;
 use fixstep::types::Handle;
 
 /// Runs the query and prints its answer.
@@ -21,12 +21,11 @@ pub fn query(args: &QueryArgs) -> Result<Status, String> {
     // The arguments first: a bad one fails before the simulation.
     let spec = QuerySpec::from_args(args)?;
     let source = resolve_source(&args.input)?;
-    let mut world = source.build_world(&args.input)?;
-    let mut feed = InputFeed::new(&source.inputs);
-    while world.tick() < args.tick {
-        let tick = world.tick();
-        world.step(feed.at(tick));
+    let mut simulation = Simulation::resume(source.build_world(&args.input)?, source.inputs);
+    while simulation.world().tick() < args.tick {
+        simulation.step();
     }
+    let world = simulation.world();
 
     let filter = QueryFilter::new().with_mask(spec.mask);
     let lines = match &spec.kind {

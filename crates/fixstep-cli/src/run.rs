@@ -15,32 +15,37 @@ use super::status::Status;
 use super::timing_table::timing_table;
 use fixstep::math::{Fx, Real};
 use fixstep::replay::{AtomicFile, DEFAULT_CHECKSUM_EVERY, InputFeed, Recorder};
-use fixstep::scene::Scene;
+use fixstep::scene::{Scene, Simulation};
 use fixstep::world::checksum::hex;
-use fixstep::world::{TickInput, TickReport, World, decode_snapshot, encode_snapshot};
+use fixstep::world::{TickReport, World, decode_snapshot, encode_snapshot};
 
 /// Ticks between two divergence checks of `fixstep run` (an O(particles) energy sum each).
 const DIVERGENCE_CHECK_EVERY: u64 = 10;
 
-/// What `run` steps: a recorder from the scene's first tick, or a world resumed from a
+/// What `run` steps: a recorder from the scene's first tick, or a simulation resumed from a
 /// snapshot (which cannot be recorded, since a replay starts at tick 0).
 enum Runner {
     Recording(Box<Recorder>),
-    Resumed(Box<World<Fx>>),
+    Resumed(Box<Simulation<Fx>>),
 }
 
 impl Runner {
     fn world(&self) -> &World<Fx> {
         match self {
             Self::Recording(recorder) => recorder.world(),
-            Self::Resumed(world) => world,
+            Self::Resumed(simulation) => simulation.world(),
         }
     }
 
-    fn step(&mut self, input: &TickInput<Fx>) -> TickReport {
+    /// Runs one tick with the scene's scripted input: the recorder is fed it from `feed`
+    /// (and records it), the simulation feeds itself.
+    fn step(&mut self, feed: &mut InputFeed) -> TickReport {
         match self {
-            Self::Recording(recorder) => recorder.step(input),
-            Self::Resumed(world) => world.step(input),
+            Self::Recording(recorder) => {
+                let tick = recorder.world().tick();
+                recorder.step(feed.at(tick))
+            }
+            Self::Resumed(simulation) => simulation.step(),
         }
     }
 }
@@ -53,7 +58,8 @@ impl Runner {
                 recorder.enable_timing();
                 recorder.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
             }
-            Self::Resumed(world) => {
+            Self::Resumed(simulation) => {
+                let world = simulation.world_mut();
                 world.enable_timing();
                 world.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
             }
@@ -82,8 +88,8 @@ fn commit_output<E: core::fmt::Display>(
         .map_err(|e| write_error(&path, &e))
 }
 
-/// The scene's world, continued from the snapshot at `path`.
-fn resume(scene: &Scene<Fx>, path: &Path) -> Result<World<Fx>, String> {
+/// The scene's simulation, continued from the snapshot at `path`.
+fn resume(scene: &Scene<Fx>, path: &Path) -> Result<Simulation<Fx>, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
     let state = decode_snapshot::<Fx>(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
     let mut world = scene.build().map_err(|e| format!("{}: {e}", scene.name))?;
@@ -93,7 +99,7 @@ fn resume(scene: &Scene<Fx>, path: &Path) -> Result<World<Fx>, String> {
             .check_user_forces()
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
-    Ok(world)
+    Ok(Simulation::resume(world, scene.script.clone()))
 }
 
 /// Refuses two outputs that name the same file.
@@ -165,8 +171,7 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     let mut progress = Progress::new(ticks);
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
     for done in 1..=ticks {
-        let tick = runner.world().tick();
-        let report = runner.step(feed.at(tick));
+        let report = runner.step(&mut feed);
         report_broken_joints(runner.world());
         if let Some(metrics) = &mut metrics {
             metrics.tick(runner.world())?;
