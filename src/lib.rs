@@ -9,9 +9,13 @@
 //! # A tour
 //!
 //! A [`Scene`](scene::Scene) (built in code or read from RON with
-//! [`scene::parse_scene`]) builds a [`World`](world::World). A game then calls
-//! [`World::step`](world::World::step) once per tick with that tick's
-//! [`TickInput`](world::TickInput): the commands of every player. A tick runs the
+//! [`scene::parse_scene`] or [`scene::load_scene_file`]) builds a [`World`](world::World).
+//! A game then calls [`World::step`](world::World::step) once per tick with that tick's
+//! [`TickInput`](world::TickInput): the commands of every player; a
+//! [`Simulation`](scene::Simulation) does it for a scene with a script, feeding each
+//! tick's scripted input and the game's own commands. Reading and building fail with one
+//! error, [`SceneError`](scene::SceneError), naming the file, line and field.
+//! [`prelude`] brings all of these in one import. A tick runs the
 //! [`Stage`](types::Stage)s in order:
 //!
 //! 1. `ApplyInputs`: the commands, players in ascending index;
@@ -37,24 +41,53 @@
 //! Modules depend downward only: [`math`] (the scalar, vectors, the generator, the state
 //! hasher) → [`types`] (handles, commands, the build error, the subsystem contract) → the
 //! subsystems → [`world`] → [`scene`] and [`replay`] ([`codec`] is the one binary
-//! encoding). The tools (the `fixstep` command, the viewer, the network peer, the
+//! encoding); [`prelude`] re-exports what a game needs. The tools (the `fixstep` command, the viewer, the network peer, the
 //! benchmarks) and the built-in scenes are crates of their own (`crates/` in the
 //! repository); this crate depends on nothing a game does not need.
 //!
 //! # Example
 //!
-//! ```
-//! use fixstep::math::Fx;
-//! use fixstep::scene::parse_scene;
-//! use fixstep::world::TickInput;
+//! A box dropped on the ground, kicked up by a player at tick 60:
 //!
-//! let ron = "(name: \"drop\", particles: (particles: [(position: (x: 0.0, y: 10.0, z: 0.0))]))";
-//! let mut world = parse_scene::<Fx>(ron, "inline").unwrap().build().unwrap();
-//! for tick in 0..60 {
-//!     world.step(&TickInput { tick, players: Vec::new() });
+//! ```
+//! use fixstep::prelude::*;
+//!
+//! // A scene from RON text (or `load_scene_file(path)`, or `Scene` built in code).
+//! let scene = parse_scene::<Fx>(
+//!     r#"(
+//!         name: "drop",
+//!         rigid: (bodies: [
+//!             (kind: Static, shape: Plane(normal: (x: 0.0, y: 1.0, z: 0.0), offset: 0.0)),
+//!             (shape: Box(half_extents: (x: 0.5, y: 0.5, z: 0.5)), position: (x: 0.0, y: 3.0, z: 0.0)),
+//!         ]),
+//!     )"#,
+//!     "drop.ron",
+//! )?;
+//! // A simulation builds the world and feeds it the scene's script (this one has none).
+//! let mut simulation = Simulation::new(&scene)?;
+//! let rigid = simulation.world().rigid().expect("the scene has rigid bodies");
+//! let cube: Handle = rigid.handles().nth(1).expect("bodies in scene order");
+//! for _ in 0..90 {
+//!     if simulation.world().tick() == 60 {
+//!         // Player 0 kicks the 1000 kg cube up at 5 m/s.
+//!         let impulse = Vec3::new(Fx::ZERO, Fx::from_int(5000), Fx::ZERO);
+//!         let kick = Command::ApplyImpulse { target: Target::Body(cube), impulse, point: None };
+//!         simulation.step_with(&[PlayerInput { player: 0, commands: vec![kick] }]);
+//!     } else {
+//!         simulation.step();
+//!     }
 //! }
-//! assert_eq!(world.tick(), 60);
-//! println!("{:016x}", world.checksum().total); // the same bits on every machine
+//! let world = simulation.world();
+//! let height = world.rigid().unwrap().position(cube).unwrap().y;
+//! assert!(height > Fx::from_int(1), "half a second after the kick, the cube is up: {height}");
+//! println!("checksum: {}", hex(world.checksum().total)); // the same bits on every machine
+//!
+//! // One error type for reading and building: file, line, field.
+//! let error = parse_scene::<Fx>("(name: \"bad\", tick_rate: 0)", "bad.ron")?
+//!     .build()
+//!     .expect_err("a tick rate of 0 is refused");
+//! assert_eq!(error.field, "tick_rate");
+//! # Ok::<(), SceneError>(())
 //! ```
 
 // The modules' documentation describes the engine's internals for its developers and links
@@ -66,6 +99,7 @@ pub mod codec;
 pub mod fluid;
 pub mod math;
 pub mod particles;
+pub mod prelude;
 pub mod replay;
 pub mod rigid;
 pub mod scene;
