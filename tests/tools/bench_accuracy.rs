@@ -12,7 +12,8 @@ use fixstep_bench::elliptic::pendulum_period;
 use fixstep_bench::exact::{damped_displacement, harmonic_displacement, projectile_position};
 use fixstep_bench::kepler_equation::kepler_position;
 use fixstep_bench::{
-    AccuracyConfig, AccuracyRow, NumberFormat, OrderRow, Problem, measured_orders, run_accuracy,
+    AccuracyConfig, AccuracyRow, Distrust, NumberFormat, OrderRow, Problem, measured_orders,
+    run_accuracy,
 };
 
 /// `damped_oscillator_reference.csv`, columns `t` and `zeta=0.1` (ω₀ = 1, x(0) = 1, v(0) = 0).
@@ -167,6 +168,69 @@ fn quick_sweep_measures_the_theoretical_orders_in_f64() {
     );
 }
 
+/// f64 rows of one problem and scheme with these errors at h = 2⁻¹ … s (observables of 0,
+/// so that the f64 rounding bound counts every point).
+fn synthetic_rows(errors: &[f64]) -> Vec<AccuracyRow> {
+    (1u32..)
+        .zip(errors)
+        .map(|(k, &error)| AccuracyRow {
+            problem: Problem::Harmonic,
+            integrator: Integrator::VelocityVerlet,
+            format: NumberFormat::F64,
+            log2_inverse_step: k,
+            dt: 0.5f64.powi(k as i32),
+            steps: 1 << k,
+            error,
+            seconds: 0.0,
+            observable: [0.0; 3],
+        })
+        .collect()
+}
+
+/// Why the order measured over `errors` is not trusted, or `None`, with the order.
+fn verdict(errors: &[f64]) -> (f64, Option<Distrust>) {
+    let orders = measured_orders(&synthetic_rows(errors));
+    let measured = orders[0].measured.expect("two points at least");
+    (measured.order, measured.distrust)
+}
+
+#[test]
+fn an_order_is_trusted_only_when_the_data_show_one_power_of_the_step() {
+    // Halving the step quarters the error: order 2, trusted.
+    let (order, distrust) = verdict(&[1e-2, 2.5e-3, 6.25e-4, 1.5625e-4]);
+    assert!(
+        (order - 2.0).abs() < 1e-9 && distrust.is_none(),
+        "{order} {distrust:?}"
+    );
+    // Two points are a slope, not an order.
+    assert_eq!(verdict(&[1e-2, 2.5e-3]).1, Some(Distrust::TooFewPoints(2)));
+    // The error stops falling at h = 2⁻³: the rounding floor.
+    assert_eq!(
+        verdict(&[1e-2, 2.5e-3, 3e-3, 1e-3]).1,
+        Some(Distrust::ErrorStopsFalling {
+            log2_inverse_step: 3
+        })
+    );
+    // Slopes 1, 3, 5 average to 3 but are no power of h.
+    let (order, distrust) = verdict(&[1.0, 0.5, 0.0625, 0.001953125]);
+    assert!((order - 3.0).abs() < 0.01, "{order}");
+    match distrust {
+        Some(Distrust::ScatteredSlopes { least, greatest }) => {
+            assert!((least - 1.0).abs() < 1e-9 && (greatest - 5.0).abs() < 1e-9)
+        }
+        other => panic!("{other:?}"),
+    }
+    let text = Distrust::ScatteredSlopes {
+        least: 1.0,
+        greatest: 5.0,
+    }
+    .to_string();
+    assert_eq!(
+        text,
+        "slopes between halvings range from 1.00 to 5.00, not one power of dt"
+    );
+}
+
 /// A coarser ulp cannot give a smaller error floor: for every problem the best I32F32 error
 /// (ulp 2⁻³²) is below the best I48F16 error (ulp 2⁻¹⁶). Four halvings of the harmonic
 /// and projectile problems keep this fast.
@@ -230,6 +294,28 @@ fn command_writes_the_csv_and_the_svg_and_prints_the_orders() {
     for integrator in Integrator::ALL {
         assert!(run.stdout.contains(integrator.name()), "{}", run.stdout);
     }
+    // The 90° pendulum's period under semi-implicit Euler falls by 3.2 to 5.6 powers of dt
+    // from one halving to the next: flagged with its reason, not printed as an order.
+    let row = run
+        .stdout
+        .lines()
+        .find(|line| line.starts_with("pendulum    SemiImplicitEuler"))
+        .expect("the pendulum row");
+    let f64_cell = row.split_whitespace().nth(3).expect("the f64 cell");
+    assert_eq!(f64_cell, "untrusted", "{row}");
+    assert!(
+        run.stdout.lines().any(|line| line
+            .contains("pendulum SemiImplicitEuler f64: untrusted: slopes between halvings")),
+        "{}",
+        run.stdout
+    );
+    // A clean order stays a result.
+    let row = run
+        .stdout
+        .lines()
+        .find(|line| line.starts_with("harmonic    VelocityVerlet"))
+        .expect("the harmonic row");
+    assert!(row.contains(" 2.00 ["), "{row}");
     let leftovers: Vec<_> = std::fs::read_dir(dir.path())
         .expect("read the output directory")
         .map(|entry| entry.expect("entry").file_name())

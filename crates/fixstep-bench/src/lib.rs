@@ -33,7 +33,7 @@ pub mod stability;
 pub mod sweep;
 
 pub use format::NumberFormat;
-pub use order::{MeasuredOrder, OrderRow, measured_orders};
+pub use order::{Distrust, MeasuredOrder, OrderRow, measured_orders};
 pub use plot::work_precision_svg;
 pub use problems::{Outcome, Problem};
 pub use report::{accuracy_csv, floors_table, orders_table, stability_csv, stability_table};

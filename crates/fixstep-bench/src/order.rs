@@ -17,6 +17,15 @@
 //! Among the points that count, the order is the least-squares slope over the finest
 //! [`FIT_POINTS`] consecutive ones (the coarsest steps can still be outside the asymptotic
 //! range, as explicit Euler on the Kepler orbit is).
+//!
+//! # Which orders are trusted
+//!
+//! A slope is a result only when the data show one power of the step: at least
+//! [`MIN_TRUSTED_POINTS`] points, an error that falls at every halving, and slopes between
+//! neighbouring points within [`MAX_SLOPE_SPREAD`] of each other. Otherwise the order is
+//! [`Distrust`]ed, with the reason (the period of semi-implicit Euler on the 90° pendulum,
+//! whose h² term cancels, gives slopes from 3.2 to 5.6 between halvings; RK4 in I32F32
+//! reaches the rounding floor after two points).
 
 use super::format::NumberFormat;
 use super::problems::Problem;
@@ -31,6 +40,54 @@ pub const ROUNDING_FRACTION: f64 = 0.05;
 /// The slope is fitted over at most this many consecutive points (three halvings).
 pub const FIT_POINTS: usize = 4;
 
+/// A fit over fewer points than this is not trusted.
+pub const MIN_TRUSTED_POINTS: usize = 3;
+
+/// A fit whose slopes between neighbouring points differ by more than this is not trusted:
+/// twice the most rounding may move one slope (0.14, see [`ROUNDING_FRACTION`]), and a
+/// margin.
+pub const MAX_SLOPE_SPREAD: f64 = 0.3;
+
+/// Why a measured slope is not a trustworthy order of convergence.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Distrust {
+    /// Fewer than [`MIN_TRUSTED_POINTS`] consecutive steps had an error clear of rounding.
+    TooFewPoints(usize),
+    /// The error did not fall when the step was halved to 2^−k s: the rounding floor.
+    ErrorStopsFalling {
+        /// k of the finer step.
+        log2_inverse_step: u32,
+    },
+    /// The slopes between neighbouring points disagree: the error is not one power of the
+    /// step there.
+    ScatteredSlopes {
+        /// The least slope between two neighbouring points.
+        least: f64,
+        /// The greatest.
+        greatest: f64,
+    },
+}
+
+impl core::fmt::Display for Distrust {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::TooFewPoints(n) => write!(
+                f,
+                "only {n} steps clear of rounding (at least {MIN_TRUSTED_POINTS} needed)"
+            ),
+            Self::ErrorStopsFalling { log2_inverse_step } => write!(
+                f,
+                "the error stops falling at dt = 2^-{log2_inverse_step} s (rounding floor)"
+            ),
+            Self::ScatteredSlopes { least, greatest } => write!(
+                f,
+                "slopes between halvings range from {least:.2} to {greatest:.2}, not one power \
+                 of dt"
+            ),
+        }
+    }
+}
+
 /// A measured order and the steps it was measured over (h = 2^−k s).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MeasuredOrder {
@@ -40,6 +97,8 @@ pub struct MeasuredOrder {
     pub coarsest_log2_inverse_step: u32,
     /// k of the finest step in the fit.
     pub finest_log2_inverse_step: u32,
+    /// Why the slope is not a trustworthy order, if it is not.
+    pub distrust: Option<Distrust>,
 }
 
 /// The measured order of one problem × integrator × format, if at least two consecutive
@@ -110,7 +169,7 @@ fn rounding_error(row: &AccuracyRow, rows: &[AccuracyRow]) -> f64 {
 }
 
 /// The least-squares slope of ln error against ln h over the finest [`FIT_POINTS`] points
-/// of the finest run of at least two consecutive counted points.
+/// of the finest run of at least two consecutive counted points, and whether to trust it.
 fn fit(group: &[AccuracyRow], counted: &[bool]) -> Option<MeasuredOrder> {
     let finest = counted.windows(2).rposition(|pair| pair[0] && pair[1])? + 1;
     let mut first = finest;
@@ -130,5 +189,26 @@ fn fit(group: &[AccuracyRow], counted: &[bool]) -> Option<MeasuredOrder> {
         order: covariance / variance,
         coarsest_log2_inverse_step: group[first].log2_inverse_step,
         finest_log2_inverse_step: group[finest].log2_inverse_step,
+        distrust: distrust(&group[first..=finest], &points),
     })
+}
+
+/// Why the fit over `rows` (ln h, ln error in `points`) is not to be trusted, if it is not;
+/// the reasons are tried in the order of [`Distrust`]'s variants.
+fn distrust(rows: &[AccuracyRow], points: &[(f64, f64)]) -> Option<Distrust> {
+    if points.len() < MIN_TRUSTED_POINTS {
+        return Some(Distrust::TooFewPoints(points.len()));
+    }
+    let slopes: Vec<f64> = points
+        .windows(2)
+        .map(|p| (p[1].1 - p[0].1) / (p[1].0 - p[0].0))
+        .collect();
+    if let Some(i) = slopes.iter().position(|&slope| slope <= 0.0) {
+        return Some(Distrust::ErrorStopsFalling {
+            log2_inverse_step: rows[i + 1].log2_inverse_step,
+        });
+    }
+    let least = slopes.iter().copied().fold(f64::INFINITY, f64::min);
+    let greatest = slopes.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    (greatest - least > MAX_SLOPE_SPREAD).then_some(Distrust::ScatteredSlopes { least, greatest })
 }

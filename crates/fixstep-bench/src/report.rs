@@ -17,10 +17,12 @@ pub fn accuracy_csv(rows: &[AccuracyRow]) -> String {
 }
 
 /// The measured orders as a table: one line per problem × integrator, one column per
-/// format (in [`NumberFormat::ALL`] order).
+/// format (in [`NumberFormat::ALL`] order). An order that cannot be trusted
+/// ([`Distrust`](super::order::Distrust)) reads `untrusted (n)` and note n, after the
+/// table, says why.
 pub fn orders_table(orders: &[OrderRow]) -> Vec<String> {
     let mut lines = vec![
-        "measured order p (slope of log error vs log dt; in brackets the fitted steps, dt = 2^-k s for k in a..b; - where rounding dominates every step)".to_owned(),
+        "measured order p (slope of log error vs log dt; in brackets the fitted steps, dt = 2^-k s for k in a..b; - where rounding dominates every step; untrusted (n): see note n)".to_owned(),
         format!(
             "{:<11} {:<18} {:>8} {}",
             "problem",
@@ -29,16 +31,32 @@ pub fn orders_table(orders: &[OrderRow]) -> Vec<String> {
             format_columns(|format| format!("{:>15}", format.name()))
         ),
     ];
+    let mut notes = Vec::new();
     for group in orders.chunk_by(|a, b| (a.problem, a.integrator) == (b.problem, b.integrator)) {
         let first = group[0];
         let cells = format_columns(|format| {
             let cell = match group.iter().find(|o| o.format == format) {
                 Some(OrderRow {
                     measured: Some(m), ..
-                }) => format!(
-                    "{:.2} [{}..{}]",
-                    m.order, m.coarsest_log2_inverse_step, m.finest_log2_inverse_step
-                ),
+                }) => {
+                    let fit = format!(
+                        "{:.2} [{}..{}]",
+                        m.order, m.coarsest_log2_inverse_step, m.finest_log2_inverse_step
+                    );
+                    match m.distrust {
+                        None => fit,
+                        Some(reason) => {
+                            notes.push(format!(
+                                "({}) {} {} {}: untrusted: {reason} (the fit gives {fit})",
+                                notes.len() + 1,
+                                first.problem.name(),
+                                first.integrator.name(),
+                                format.name()
+                            ));
+                            format!("untrusted ({})", notes.len())
+                        }
+                    }
+                }
                 Some(_) => "-".to_owned(),
                 None => String::new(),
             };
@@ -51,6 +69,13 @@ pub fn orders_table(orders: &[OrderRow]) -> Vec<String> {
             first.integrator.order()
         ));
     }
+    lines.push(
+        "expected: the order for forces of position only; with velocity-dependent forces \
+         (damped, projectile) VelocityVerlet and Leapfrog are first order, and for the pendulum's \
+         period SemiImplicitEuler and Leapfrog at least second order (docs/ACCURACY.md)"
+            .to_owned(),
+    );
+    lines.extend(notes);
     lines
 }
 
@@ -142,7 +167,7 @@ pub fn stability_table(rows: &[StabilityRow]) -> Vec<String> {
 }
 
 /// One cell per format of [`NumberFormat::ALL`], joined by spaces.
-fn format_columns(cell: impl Fn(NumberFormat) -> String) -> String {
+fn format_columns(mut cell: impl FnMut(NumberFormat) -> String) -> String {
     NumberFormat::ALL
         .iter()
         .map(|&format| cell(format))
