@@ -2,7 +2,7 @@
 //!
 //! GGRS's own `UdpNonBlockingSocket` always binds 0.0.0.0; a peer whose remotes are all on
 //! loopback binds 127.0.0.1 instead, so that a local session is not reachable from the
-//! network. The same socket carries the [handshake](super::handshake) before the session,
+//! network. The same socket carries the [handshake](mod@super::handshake) before the session,
 //! and answers a late remote's handshake messages during it.
 
 use std::io::ErrorKind;
