@@ -8,6 +8,7 @@
 //! from the start; the example asserts it.
 
 use fixstep::math::{Fx, Real, Vec3};
+use fixstep::replay::scene_id;
 use fixstep::scene::parse_scene;
 use fixstep::world::{
     Command, Handle, PlayerInput, Target, TickInput, World, decode_snapshot, encode_snapshot,
@@ -135,10 +136,16 @@ fn main() {
 
     // A snapshot can also leave the process (save games, late joiners, bug reports): encode
     // it to bytes, decode it, and it restores the same state.
-    let bytes = encode_snapshot(&world.snapshot()).expect("the state encodes");
+    // The file names its scene, so that it is never restored into another one.
+    let id = scene_id(&scene).expect("the arena encodes");
+    let bytes = encode_snapshot(&world.snapshot(), &id).expect("the state encodes");
     let decoded = decode_snapshot::<Fx>(&bytes).expect("the bytes decode");
+    decoded
+        .scene
+        .check_same(&id)
+        .expect("the arena's own snapshot");
     let mut copy = scene.build().expect("the arena builds");
-    copy.restore(&decoded);
+    copy.restore(&decoded.state);
 
     let expected = straight.checksum().total;
     let got = world.checksum().total;

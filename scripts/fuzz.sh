@@ -7,8 +7,8 @@
 #                                         target for SECONDS
 #   scripts/fuzz.sh run TARGET [SECONDS]  fuzz one target (default: until stopped)
 #
-# Targets: mesh_obj, replay_decode, scene_ron, snapshot_decode, world_step (see
-# fuzz/src/lib.rs).
+# Targets: handshake_decode (fuzz_targets/handshake_decode.rs), mesh_obj, replay_decode,
+# scene_ron, snapshot_decode, world_step (see fuzz/src/lib.rs).
 # The working corpus is fuzz/corpus/TARGET (not committed), started from fuzz/seeds/TARGET.
 # A crash lands in fuzz/artifacts/TARGET/; once fixed, copy it to fuzz/regressions/TARGET/,
 # where `cargo test --test suite fuzz_regressions::` runs it for ever after.
@@ -21,7 +21,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-TARGETS=(mesh_obj replay_decode scene_ron snapshot_decode world_step)
+TARGETS=(handshake_decode mesh_obj replay_decode scene_ron snapshot_decode world_step)
 
 # libFuzzer's instrumentation, as cargo-fuzz 0.13 sets it by default on Linux.
 FUZZ_RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4
@@ -62,6 +62,8 @@ seeds() {
       "$bin" run "$name" --ticks "$ticks" --snapshot "fuzz/seeds/snapshot_decode/$name-$ticks" >/dev/null
     done
   done
+  cargo run --release --quiet -p fixstep-net --example handshake_seeds -- \
+    fuzz/seeds/handshake_decode
   echo "seeds: $(find fuzz/seeds -type f | wc -l) files in fuzz/seeds/"
 }
 

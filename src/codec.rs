@@ -77,6 +77,86 @@ fn describe(error: bincode::error::DecodeError) -> String {
         E::Utf8 { .. } => "a string is not valid UTF-8".to_owned(),
         E::InvalidBooleanValue(v) => format!("invalid boolean byte {v}"),
         E::OutsideUsizeRange(v) => format!("length {v} is out of range"),
-        other => other.to_string(),
+        E::InvalidCharEncoding(bytes) => format!("invalid character bytes {bytes:02x?}"),
+        E::ArrayLengthMismatch { required, found } => {
+            format!("an array of {found} elements where {required} are required")
+        }
+        E::EmptyEnum { type_name } => format!("{type_name} has no variants to decode"),
+        E::Other(text) => text.to_owned(),
+        E::OtherString(text) => readable_serde_error(&text),
+        other => format!("not a valid encoding ({other:?})"),
+    }
+}
+
+/// serde's message for a value out of range, with the wording of the other decode errors:
+/// "invalid value: integer `1200`, expected variant index 0 <= i < 7" becomes "invalid
+/// variant index 1200 (expected 0 to 6)". Other messages are already plain text (they
+/// come from serde or from the engine's own checks) and are kept.
+fn readable_serde_error(text: &str) -> String {
+    let variant = text
+        .strip_prefix("invalid value: integer `")
+        .and_then(|rest| rest.split_once("`, expected variant index 0 <= i < "));
+    if let Some((found, count)) = variant
+        && let Ok(count) = count.parse::<u64>()
+        && count > 0
+    {
+        return format!(
+            "invalid variant index {found} (expected 0 to {})",
+            count - 1
+        );
+    }
+    text.to_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde::Deserialize;
+
+    #[derive(Debug, Deserialize)]
+    enum Three {
+        A,
+        B,
+        C,
+    }
+
+    #[test]
+    fn an_out_of_range_variant_index_reads_as_text() {
+        let error = decode_exact::<Three>(&1200u32.to_le_bytes()).expect_err("no variant 1200");
+        assert_eq!(error.0, "invalid variant index 1200 (expected 0 to 2)");
+        assert!(matches!(
+            decode_exact::<Three>(&2u32.to_le_bytes()),
+            Ok(Three::C)
+        ));
+        assert!(matches!(
+            decode_exact::<Three>(&0u32.to_le_bytes()),
+            Ok(Three::A)
+        ));
+        assert!(matches!(
+            decode_exact::<Three>(&1u32.to_le_bytes()),
+            Ok(Three::B)
+        ));
+    }
+
+    /// A value whose own check refuses odd numbers (a serde custom error).
+    #[derive(Debug, Deserialize)]
+    #[serde(try_from = "u32")]
+    struct Even(#[allow(dead_code)] u32);
+
+    impl TryFrom<u32> for Even {
+        type Error = String;
+        fn try_from(value: u32) -> Result<Self, String> {
+            if value.is_multiple_of(2) {
+                Ok(Self(value))
+            } else {
+                Err(format!("{value} is odd"))
+            }
+        }
+    }
+
+    #[test]
+    fn a_custom_message_keeps_its_text_without_the_wrapper() {
+        let error = decode_exact::<Even>(&3u32.to_le_bytes()).expect_err("odd");
+        assert_eq!(error.0, "3 is odd");
     }
 }

@@ -10,7 +10,7 @@
 use fixstep::codec;
 use fixstep::fluid::FluidSystem;
 use fixstep::math::{Fx, Real};
-use fixstep::replay::{InputFeed, Replay, scene_section, verify};
+use fixstep::replay::{InputFeed, Replay, scene_id, scene_section, verify};
 use fixstep::scene::parse_scene;
 use fixstep::world::{TickInput, World, decode_snapshot, encode_snapshot};
 
@@ -139,12 +139,13 @@ pub fn mesh_obj(data: &[u8]) -> bool {
 /// A snapshot file's bytes: decoding never panics; an accepted snapshot encodes back to the
 /// same bytes and continues without a panic.
 pub fn snapshot_decode(data: &[u8]) -> bool {
-    let Ok(state) = decode_snapshot::<Fx>(data) else {
+    let Ok(snapshot) = decode_snapshot::<Fx>(data) else {
         return false;
     };
-    let again = encode_snapshot(&state).expect("an accepted snapshot encodes");
+    let again =
+        encode_snapshot(&snapshot.state, &snapshot.scene).expect("an accepted snapshot encodes");
     assert_eq!(again, data, "an accepted snapshot has exactly one encoding");
-    run(World::from_state(state), &[], MAX_TICKS / 8);
+    run(World::from_state(snapshot.state), &[], MAX_TICKS / 8);
     true
 }
 
@@ -191,8 +192,11 @@ pub fn world_step(data: &[u8]) -> bool {
     };
     let half = run_part(&mut world, 0, MAX_TICKS / 2);
     assert_unit_orientations(&world);
-    let bytes = encode_snapshot(&world.snapshot()).expect("a running world encodes");
-    let snapshot = decode_snapshot::<Fx>(&bytes).expect("a running world's snapshot is valid");
+    let id = scene_id(&scene).expect("a decoded scene encodes");
+    let bytes = encode_snapshot(&world.snapshot(), &id).expect("a running world encodes");
+    let snapshot = decode_snapshot::<Fx>(&bytes)
+        .expect("a running world's snapshot is valid")
+        .state;
     let end_tick = run_part(&mut world, half, MAX_TICKS);
     assert_unit_orientations(&world);
     let end = world.checksum();

@@ -8,8 +8,6 @@
 //! by element, so a bogus count runs out of section bytes instead of memory.
 
 use core::num::NonZeroU32;
-use std::fs::File;
-use std::io::Read;
 use std::path::Path;
 
 use serde::de::DeserializeOwned;
@@ -23,6 +21,7 @@ use super::scene_section::{SceneSectionError, decode_scene};
 use crate::codec::{self, CodecError, SIZE_LIMIT};
 use crate::math::{Fx, Real};
 use crate::scene::Scene;
+use crate::types::{InputFileError, read_input_file};
 use crate::world::{STATE_VERSION, TickInput};
 
 /// The largest file accepted: three sections at the codec limit plus room for the header.
@@ -77,35 +76,16 @@ impl Replay {
 
 /// Reads a whole regular file of at most [`MAX_FILE_LEN`] bytes.
 fn read_file(path: &Path, origin: &str) -> Result<Vec<u8>, ReplayError> {
-    let unreadable = |why: String| ReplayError::new(origin, ReplayErrorKind::Unreadable(why));
-    let file = File::open(path).map_err(|e| unreadable(e.to_string()))?;
-    let metadata = file.metadata().map_err(|e| unreadable(e.to_string()))?;
-    if metadata.is_dir() {
-        return Err(unreadable("is a directory, not a replay file".to_owned()));
-    }
-    if !metadata.is_file() {
-        return Err(unreadable("not a regular file".to_owned()));
-    }
-    let too_large = |len: u64| {
-        ReplayError::new(
-            origin,
-            ReplayErrorKind::TooLarge {
-                len,
-                limit: MAX_FILE_LEN,
-            },
-        )
-    };
-    if metadata.len() > MAX_FILE_LEN {
-        return Err(too_large(metadata.len()));
-    }
-    let mut bytes = Vec::new();
-    file.take(MAX_FILE_LEN + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| unreadable(e.to_string()))?;
-    if bytes.len() as u64 > MAX_FILE_LEN {
-        return Err(too_large(bytes.len() as u64));
-    }
-    Ok(bytes)
+    read_input_file(path, MAX_FILE_LEN, "a replay file").map_err(|e| {
+        let kind = match e {
+            InputFileError::TooLarge { len, limit, .. } => ReplayErrorKind::TooLarge { len, limit },
+            InputFileError::Unreadable(why) => ReplayErrorKind::Unreadable(why),
+            other @ InputFileError::NotAFile { .. } => {
+                ReplayErrorKind::Unreadable(other.to_string())
+            }
+        };
+        ReplayError::new(origin, kind)
+    })
 }
 
 /// The bytes of one file being decoded, and their name for messages.

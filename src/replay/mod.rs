@@ -13,6 +13,7 @@ mod feed;
 mod file;
 pub mod format;
 mod record;
+mod scene_id;
 pub mod scene_section;
 mod verify;
 
@@ -23,4 +24,5 @@ pub use feed::InputFeed;
 pub use file::Replay;
 pub use format::{Checkpoint, ReplayHeader, Section, content_hash};
 pub use record::{DEFAULT_CHECKSUM_EVERY, Recorder, record, rerecord};
+pub use scene_id::scene_id;
 pub use verify::{VerifyOutcome, verify};

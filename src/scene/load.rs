@@ -7,7 +7,7 @@ use ron::extensions::Extensions;
 use super::description::Scene;
 use crate::math::Real;
 use crate::rigid::shape_serde::with_scene_directory;
-use crate::types::SceneError;
+use crate::types::{MAX_INPUT_FILE_LEN, SceneError, read_input_file};
 
 /// Parses a scene from RON text. `origin` names the file in error messages, which give the
 /// line and column where reading stopped.
@@ -22,19 +22,13 @@ pub fn parse_scene<R: Real>(text: &str, origin: &str) -> Result<Scene<R>, SceneE
     })
 }
 
-/// Reads and parses a scene file, and checks that it builds a world. Mesh files
-/// (`TriMesh(file: ...)`) are named relative to the scene file's directory. Every error
-/// names the file.
+/// Reads and parses a scene file (a regular file of at most [`MAX_INPUT_FILE_LEN`] bytes),
+/// and checks that it builds a world. Mesh files (`TriMesh(file: ...)`) are named relative
+/// to the scene file's directory. Every error names the file.
 pub fn load_scene_file<R: Real>(path: &Path) -> Result<Scene<R>, SceneError> {
     let origin = path.display().to_string();
-    if path.is_dir() {
-        return Err(SceneError::in_file(
-            origin,
-            "is a directory, not a scene file",
-        ));
-    }
-    let bytes = std::fs::read(path)
-        .map_err(|e| SceneError::in_file(&origin, format!("cannot read: {e}")))?;
+    let bytes = read_input_file(path, MAX_INPUT_FILE_LEN, "a scene file")
+        .map_err(|e| SceneError::in_file(&origin, e.to_string()))?;
     let text = String::from_utf8(bytes).map_err(|e| {
         SceneError::in_file(
             &origin,

@@ -10,6 +10,7 @@
 pub mod build_error;
 pub mod command;
 pub mod handle;
+pub mod input_file;
 pub mod lattice;
 pub mod metrics;
 pub mod part;
@@ -20,6 +21,7 @@ pub mod subsystem;
 pub use build_error::SceneError;
 pub use command::{Command, PlayerInput, Target, TickInput};
 pub use handle::Handle;
+pub use input_file::{InputFileError, MAX_INPUT_FILE_LEN, read_input_file};
 pub use lattice::lattice_copies;
 pub use metrics::Metrics;
 pub use part::Part;

@@ -7,6 +7,7 @@ mod fluid_coupling;
 mod particle_coupling;
 mod pipeline;
 mod queries;
+pub mod scene_id;
 pub mod snapshot;
 pub(crate) mod soft_coupling;
 pub mod stage;
@@ -16,7 +17,8 @@ pub use checksum::Checksum;
 pub use difference::{Difference, first_difference};
 pub use divergence::Divergence;
 pub use pipeline::{ObjectDigests, STATE_VERSION, Settings, TickReport, World, WorldState};
-pub use snapshot::{SnapshotError, decode_snapshot, encode_snapshot};
+pub use scene_id::SceneId;
+pub use snapshot::{MAX_SNAPSHOT_LEN, Snapshot, SnapshotError, decode_snapshot, encode_snapshot};
 pub use stage::StageTimings;
 pub use timestep::FixedTimestep;
 

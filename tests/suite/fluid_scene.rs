@@ -3,6 +3,7 @@
 
 use fixstep::fluid::{FluidBlock, FluidBox, FluidSolver};
 use fixstep::math::{Fx, Real, Vec3};
+use fixstep::replay::scene_id;
 use fixstep::scene::Scene;
 use fixstep::world::{Part, TickInput, decode_snapshot, encode_snapshot};
 use fixstep_scenes::builtin_scene;
@@ -82,8 +83,9 @@ fn snapshot_mid_run_continues_with_the_same_checksums() {
         straight.step(&empty);
         resumed.step(&empty);
     }
-    let bytes = encode_snapshot(&resumed.snapshot()).expect("encodes");
-    let state = decode_snapshot::<Fx>(&bytes).expect("decodes");
+    let bytes =
+        encode_snapshot(&resumed.snapshot(), &scene_id(&scene).expect("id")).expect("encodes");
+    let state = decode_snapshot::<Fx>(&bytes).expect("decodes").state;
     let mut restored = fixstep::world::World::from_state(state);
     for _ in 0..3 {
         straight.step(&empty);

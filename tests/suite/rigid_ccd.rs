@@ -5,7 +5,7 @@
 use std::num::NonZeroU32;
 
 use fixstep::math::{Fx, Real, Vec3};
-use fixstep::replay::{VerifyOutcome, record, verify};
+use fixstep::replay::{VerifyOutcome, record, scene_id, verify};
 use fixstep::rigid::{BodyDesc, RigidDesc, Shape};
 use fixstep::scene::Scene;
 use fixstep::world::snapshot::{decode_snapshot, encode_snapshot};
@@ -89,13 +89,18 @@ fn restored_matches(scene: &Scene<Fx>, host: &Scene<Fx>, at: u64) {
     let mut saved = None;
     for tick in 0..scene.ticks {
         if tick == at {
-            saved = Some(encode_snapshot(&world.snapshot()).expect("encodes"));
+            let id = scene_id(scene).expect("id");
+            saved = Some(encode_snapshot(&world.snapshot(), &id).expect("encodes"));
         }
         world.step(&empty);
         straight.push(world.checksum().total);
     }
     let mut world = host.build().expect("builds");
-    world.restore(&decode_snapshot(&saved.expect("saved")).expect("decodes"));
+    world.restore(
+        &decode_snapshot(&saved.expect("saved"))
+            .expect("decodes")
+            .state,
+    );
     let resumed: Vec<u64> = (at..scene.ticks)
         .map(|_| {
             world.step(&empty);

@@ -895,6 +895,7 @@ fn ragdolls_come_to_rest_on_the_stairs() {
 /// uninterrupted world: the joints' impulses and motors are part of the state.
 #[test]
 fn a_snapshot_with_joints_continues_exactly() {
+    use fixstep::replay::scene_id;
     use fixstep::world::{decode_snapshot, encode_snapshot};
     let scene = builtin_scene::<Fx>("ragdolls").expect("built in");
     let mut whole = scene.build().expect("builds");
@@ -905,9 +906,9 @@ fn a_snapshot_with_joints_continues_exactly() {
     for _ in 0..90 {
         step(&mut half);
     }
-    let bytes = encode_snapshot(&half.snapshot()).expect("encodes");
+    let bytes = encode_snapshot(&half.snapshot(), &scene_id(&scene).expect("id")).expect("encodes");
     let mut resumed = scene.build().expect("builds");
-    resumed.restore(&decode_snapshot::<Fx>(&bytes).expect("decodes"));
+    resumed.restore(&decode_snapshot::<Fx>(&bytes).expect("decodes").state);
     for _ in 90..150 {
         step(&mut resumed);
     }

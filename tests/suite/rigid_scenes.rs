@@ -496,12 +496,14 @@ fn commands_wake_push_and_remove_bodies() {
 /// restores to a world that continues with the same checksums as the original.
 #[test]
 fn snapshots_carry_contacts_and_sleep() {
+    use fixstep::replay::scene_id;
     use fixstep::world::{decode_snapshot, encode_snapshot};
     let scene = builtin_scene::<Fx>("stack").expect("stack");
     let mut world = world_of(&scene);
     run(&mut world, 45);
-    let bytes = encode_snapshot(&world.snapshot()).expect("encodes");
-    let state = decode_snapshot::<Fx>(&bytes).expect("decodes");
+    let bytes =
+        encode_snapshot(&world.snapshot(), &scene_id(&scene).expect("id")).expect("encodes");
+    let state = decode_snapshot::<Fx>(&bytes).expect("decodes").state;
     let mut resumed = World::from_state(state);
     for _ in 0..120 {
         run(&mut world, 1);

@@ -2,7 +2,7 @@
 //! continues bit for bit.
 
 use fixstep::math::Fx;
-use fixstep::replay::InputFeed;
+use fixstep::replay::{InputFeed, scene_id};
 use fixstep::world::{World, decode_snapshot, encode_snapshot};
 use fixstep_scenes::builtin_scene;
 
@@ -20,11 +20,12 @@ fn curtain_continues_bit_for_bit_from_a_snapshot() {
     let mut straight = scene.build().expect("valid");
     let mut feed = InputFeed::new(&scene.script);
     run_to(&mut straight, &mut feed, 75);
-    let bytes = encode_snapshot(&straight.snapshot()).expect("encodes");
+    let bytes =
+        encode_snapshot(&straight.snapshot(), &scene_id(&scene).expect("id")).expect("encodes");
     run_to(&mut straight, &mut feed, 150);
 
     let mut resumed = scene.build().expect("valid");
-    resumed.restore(&decode_snapshot::<Fx>(&bytes).expect("decodes"));
+    resumed.restore(&decode_snapshot::<Fx>(&bytes).expect("decodes").state);
     let mut feed = InputFeed::new(&scene.script);
     run_to(&mut resumed, &mut feed, 150);
     assert_eq!(resumed.checksum(), straight.checksum());

@@ -521,3 +521,17 @@ fn differing_object_digest_names_the_object() {
     assert_eq!(run.stdout.trim_end(), expected);
     assert_eq!(*part, fixstep::world::Part::Particles);
 }
+
+#[test]
+fn a_part_index_out_of_range_in_the_checksums_reads_as_words() {
+    let (mut bytes, layout) = layout();
+    // The first checkpoint: tick, total, the parts' count, then the first part's index.
+    let part_at = layout.checkpoints[0] + 24;
+    bytes[part_at..part_at + 4].copy_from_slice(&1200u32.to_le_bytes());
+    let expected = format!(
+        "checksums section at byte offset {}: does not decode: invalid variant index 1200 \
+         (expected 0 to 4)",
+        layout.checksums
+    );
+    assert_rejected(&bytes, &[&expected]);
+}

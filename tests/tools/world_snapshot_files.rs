@@ -4,9 +4,9 @@
 
 use crate::replay_support::{TempPath, fixstep};
 use fixstep::math::{Fx, FxI48F16};
-use fixstep::replay::InputFeed;
+use fixstep::replay::{InputFeed, scene_id};
 use fixstep::world::snapshot::{SNAPSHOT_FORMAT_VERSION, SNAPSHOT_MAGIC};
-use fixstep::world::{STATE_VERSION, World, WorldState, decode_snapshot, encode_snapshot};
+use fixstep::world::{STATE_VERSION, SceneId, World, WorldState, decode_snapshot, encode_snapshot};
 use fixstep_scenes::builtin_scene;
 
 /// The `fountain` world after `ticks` ticks of its script.
@@ -20,12 +20,19 @@ fn fountain_after(ticks: u64) -> World<Fx> {
     world
 }
 
+/// The `fountain` scene's name and hash.
+fn fountain_id() -> SceneId {
+    scene_id(&builtin_scene("fountain").expect("built in")).expect("encodes")
+}
+
 fn snapshot_bytes(ticks: u64) -> Vec<u8> {
-    encode_snapshot(&fountain_after(ticks).snapshot()).expect("encodes")
+    encode_snapshot(&fountain_after(ticks).snapshot(), &fountain_id()).expect("encodes")
 }
 
 fn decode(bytes: &[u8]) -> Result<WorldState<Fx>, String> {
-    decode_snapshot::<Fx>(bytes).map_err(|e| e.to_string())
+    decode_snapshot::<Fx>(bytes)
+        .map(|snapshot| snapshot.state)
+        .map_err(|e| e.to_string())
 }
 
 /// Replaces the trailing hash so that the rest of the checks run.
@@ -56,7 +63,8 @@ fn a_decoded_snapshot_continues_exactly_like_the_uninterrupted_world() {
 #[test]
 fn encode_decode_encode_is_byte_identical() {
     let bytes = snapshot_bytes(75);
-    let again = encode_snapshot(&decode(&bytes).expect("decodes")).expect("encodes");
+    let again =
+        encode_snapshot(&decode(&bytes).expect("decodes"), &fountain_id()).expect("encodes");
     assert_eq!(bytes, again);
 }
 
@@ -68,6 +76,27 @@ fn the_header_is_as_documented() {
     assert_eq!(bytes[12..16], STATE_VERSION.to_le_bytes());
     assert_eq!(bytes[16..24], 6u64.to_le_bytes());
     assert_eq!(&bytes[24..30], b"I32F32");
+    assert_eq!(bytes[30..38], 8u64.to_le_bytes());
+    assert_eq!(&bytes[38..46], b"fountain");
+    assert_eq!(bytes[46..54], fountain_id().hash.to_le_bytes());
+    let snapshot = decode_snapshot::<Fx>(&bytes).expect("decodes");
+    assert_eq!(snapshot.scene, fountain_id());
+}
+
+#[test]
+fn an_older_format_version_is_refused_naming_both_versions() {
+    let mut bytes = snapshot_bytes(1);
+    let older = SNAPSHOT_FORMAT_VERSION - 1;
+    bytes[8..12].copy_from_slice(&older.to_le_bytes());
+    rehash(&mut bytes);
+    let error = decode(&bytes).expect_err("older format");
+    assert_eq!(
+        error,
+        format!(
+            "at byte 8: snapshot format version {older}; this build reads version \
+             {SNAPSHOT_FORMAT_VERSION}"
+        )
+    );
 }
 
 #[test]
@@ -116,7 +145,8 @@ fn another_state_version_is_refused_by_name() {
 #[test]
 fn another_scalar_is_refused_by_name() {
     let scene = builtin_scene::<Fx>("fountain").expect("built in");
-    let bytes = encode_snapshot(&scene.build().expect("valid").snapshot()).expect("encodes");
+    let id = scene_id(&scene).expect("encodes");
+    let bytes = encode_snapshot(&scene.build().expect("valid").snapshot(), &id).expect("encodes");
     let error = decode_snapshot::<FxI48F16>(&bytes).expect_err("I32F32 snapshot");
     assert!(error.to_string().contains("\"I32F32\""), "{error}");
 }
@@ -125,7 +155,7 @@ fn another_scalar_is_refused_by_name() {
 fn an_invalid_state_is_refused_with_its_field() {
     let mut state = fountain_after(3).snapshot();
     state.settings.substeps = 0;
-    let bytes = encode_snapshot(&state).expect("encodes");
+    let bytes = encode_snapshot(&state, &fountain_id()).expect("encodes");
     let error = decode(&bytes).expect_err("zero substeps");
     assert!(error.contains("settings.substeps"), "{error}");
 }
@@ -163,6 +193,28 @@ fn run_saves_and_resumes_a_snapshot_with_the_uninterrupted_checksum() {
     assert_eq!(second.code, 0, "{second:?}");
     assert_eq!(whole.stdout.lines().last(), second.stdout.lines().last());
     assert_ne!(first.stdout.lines().last(), second.stdout.lines().last());
+}
+
+#[test]
+fn run_refuses_a_snapshot_of_another_scene_naming_both() {
+    let snapshot = TempPath::new("stack.snapshot");
+    let saved = fixstep(&["run", "stack", "--ticks", "5", "--snapshot", snapshot.str()]);
+    assert_eq!(saved.code, 0, "{saved:?}");
+    let run = fixstep(&["run", "cradle", "--from-snapshot", snapshot.str()]);
+    run.assert_error(&[
+        snapshot.str(),
+        "a snapshot of scene \"stack\"",
+        "not of scene \"cradle\"",
+    ]);
+    let reseeded = fixstep(&[
+        "run",
+        "stack",
+        "--seed",
+        "7",
+        "--from-snapshot",
+        snapshot.str(),
+    ]);
+    reseeded.assert_error(&[snapshot.str(), "the same name, but another seed"]);
 }
 
 #[test]

@@ -14,10 +14,13 @@ use super::scene_arg::resolve_scene;
 use super::status::Status;
 use super::timing_table::timing_table;
 use fixstep::math::{Fx, Real};
-use fixstep::replay::{AtomicFile, DEFAULT_CHECKSUM_EVERY, InputFeed, Recorder};
+use fixstep::replay::{AtomicFile, DEFAULT_CHECKSUM_EVERY, InputFeed, Recorder, scene_id};
 use fixstep::scene::{Scene, Simulation};
+use fixstep::types::read_input_file;
 use fixstep::world::checksum::hex;
-use fixstep::world::{TickReport, World, decode_snapshot, encode_snapshot};
+use fixstep::world::{
+    MAX_SNAPSHOT_LEN, SceneId, TickReport, World, decode_snapshot, encode_snapshot,
+};
 
 /// Ticks between two divergence checks of `fixstep run` (an O(particles) energy sum each).
 const DIVERGENCE_CHECK_EVERY: u64 = 10;
@@ -88,12 +91,24 @@ fn commit_output<E: core::fmt::Display>(
         .map_err(|e| write_error(&path, &e))
 }
 
-/// The scene's simulation, continued from the snapshot at `path`.
+/// The scene's name and hash, which a snapshot file carries.
+fn snapshot_scene(scene: &Scene<Fx>) -> Result<SceneId, String> {
+    scene_id(scene).map_err(|e| format!("{}: cannot encode the scene: {e}", scene.name))
+}
+
+/// The scene's simulation, continued from the snapshot at `path`, which must be of this
+/// scene.
 fn resume(scene: &Scene<Fx>, path: &Path) -> Result<Simulation<Fx>, String> {
-    let bytes = std::fs::read(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
-    let state = decode_snapshot::<Fx>(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    let in_file = |e: &dyn core::fmt::Display| format!("{}: {e}", path.display());
+    let bytes =
+        read_input_file(path, MAX_SNAPSHOT_LEN, "a snapshot file").map_err(|e| in_file(&e))?;
+    let snapshot = decode_snapshot::<Fx>(&bytes).map_err(|e| in_file(&e))?;
+    snapshot
+        .scene
+        .check_same(&snapshot_scene(scene)?)
+        .map_err(|e| in_file(&e))?;
     let mut world = scene.build().map_err(|e| format!("{}: {e}", scene.name))?;
-    world.restore(&state);
+    world.restore(&snapshot.state);
     if let Some(particles) = world.particles() {
         particles
             .check_user_forces()
@@ -214,7 +229,8 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
         events.finish()?;
     }
     if let Some(file) = snapshot_file {
-        commit_output(file, "snapshot", encode_snapshot(&world.snapshot()))?;
+        let encoded = encode_snapshot(&world.snapshot(), &snapshot_scene(&scene)?);
+        commit_output(file, "snapshot", encoded)?;
     }
     if let (Runner::Recording(recorder), Some(file)) = (runner, replay_file) {
         commit_output(file, "replay", recorder.finish().to_bytes())?;

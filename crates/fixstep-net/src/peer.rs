@@ -20,6 +20,8 @@ use ggrs::{DesyncDetection, GgrsError, GgrsEvent, P2PSession, PlayerType, Sessio
 
 use super::checksum::{checksum128, differing_part};
 use super::config::FixstepConfig;
+use super::handshake::{HandshakeError, Introduction, check_remotes, handshake};
+use super::hello::Heard;
 use super::input::{NetInput, tick_input};
 use super::nudge::{has_dynamic_body, nudge_first_body};
 use super::requests::fulfil;
@@ -27,7 +29,7 @@ use super::scene_world::build_world;
 use super::socket::PeerSocket;
 use super::source::InputSource;
 use fixstep::math::Fx;
-use fixstep::replay::{DEFAULT_CHECKSUM_EVERY, Recorder, Replay};
+use fixstep::replay::{DEFAULT_CHECKSUM_EVERY, Recorder, Replay, scene_id};
 use fixstep::scene::Scene;
 use fixstep::world::{Part, World};
 
@@ -129,8 +131,8 @@ fn passed(deadline: Instant) -> bool {
 /// Runs a peer until every tick is confirmed, a desync is detected, a remote disconnects
 /// or the timeout expires (the last two are errors).
 pub fn run_peer(options: PeerOptions) -> Result<PeerOutcome, String> {
-    let mut peer = Peer::start(options)?;
-    let deadline = Instant::now() + peer.options.timeout; // ok-det: network session timeout, never simulated state
+    let deadline = Instant::now() + options.timeout; // ok-det: network session timeout, never simulated state
+    let mut peer = Peer::start(options, deadline)?;
     let desync = loop {
         if passed(deadline) {
             return Err(peer.timeout_message());
@@ -153,7 +155,9 @@ pub fn run_peer(options: PeerOptions) -> Result<PeerOutcome, String> {
 }
 
 impl Peer {
-    fn start(options: PeerOptions) -> Result<Self, String> {
+    /// Checks the options, binds the socket and runs the handshake (until `deadline`),
+    /// then starts the GGRS session.
+    fn start(options: PeerOptions, deadline: Instant) -> Result<Self, String> {
         let players = options.remotes.len() + 1;
         if players > usize::from(u8::MAX) {
             return Err(format!("{} remotes: at most 254", options.remotes.len()));
@@ -178,8 +182,25 @@ impl Peer {
         let confirmed = Recorder::new(&options.scene, DEFAULT_CHECKSUM_EVERY)
             .map_err(|e| format!("{}: {e}", options.scene.name))?;
         let parts = game.checksum().parts.iter().map(|(p, _)| *p).collect();
-        let socket = PeerSocket::bind(options.local_port, &options.remotes)
+        check_remotes(options.local_port, &options.remotes)?;
+        let me = Introduction {
+            scene_hash: scene_id(&options.scene)
+                .map_err(|e| format!("{}: cannot encode the scene: {e}", options.scene.name))?
+                .hash,
+            scene_name: options.scene.name.clone(),
+            players: players as u8,
+            player: options.player as u8,
+        };
+        let mut socket = PeerSocket::bind(options.local_port, &options.remotes)
             .map_err(|e| format!("--local-port {}: cannot bind: {e}", options.local_port))?;
+        handshake(socket.udp(), &me, &options.remotes, deadline).map_err(|e| match e {
+            HandshakeError::TimedOut { .. } => format!(
+                "timed out after {:.1} s, still synchronising with the remote peers ({e})",
+                options.timeout.as_secs_f64()
+            ),
+            HandshakeError::Disagreement(why) => why,
+        })?;
+        socket.answer_hellos_with(me.hello(Heard::Answer).encode());
         let session = Self::session(&options, players, socket)
             .map_err(|e| format!("cannot start the session: {e}"))?;
         Ok(Self {

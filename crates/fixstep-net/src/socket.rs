@@ -2,12 +2,15 @@
 //!
 //! GGRS's own `UdpNonBlockingSocket` always binds 0.0.0.0; a peer whose remotes are all on
 //! loopback binds 127.0.0.1 instead, so that a local session is not reachable from the
-//! network.
+//! network. The same socket carries the [handshake](mod@super::handshake) before the session,
+//! and answers a late remote's handshake messages during it.
 
 use std::io::ErrorKind;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr, UdpSocket};
 
 use ggrs::{Message, NonBlockingSocket};
+
+use super::hello::{HELLO_MAGIC, Heard, Hello};
 
 /// Largest datagram accepted; GGRS messages are far smaller.
 const RECEIVE_BUFFER_LEN: usize = 4096;
@@ -18,6 +21,9 @@ const RECEIVE_BUFFER_LEN: usize = 4096;
 pub struct PeerSocket {
     socket: UdpSocket,
     buffer: Box<[u8; RECEIVE_BUFFER_LEN]>,
+    /// This peer's handshake answer ([`Heard::Answer`]), sent back to every handshake
+    /// message that asks for one during the session.
+    hello_answer: Vec<u8>,
 }
 
 impl PeerSocket {
@@ -34,7 +40,19 @@ impl PeerSocket {
         Ok(Self {
             socket,
             buffer: Box::new([0; RECEIVE_BUFFER_LEN]),
+            hello_answer: Vec::new(),
         })
+    }
+
+    /// The socket itself, for the handshake before the session.
+    pub(crate) fn udp(&self) -> &UdpSocket {
+        &self.socket
+    }
+
+    /// From now on, answers a remote's handshake message (one that is not itself an
+    /// answer) with `answer`, the bytes of this peer's [`Heard::Answer`] hello.
+    pub(crate) fn answer_hellos_with(&mut self, answer: Vec<u8>) {
+        self.hello_answer = answer;
     }
 
     /// The address the socket is bound to.
@@ -52,13 +70,19 @@ impl NonBlockingSocket<SocketAddr> for PeerSocket {
         }
     }
 
-    /// Every datagram waiting; undecodable ones are dropped.
+    /// Every datagram waiting; undecodable ones are dropped, handshake messages answered.
     fn receive_all_messages(&mut self) -> Vec<(SocketAddr, Message)> {
         let mut messages = Vec::new();
         loop {
             match self.socket.recv_from(&mut self.buffer[..]) {
                 Ok((len, from)) => {
-                    if let Ok(message) = bincode1::deserialize(&self.buffer[..len]) {
+                    let bytes = &self.buffer[..len];
+                    if bytes.starts_with(&HELLO_MAGIC) {
+                        let asks = Hello::decode(bytes).is_ok_and(|h| h.heard != Heard::Answer);
+                        if asks && !self.hello_answer.is_empty() {
+                            let _ = self.socket.send_to(&self.hello_answer, from);
+                        }
+                    } else if let Ok(message) = bincode1::deserialize(bytes) {
                         messages.push((from, message));
                     }
                 }

@@ -2,6 +2,7 @@
 
 use std::path::Path;
 
+use fixstep::types::{MAX_INPUT_FILE_LEN, read_input_file};
 use serde::{Deserialize, Serialize};
 
 use super::bot::Bot;
@@ -38,12 +39,20 @@ impl InputSource {
     }
 }
 
-/// Reads a RON list of [`ScriptedInput`]s, such as
+/// Reads a RON list of [`ScriptedInput`]s (a regular file of at most [`MAX_INPUT_FILE_LEN`]
+/// bytes), such as
 /// `[(tick: 30, input: (action: ImpulseBody, target: 3, impulse: (0, 160, 0)))]`; ticks must
 /// increase.
 pub fn read_script(path: &Path) -> Result<Vec<ScriptedInput>, String> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    let bytes = read_input_file(path, MAX_INPUT_FILE_LEN, "a script file")
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "{}: byte offset {}: not valid UTF-8 text",
+            path.display(),
+            e.utf8_error().valid_up_to()
+        )
+    })?;
     let script: Vec<ScriptedInput> =
         ron::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     for (i, pair) in script.windows(2).enumerate() {

@@ -11,8 +11,8 @@
 //! lines (`l`) and unknown records are ignored; vertices no face uses are dropped.
 //!
 //! Refused, each with the file's name and the line of the offending record: a file that
-//! cannot be read or is not UTF-8 (with the byte offset); no faces; a face of fewer than
-//! three corners; a polyline (`l`) of three or more corners; an index that is 0, not a
+//! cannot be read, is not a regular file, is larger than [`MAX_INPUT_FILE_LEN`] or is not
+//! UTF-8 (with the byte offset); no faces; a face of fewer than three corners; a polyline (`l`) of three or more corners; an index that is 0, not a
 //! number, or names a vertex not defined before its record; a record the parser cannot
 //! read (the first line at which the file stops parsing); a coordinate that is NaN,
 //! infinite or beyond ±100 000 m; more than [`MAX_MESH_VERTICES`] vertices or
@@ -33,15 +33,14 @@ use std::path::Path;
 use super::{MAX_EDGE_LENGTH, MAX_MESH_TRIANGLES, MAX_MESH_VERTICES, MeshError, TriMesh};
 use crate::math::{Real, Vec3};
 use crate::rigid::build::MAX_MAGNITUDE;
+use crate::types::{MAX_INPUT_FILE_LEN, read_input_file};
 
 /// The mesh of the OBJ file at `path`. Errors name the file and the line (see the module
 /// documentation for what is read and what is refused).
 pub fn read_obj_file<R: Real>(path: &Path) -> Result<TriMesh<R>, String> {
     let origin = path.display().to_string();
-    if path.is_dir() {
-        return Err(format!("{origin}: is a directory, not an OBJ file"));
-    }
-    let bytes = std::fs::read(path).map_err(|e| format!("{origin}: cannot read: {e}"))?;
+    let bytes = read_input_file(path, MAX_INPUT_FILE_LEN, "an OBJ file")
+        .map_err(|e| format!("{origin}: {e}"))?;
     let text = String::from_utf8(bytes).map_err(|e| {
         format!(
             "{origin}: byte offset {}: not valid UTF-8 text",
