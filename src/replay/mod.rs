@@ -23,4 +23,4 @@ pub use feed::InputFeed;
 pub use file::Replay;
 pub use format::{Checkpoint, ReplayHeader, Section, content_hash};
 pub use record::{DEFAULT_CHECKSUM_EVERY, Recorder, record, rerecord};
-pub use verify::{VerifyOutcome, verify};
+pub use verify::{VerifyOutcome, verify, verify_reporting};

@@ -4,6 +4,7 @@
 mod description;
 #[cfg(feature = "ron")]
 mod load;
+pub mod mass_ratios;
 mod spawn_check;
 
 pub use crate::types::{MAX_SUBSTEPS, MAX_TICK_RATE, SceneError};
