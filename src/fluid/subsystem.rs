@@ -1,6 +1,7 @@
 //! The fluid as one of the world's subsystems.
 
 use super::FluidSystem;
+use crate::math::saturation::first_at_range_edge;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Real, Vec3};
 use crate::types::{Handle, Metrics, Part, SceneError, Stage, StepContext, Subsystem};
@@ -25,6 +26,15 @@ impl<R: Real> Subsystem<R> for FluidSystem<R> {
 
     fn slot_digests(&self) -> Vec<(Handle, u32)> {
         FluidSystem::slot_digests(self)
+    }
+
+    /// The first fluid particle whose position or velocity is at the range's edge.
+    fn saturated_object(&self) -> Option<Handle> {
+        first_at_range_edge(
+            0..self.positions.len(),
+            &[&self.positions, &self.velocities],
+        )
+        .map(|i| Handle::new(i as u32, 0))
     }
 
     /// Energies, momentum and the largest speed, the fluid particles added to the particle

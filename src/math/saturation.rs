@@ -8,6 +8,8 @@
 
 use std::cell::Cell;
 
+use super::{Real, Vec3};
+
 thread_local! {
     static SATURATIONS: Cell<u64> = const { Cell::new(0) };
 }
@@ -35,6 +37,27 @@ pub fn count_saturations<T>(f: impl FnOnce() -> T) -> (T, u64) {
     let before = saturation_count();
     let value = f();
     (value, saturation_count().wrapping_sub(before))
+}
+
+/// Whether some component of `v` lies at the edge of the numeric range, where a saturating
+/// operation leaves it ([`Real::MAX`] or [`Real::MIN`]; never for `f64`, whose range a
+/// simulation does not reach). Diagnostic: it finds the object a saturation is reported
+/// against.
+pub fn at_range_edge<R: Real>(v: Vec3<R>) -> bool {
+    [v.x, v.y, v.z]
+        .into_iter()
+        .any(|c| c == R::MAX || c == R::MIN)
+}
+
+/// The first slot among `slots` whose vectors in any of `columns` lie at the edge of the
+/// numeric range ([`at_range_edge`]).
+pub(crate) fn first_at_range_edge<R: Real>(
+    slots: impl IntoIterator<Item = usize>,
+    columns: &[&[Vec3<R>]],
+) -> Option<usize> {
+    slots
+        .into_iter()
+        .find(|&i| columns.iter().any(|column| at_range_edge(column[i])))
 }
 
 /// Narrows an `i128` to `i64`, saturating and counting when it does not fit. The common

@@ -1,6 +1,7 @@
 //! The particle system as one of the world's subsystems.
 
 use super::ParticleSystem;
+use crate::math::saturation::first_at_range_edge;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Real, Vec3};
 use crate::types::{Handle, Metrics, Part, SceneError, Stage, StepContext, Subsystem};
@@ -28,6 +29,16 @@ impl<R: Real> Subsystem<R> for ParticleSystem<R> {
 
     fn slot_digests(&self) -> Vec<(Handle, u32)> {
         ParticleSystem::slot_digests(self)
+    }
+
+    /// The first live particle whose position or velocity is at the range's edge.
+    fn saturated_object(&self) -> Option<Handle> {
+        let (k, a) = (&self.storage.kinematics, &self.storage.attributes);
+        first_at_range_edge(
+            (0..a.alive.len()).filter(|&i| a.alive[i]),
+            &[&k.positions, &k.velocities],
+        )
+        .map(|i| self.storage.handle(i))
     }
 
     /// Kinetic and potential energy, momentum and the largest speed, and the live count.

@@ -5,7 +5,7 @@ use super::file::Replay;
 use super::format::Checkpoint;
 use super::record::build_world;
 use crate::scene::SceneError;
-use crate::world::{Checksum, ObjectDigests, Part};
+use crate::world::{Checksum, ObjectDigests, Part, World};
 
 /// The result of re-simulating a replay.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -38,6 +38,25 @@ pub enum VerifyOutcome {
 /// and every part) at each checkpoint; stops at the first difference.
 pub fn verify(replay: &Replay) -> Result<VerifyOutcome, SceneError> {
     let mut world = build_world(replay.scene())?;
+    Ok(verify_world(replay, &mut world))
+}
+
+/// [`verify`] with the divergence check on (sampled every `divergence_every` ticks),
+/// returning the world as it stopped as well, so that a driver can report what it has to
+/// warn about, as it would for a run ([`World::warnings`], [`World::health`]).
+pub fn verify_reporting(
+    replay: &Replay,
+    divergence_every: u64,
+) -> Result<(VerifyOutcome, World), SceneError> {
+    let mut world = build_world(replay.scene())?;
+    world.enable_divergence_check(divergence_every);
+    let outcome = verify_world(replay, &mut world);
+    Ok((outcome, world))
+}
+
+/// Steps `world` (built from the replay's scene) through the replay's inputs, comparing
+/// each checkpoint.
+fn verify_world(replay: &Replay, world: &mut World) -> VerifyOutcome {
     let mut feed = InputFeed::new(replay.inputs());
     for checkpoint in replay.checkpoints() {
         while world.tick() < checkpoint.tick {
@@ -47,13 +66,13 @@ pub fn verify(replay: &Replay) -> Result<VerifyOutcome, SceneError> {
         let got = world.checksum();
         let objects = world.object_digests();
         if !matches(checkpoint, &got, &objects) {
-            return Ok(desync(checkpoint, &got, &objects));
+            return desync(checkpoint, &got, &objects);
         }
     }
-    Ok(VerifyOutcome::Ok {
+    VerifyOutcome::Ok {
         ticks: world.tick(),
         checksum: world.checksum().total,
-    })
+    }
 }
 
 fn matches(expected: &Checkpoint, got: &Checksum, objects: &ObjectDigests) -> bool {

@@ -5,8 +5,11 @@
 //! 2. The broadphase lists overlapping boxes with at least one moving body, in ascending
 //!    (a, b) order; static planes, which have no box, are tested against each moving body's
 //!    box directly. When more than [`MAX_PAIRS`](super::broadphase::MAX_PAIRS) boxes overlap
-//!    (bodies piled on one spot), the step finds no new contacts and counts one saturation,
-//!    so the run warns instead of running out of memory.
+//!    (bodies piled on one spot), the broadphase stops, so that memory and time stay
+//!    bounded, and the step keeps only the pairs of a moving body and a static body
+//!    ([`super::capped_pairs`]) and the planes' pairs; it is counted
+//!    ([`RigidSystem::capped_steps`]), and the world reports it
+//!    ([`crate::world::TickReport::capped_contact_steps`]).
 //!    Pairs of bodies joined by a joint that does not let them collide are dropped.
 //! 3. A box or capsule pair that has moved less than the contact recycle distance relative
 //!    to its last narrowphase carries last step's contact with the bodies
@@ -23,6 +26,7 @@
 //! The result is sorted by key.
 
 use super::aabb::Aabb;
+use super::capped_pairs::static_pairs;
 use super::contact::{Contact, ContactKey};
 use super::desc::BodyKind;
 use super::filter::CollisionFilter;
@@ -36,7 +40,6 @@ use super::shape::Shape;
 use super::solver::LANES;
 use super::system::RigidSystem;
 use super::transform::Transform;
-use crate::math::saturation::record_saturation;
 use crate::math::{Real, Vec3};
 
 impl<R: Real> RigidSystem<R> {
@@ -51,13 +54,18 @@ impl<R: Real> RigidSystem<R> {
             &mut scratch.pairs,
         );
         if !complete {
-            // More than MAX_PAIRS boxes overlap: no new contacts this step, reported as a
-            // saturation (the run warns) rather than running out of memory.
-            record_saturation();
-            scratch.pairs.clear();
+            // More than MAX_PAIRS boxes overlap: only the contacts with static bodies are
+            // looked for this step, and the world reports the cap.
+            scratch.capped_steps += 1;
+            static_pairs(
+                &scratch.aabbs,
+                &scratch.active,
+                &scratch.present,
+                &self.bodies.kind,
+                &mut scratch.pairs,
+            );
         }
-        let planes: &[u32] = if complete { &scratch.planes } else { &[] };
-        for &plane in planes {
+        for &plane in &scratch.planes {
             let p = plane as usize;
             for (i, aabb) in scratch.aabbs.iter().enumerate() {
                 if scratch.active[i]
@@ -283,6 +291,14 @@ impl<R: Real> RigidSystem<R> {
         }
         self.scratch.spare_contacts = old;
         self.scratch.spare_frames = old_frames;
+    }
+
+    /// The rigid steps of the current tick whose broadphase found more than
+    /// [`MAX_PAIRS`](super::broadphase::MAX_PAIRS) overlapping boxes and so kept only the
+    /// contacts with static bodies: bodies piled on one spot may then pass through each
+    /// other. Not state: it is reset when a tick begins.
+    pub fn capped_steps(&self) -> u32 {
+        self.scratch.capped_steps
     }
 
     /// Recomputes placements and boxes: all of them when the cache is not valid, otherwise

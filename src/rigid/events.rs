@@ -69,11 +69,12 @@ impl<R: Real> RigidSystem<R> {
         &self.scratch.events
     }
 
-    /// Forgets the previous tick's events and broken joints; the events to come belong to
+    /// Forgets the previous tick's events, broken joints and capped steps; the events to come belong to
     /// `tick`. The world calls it before the tick's inputs, whose removals raise events.
     pub(crate) fn begin_events(&mut self, tick: u64) {
         self.scratch.events.clear();
         self.scratch.event_tick = tick;
+        self.scratch.capped_steps = 0;
         self.scratch.spawned.clear();
         self.scratch.spawned_joints.clear();
         self.clear_joint_events();

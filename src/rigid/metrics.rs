@@ -17,6 +17,8 @@ pub struct RigidMetrics {
     pub max_speed: f64, // ok-det: reporting
     /// The deepest overlap in the current contacts, m (0 when none overlap).
     pub max_penetration: f64, // ok-det: reporting
+    /// Σ m over the live dynamic bodies, kg.
+    pub mass: f64, // ok-det: reporting
     /// Dynamic bodies awake.
     pub awake_bodies: u64,
     /// Dynamic bodies asleep.
@@ -43,6 +45,7 @@ impl<R: Real> RigidSystem<R> {
                 m.awake_bodies += 1;
             }
             let mass = b.mass[i];
+            m.mass += mass.to_f64();
             let v = b.linear_velocity[i];
             let w = b.angular_velocity[i];
             let body_w = b.orientation[i].conjugate().rotate(w);

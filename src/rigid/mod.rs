@@ -22,7 +22,7 @@
 //! Game API: [`filter`] collision layers and query filters · `sensors` overlap detection ·
 //! [`events`] contact, sensor and joint events · `spawn` templates and spawning by input.
 //!
-//! Dynamics: [`collide`] stage 1 · [`contact`] persistent contacts · [`sleep`] islands,
+//! Dynamics: [`collide`] stage 1 (with `capped_pairs`, what it keeps past the broadphase's cap) · [`contact`] persistent contacts · [`sleep`] islands,
 //! waking and sleeping · [`solve`] stage 3 · [`solver`] the soft-step sequential-impulse
 //! solver · [`continuous`] the last stage, fast bodies swept against thin ones · [`material`] friction and restitution mixing · [`gyroscopic`] ω update with
 //! gyroscopic torque.
@@ -34,6 +34,7 @@ pub mod aabb;
 pub(crate) mod bodies;
 pub mod broadphase;
 pub(crate) mod build;
+mod capped_pairs;
 mod collide;
 mod commands;
 pub(crate) mod contact;

@@ -1,6 +1,7 @@
 //! The rigid bodies as one of the world's subsystems.
 
 use super::RigidSystem;
+use crate::math::saturation::first_at_range_edge;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Real, Vec3};
 use crate::types::{Handle, Metrics, Part, SceneError, Stage, StepContext, Subsystem};
@@ -32,10 +33,24 @@ impl<R: Real> Subsystem<R> for RigidSystem<R> {
         RigidSystem::slot_digests(self)
     }
 
+    /// The first live body whose position or linear or angular velocity is at the range's
+    /// edge.
+    fn saturated_object(&self) -> Option<Handle> {
+        let b = &self.bodies;
+        first_at_range_edge(
+            (0..b.len()).filter(|&i| b.alive[i]),
+            &[&b.position, &b.linear_velocity, &b.angular_velocity],
+        )
+        .map(|i| b.handle(i))
+    }
+
     /// Energies, momentum and the largest speed, plus the contact, sleep and joint columns.
     fn add_metrics(&self, gravity: Vec3<R>, metrics: &mut Metrics) {
         let rigid = self.metrics(gravity);
         metrics.kinetic_energy += rigid.kinetic_energy;
+        metrics.rigid_kinetic_energy = rigid.kinetic_energy;
+        metrics.rigid_potential_energy = rigid.potential_energy;
+        metrics.rigid_mass = rigid.mass;
         metrics.potential_energy += rigid.potential_energy;
         for (total, part) in metrics.momentum.iter_mut().zip(rigid.momentum) {
             *total += part;

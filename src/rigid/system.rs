@@ -105,6 +105,9 @@ pub(crate) struct Scratch<R: Real> {
     /// Whether some live body is a sensor: only then does the collide stage set sensor
     /// pairs aside. Computed with the bounds cache.
     pub sensing: bool,
+    /// The steps of the current tick whose broadphase hit its cap
+    /// ([`RigidSystem::capped_steps`]).
+    pub capped_steps: u32,
     /// This step's broadphase pairs with one sensor, which make no contact.
     pub sensor_pairs: Vec<(u32, u32)>,
     /// The bodies and the joints spawned during the current tick.

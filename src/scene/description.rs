@@ -3,6 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::mass_ratios::mass_ratio_warnings;
 use super::simulation::input_at;
 use crate::fluid::{FluidDesc, FluidSystem};
 use crate::math::{Fx, Real, Vec3};
@@ -99,7 +100,9 @@ impl<R: Real> Scene<R> {
         }
     }
 
-    /// Checks every field and builds the world at tick 0.
+    /// Checks every field and builds the world at tick 0. Pairs of rigid bodies whose mass
+    /// ratio the solver cannot hold become warnings ([`World::warnings`],
+    /// [`mass_ratios`](super::mass_ratios)).
     pub fn build(&self) -> Result<World<R>, SceneError> {
         check_rates(self.tick_rate, self.substeps)?;
         for (i, input) in self.script.iter().enumerate() {
@@ -129,6 +132,9 @@ impl<R: Real> Scene<R> {
             let mut rigid = RigidSystem::from_desc(desc).map_err(|e| e.within("rigid"))?;
             if let Some(joints) = &self.joints {
                 rigid.add_joints(joints).map_err(|e| e.within("joints"))?;
+            }
+            for warning in mass_ratio_warnings(&rigid) {
+                world.add_build_warning(warning);
             }
             world.set_rigid(rigid);
         } else if self.joints.is_some() {

@@ -5,6 +5,7 @@
 mod description;
 #[cfg(feature = "ron")]
 mod load;
+pub mod mass_ratios;
 mod simulation;
 mod spawn_check;
 

@@ -1,6 +1,7 @@
 //! The soft bodies as one of the world's subsystems.
 
 use super::SoftSystem;
+use crate::math::saturation::first_at_range_edge;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Real, Vec3};
 use crate::types::{Handle, Metrics, Part, SceneError, Stage, StepContext, Subsystem};
@@ -36,6 +37,13 @@ impl<R: Real> Subsystem<R> for SoftSystem<R> {
 
     fn slot_digests(&self) -> Vec<(Handle, u32)> {
         SoftSystem::slot_digests(self)
+    }
+
+    /// The first vertex whose position or velocity is at the range's edge.
+    fn saturated_object(&self) -> Option<Handle> {
+        let v = &self.vertices;
+        first_at_range_edge(0..v.position.len(), &[&v.position, &v.velocity])
+            .map(|i| Handle::new(i as u32, 0))
     }
 
     /// Energies (elastic included), momentum and the largest speed, plus the stretch

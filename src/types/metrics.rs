@@ -52,6 +52,13 @@ pub struct Metrics {
     /// Soft-body vertices (not a CSV column; the divergence check counts them with the
     /// particles).
     pub soft_vertices: u64,
+    /// The kinetic energy of the dynamic rigid bodies, J (not a CSV column; the divergence
+    /// check watches their energy per kilogram).
+    pub rigid_kinetic_energy: f64, // ok-det: reporting
+    /// The potential energy of the dynamic rigid bodies, J (not a CSV column).
+    pub rigid_potential_energy: f64, // ok-det: reporting
+    /// The mass of the live dynamic rigid bodies, kg (not a CSV column).
+    pub rigid_mass: f64, // ok-det: reporting
 }
 
 impl Metrics {

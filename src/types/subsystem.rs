@@ -57,6 +57,13 @@ pub trait Subsystem<R: Real> {
     /// speeds maximised, its own columns set); `gravity` (m/s²) gives potential energy.
     fn add_metrics(&self, gravity: Vec3<R>, metrics: &mut Metrics);
 
+    /// The handle of the first object (lowest slot) whose position or velocity holds a
+    /// value at the edge of the numeric range
+    /// ([`at_range_edge`](crate::math::saturation::at_range_edge)), if any: where a
+    /// tick's saturation is reported ([`crate::world::health::SaturationSite`]). Called
+    /// only after a tick that saturated.
+    fn saturated_object(&self) -> Option<Handle>;
+
     /// Checks the invariants the subsystem relies on, for a state from outside (a
     /// snapshot); the error names the offending field.
     fn validate(&self) -> Result<(), SceneError>;

@@ -14,6 +14,18 @@
 //! stop growing, I32F32 energies saturate near 2³¹ J) before it grew 10⁴-fold. Using the energy per particle keeps emitters, which add particles with their own
 //! energy, from looking like growth.
 //!
+//! Dynamic rigid bodies are watched with the same limits on another scale: the mechanical
+//! energy they gained per kilogram since the first sample, γ = (E − E₀) / M with
+//! E = KE + PE (J/kg), against κ₀ = KE₀ / M at that sample (at least [`ENERGY_FLOOR`] J/kg,
+//! a speed of 1.4 m/s). Per kilogram, because a rigid body weighs a thousand default
+//! particles (a 1 m box of water is a tonne), so that a joule means as much for both; the
+//! energy gained rather than the energy, because E is conserved in free fall (and lost in
+//! contacts) while KE + |PE| grows without bound for a body falling off the world. In
+//! fixed point a value cannot become infinite or NaN, so "diverged" cannot mean "not
+//! finite" for rigid bodies as it does in `f64` worlds: a solve that blows up gains energy,
+//! and once its speeds reach the numeric range it gains it with saturations, which the
+//! tenfold limit catches. Forces the inputs apply add energy, as for particles.
+//!
 //! The monitor is reporting, outside the simulated state: it reads the state in `f64` and
 //! never changes it. It is off unless asked for ([`World::enable_divergence_check`]), so a
 //! world that does not use it pays nothing.
@@ -32,15 +44,27 @@ pub const SATURATED_GROWTH_LIMIT: f64 = 10.0; // ok-det: reporting
 /// 1.4 m/s.
 pub const ENERGY_FLOOR: f64 = 1.0; // ok-det: reporting
 
+/// What grew.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DivergenceScale {
+    /// ε, the mechanical energy per particle or soft-body vertex, J.
+    EnergyPerPoint,
+    /// γ, the mechanical energy the dynamic rigid bodies gained per kilogram of them since
+    /// the check started, J/kg, against κ₀, their kinetic energy per kilogram then.
+    RigidEnergyGainPerKilogram,
+}
+
 /// A detected divergence.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Divergence {
     /// The tick at which the growth was first seen.
     pub tick: u64,
-    /// ε at that tick, J per particle.
+    /// The scale at that tick: ε in J per particle, or γ in J/kg (see `scale`).
     pub energy_scale: f64, // ok-det: reporting
-    /// ε₀, J per particle.
+    /// The scale's reference, ε₀ or κ₀.
     pub reference: f64, // ok-det: reporting
+    /// Which scale grew.
+    pub scale: DivergenceScale,
 }
 
 /// Samples metrics and remembers the first divergence.
@@ -49,6 +73,8 @@ pub(crate) struct DivergenceMonitor {
     /// Ticks between samples.
     pub every: u64,
     reference: Option<f64>, // ok-det: reporting
+    /// E₀ / M and κ₀, once the world has had dynamic rigid bodies at a sample.
+    rigid_reference: Option<(f64, f64)>, // ok-det: reporting
     /// The world's saturation count at the previous sample.
     saturations: u64,
     detected: Option<Divergence>,
@@ -60,6 +86,7 @@ impl DivergenceMonitor {
         Self {
             every: every.max(1),
             reference: None,
+            rigid_reference: None,
             saturations: 0,
             detected: None,
         }
@@ -74,22 +101,44 @@ impl DivergenceMonitor {
     pub fn sample(&mut self, metrics: &Metrics) {
         let saturated = metrics.saturations > self.saturations;
         self.saturations = metrics.saturations;
-        if self.detected.is_some() || points(metrics) == 0 {
+        if self.detected.is_some() {
             return;
         }
-        let scale = energy_scale(metrics);
-        let reference = *self.reference.get_or_insert(scale.max(ENERGY_FLOOR));
         let limit = if saturated {
             SATURATED_GROWTH_LIMIT
         } else {
             GROWTH_LIMIT
         };
-        if !scale.is_finite() || scale > limit * reference {
-            self.detected = Some(Divergence {
-                tick: metrics.tick,
-                energy_scale: scale,
-                reference,
-            });
+        if points(metrics) > 0 {
+            let scale = energy_scale(metrics);
+            let reference = *self.reference.get_or_insert(scale.max(ENERGY_FLOOR));
+            if !scale.is_finite() || scale > limit * reference {
+                self.detected = Some(Divergence {
+                    tick: metrics.tick,
+                    energy_scale: scale,
+                    reference,
+                    scale: DivergenceScale::EnergyPerPoint,
+                });
+                return;
+            }
+        }
+        if metrics.rigid_mass > 0.0 {
+            let per_kilogram = |energy: f64| energy / metrics.rigid_mass; // ok-det: reporting
+            let energy =
+                per_kilogram(metrics.rigid_kinetic_energy + metrics.rigid_potential_energy);
+            let (start, reference) = *self.rigid_reference.get_or_insert((
+                energy,
+                per_kilogram(metrics.rigid_kinetic_energy).max(ENERGY_FLOOR),
+            ));
+            let gain = energy - start;
+            if !gain.is_finite() || gain > limit * reference {
+                self.detected = Some(Divergence {
+                    tick: metrics.tick,
+                    energy_scale: gain,
+                    reference,
+                    scale: DivergenceScale::RigidEnergyGainPerKilogram,
+                });
+            }
         }
     }
 }

@@ -5,9 +5,11 @@ use serde::{Deserialize, Serialize};
 use super::checksum::Checksum;
 use super::divergence::{Divergence, DivergenceMonitor};
 use super::fluid_coupling::step_fluid_with_bodies;
+use super::health::{Health, SaturationSite};
 use super::particle_coupling::step_colliding_particles;
 use super::soft_coupling::step_rigid_and_soft;
 use super::stage::StageTimings;
+use super::stage_watch::StageWatch;
 use crate::fluid::FluidSystem;
 use crate::math::rng::Pcg32;
 use crate::math::saturation::count_saturations;
@@ -97,6 +99,17 @@ impl<R: Real> WorldState<R> {
         Ok(())
     }
 
+    /// The first object of `stage`'s subsystem holding a value at the edge of the numeric
+    /// range ([`Subsystem::saturated_object`]), with the subsystem's part; `None` when the
+    /// scene has no such subsystem or no object does.
+    fn saturated_object(&self, stage: Stage) -> Option<(Part, Handle)> {
+        self.subsystems()
+            .into_iter()
+            .flatten()
+            .find(|s| s.stage() == stage)
+            .and_then(|s| s.saturated_object().map(|handle| (s.part(), handle)))
+    }
+
     /// The subsystems, in [`Stage`] order, `None` where the scene has none. With
     /// [`WorldState::split_mut`] and [`WorldState::keep_unsimulated`], the place that lists
     /// the subsystem fields: a new subsystem is added there.
@@ -134,16 +147,14 @@ impl<R: Real> WorldState<R> {
 
 impl<R: Real> WorldState<R> {
     /// One tick of the subsystem of `stage`, if the scene has it, on its own.
-    fn step_alone(&mut self, stage: Stage, timings: &mut Option<Box<StageTimings>>, dt: R) {
+    fn step_alone(&mut self, stage: Stage, watch: &mut StageWatch, dt: R) {
         let (settings, rng, subsystems) = self.split_mut();
         if let Some(subsystem) = subsystems
             .into_iter()
             .flatten()
             .find(|s| s.stage() == stage)
         {
-            timed(timings, stage, || {
-                step_subsystem(subsystem, settings, rng, dt)
-            });
+            watch.run(stage, || step_subsystem(subsystem, settings, rng, dt));
         }
     }
 
@@ -152,7 +163,7 @@ impl<R: Real> WorldState<R> {
     /// true; otherwise does nothing and returns false.
     fn step_coupled_soft(
         &mut self,
-        timings: &mut Option<Box<StageTimings>>,
+        watch: &mut StageWatch,
         dt: R,
         proxies: &mut Proxies<R>,
     ) -> bool {
@@ -167,7 +178,7 @@ impl<R: Real> WorldState<R> {
             soft,
             proxies,
             (&self.settings, &mut self.rng, dt),
-            |stage, f| timed(timings, stage, f),
+            |stage, f| watch.run(stage, f),
         );
         true
     }
@@ -175,7 +186,7 @@ impl<R: Real> WorldState<R> {
     /// The fluid stage, when the fluid meets the rigid bodies: steps it with them in the
     /// fluid ([`fluid_coupling`](super::fluid_coupling)) and returns true; otherwise does
     /// nothing and returns false.
-    fn step_coupled_fluid(&mut self, timings: &mut Option<Box<StageTimings>>, dt: R) -> bool {
+    fn step_coupled_fluid(&mut self, watch: &mut StageWatch, dt: R) -> bool {
         let (Some(fluid), Some(rigid)) = (&mut self.fluid, &mut self.rigid) else {
             return false;
         };
@@ -187,7 +198,7 @@ impl<R: Real> WorldState<R> {
             rigid,
             filter,
             (&self.settings, &mut self.rng, dt),
-            |stage, f| timed(timings, stage, f),
+            |stage, f| watch.run(stage, f),
         );
         true
     }
@@ -195,18 +206,14 @@ impl<R: Real> WorldState<R> {
     /// The particle stage, when some particle group collides with the rigid bodies: steps
     /// it with the bodies in view ([`particle_coupling`](super::particle_coupling)) and
     /// returns true; otherwise does nothing and returns false.
-    fn step_coupled_particles(
-        &mut self,
-        timings: &mut Option<Box<StageTimings>>,
-        substep_dt: R,
-    ) -> bool {
+    fn step_coupled_particles(&mut self, watch: &mut StageWatch, substep_dt: R) -> bool {
         let (Some(particles), Some(rigid)) = (&mut self.particles, &mut self.rigid) else {
             return false;
         };
         if !particles.collides() {
             return false;
         }
-        timed(timings, Stage::Particles, || {
+        watch.run(Stage::Particles, || {
             step_colliding_particles(particles, rigid, &self.settings, &mut self.rng, substep_dt);
         });
         true
@@ -239,6 +246,13 @@ pub struct TickReport {
     pub ignored_commands: u32,
     /// Fixed-point operations that saturated during the tick.
     pub saturations: u64,
+    /// Where the tick's first saturation happened, when it had any.
+    pub first_saturation: Option<SaturationSite>,
+    /// Rigid steps of the tick whose broadphase found more than
+    /// [`MAX_PAIRS`](crate::rigid::broadphase::MAX_PAIRS) overlapping boxes: they kept only
+    /// the contacts with static bodies, so other bodies may have passed through each other
+    /// ([`RigidSystem::capped_steps`](crate::rigid::RigidSystem::capped_steps)).
+    pub capped_contact_steps: u32,
     /// Rigid-body joints that broke during the tick (which ones:
     /// [`RigidSystem::joint_events`]).
     pub broken_joints: u32,
@@ -272,7 +286,10 @@ pub struct World<R: Real = Fx> {
     /// Length of one substep, 1 / (tick_rate · substeps) s; derived from the settings.
     substep_dt: R,
     timings: Option<Box<StageTimings>>,
-    saturations_total: u64,
+    /// Saturations and capped contacts so far (its divergence is the monitor's).
+    health: Health,
+    /// Warnings found when the world was built from a scene (see [`World::warnings`]).
+    build_warnings: Vec<String>,
     divergence: Option<Box<DivergenceMonitor>>,
     /// The rigid bodies as the soft stage sees them (memory kept between ticks; not state).
     proxies: Proxies<R>,
@@ -300,7 +317,8 @@ impl<R: Real> World<R> {
             state,
             substep_dt,
             timings: None,
-            saturations_total: 0,
+            health: Health::default(),
+            build_warnings: Vec::new(),
             divergence: None,
             proxies: Proxies::default(),
         }
@@ -331,13 +349,17 @@ impl<R: Real> World<R> {
         self.state.soft.as_mut()
     }
 
-    /// Warnings found when the subsystems were built (soft-body networks past their
-    /// stability bound), for the driver to report.
+    /// Warnings found when the world was built: mass ratios past 1:1000 between rigid
+    /// bodies that can touch or are jointed (see [`Scene::build`](crate::scene::Scene::build)),
+    /// then soft-body networks past their stability bound, for the driver to report.
     pub fn warnings(&self) -> Vec<String> {
-        self.state
-            .soft
-            .as_ref()
-            .map_or_else(Vec::new, |s| s.warnings().to_vec())
+        let soft = self.state.soft.as_ref().map_or(&[][..], |s| s.warnings());
+        self.build_warnings.iter().chain(soft).cloned().collect()
+    }
+
+    /// Adds a warning found while building the world from a scene.
+    pub(crate) fn add_build_warning(&mut self, warning: String) {
+        self.build_warnings.push(warning);
     }
 
     /// Adds a fluid (replacing any previous one).
@@ -420,42 +442,63 @@ impl<R: Real> World<R> {
 
     /// Saturations counted over every tick this world has run.
     pub fn saturations_total(&self) -> u64 {
-        self.saturations_total
+        self.health.saturations
+    }
+
+    /// What the run so far has to warn about: saturations and where the first happened,
+    /// ticks whose contacts were capped, and the divergence check's finding
+    /// ([`super::health`]).
+    pub fn health(&self) -> Health {
+        Health {
+            divergence: self.divergence(),
+            ..self.health
+        }
     }
 
     /// Advances one tick with the given inputs (their `tick` field is not checked here; a
     /// driver passes the inputs for [`World::tick`]).
     pub fn step(&mut self, input: &TickInput<R>) -> TickReport {
+        let tick = self.state.tick;
         if let Some(rigid) = &mut self.state.rigid {
-            rigid.begin_events(self.state.tick);
+            rigid.begin_events(tick);
         }
+        let mut watch = StageWatch::new(self.timings.take());
         let (ignored_commands, saturations) = count_saturations(|| {
-            let mut timings = self.timings.take();
-            let ignored = timed(&mut timings, Stage::ApplyInputs, || {
-                self.apply_inputs(input)
-            });
+            let ignored = watch.run(Stage::ApplyInputs, || self.apply_inputs(input));
             let dt = self.substep_dt;
             let state = &mut self.state;
-            if !state.step_coupled_particles(&mut timings, dt) {
-                state.step_alone(Stage::Particles, &mut timings, dt);
+            if !state.step_coupled_particles(&mut watch, dt) {
+                state.step_alone(Stage::Particles, &mut watch, dt);
             }
-            if state.step_coupled_fluid(&mut timings, dt) {
+            if state.step_coupled_fluid(&mut watch, dt) {
                 // The rigid bodies and the fluid alternated at the fluid's substep rate;
                 // the soft bodies follow (a scene does not couple them too: it is refused
                 // when built).
-                state.step_alone(Stage::Soft, &mut timings, dt);
+                state.step_alone(Stage::Soft, &mut watch, dt);
             } else {
-                if !state.step_coupled_soft(&mut timings, dt, &mut self.proxies) {
-                    state.step_alone(Stage::Rigid, &mut timings, dt);
-                    state.step_alone(Stage::Soft, &mut timings, dt);
+                if !state.step_coupled_soft(&mut watch, dt, &mut self.proxies) {
+                    state.step_alone(Stage::Rigid, &mut watch, dt);
+                    state.step_alone(Stage::Soft, &mut watch, dt);
                 }
-                state.step_alone(Stage::Fluid, &mut timings, dt);
+                state.step_alone(Stage::Fluid, &mut watch, dt);
             }
-            timed(&mut timings, Stage::EndTick, || self.end_tick());
-            self.timings = timings;
+            watch.run(Stage::EndTick, || self.end_tick());
             ignored
         });
-        self.saturations_total += saturations;
+        self.timings = watch.timings;
+        let first_saturation = watch.first_saturated.map(|stage| SaturationSite {
+            tick,
+            count: saturations,
+            stage,
+            object: self.state.saturated_object(stage),
+        });
+        let capped_contact_steps = self.state.rigid.as_ref().map_or(0, |r| r.capped_steps());
+        self.health.add_tick(
+            tick,
+            saturations,
+            first_saturation,
+            capped_contact_steps > 0,
+        );
         if let Some(monitor) = &self.divergence
             && self.state.tick.is_multiple_of(monitor.every)
         {
@@ -470,6 +513,8 @@ impl<R: Real> World<R> {
         TickReport {
             ignored_commands,
             saturations,
+            first_saturation,
+            capped_contact_steps,
             broken_joints,
             events,
         }
@@ -654,7 +699,7 @@ impl<R: Real> World<R> {
         let mut m = Metrics {
             tick: self.state.tick,
             time: self.time().to_f64(),
-            saturations: self.saturations_total,
+            saturations: self.health.saturations,
             diverged: self.divergence().is_some(),
             ..Metrics::default()
         };
@@ -675,15 +720,6 @@ impl<R: Real> World<R> {
         state.keep_unsimulated(&mut self.state);
         self.substep_dt = substep_dt(&state.settings);
         self.state = state;
-    }
-}
-
-/// Runs `f`, adding its wall-clock time to `stage` when timing is enabled.
-#[inline]
-fn timed<T>(timings: &mut Option<Box<StageTimings>>, stage: Stage, f: impl FnOnce() -> T) -> T {
-    match timings {
-        Some(t) => t.time(stage, f),
-        None => f(),
     }
 }
 

@@ -52,3 +52,4 @@ mod soft_bodies;
 mod soft_coupling;
 mod soft_snapshot;
 mod world_core;
+mod world_health;

@@ -116,8 +116,12 @@ fn saturations_are_a_warning_not_an_error() {
     assert_eq!(run.code, 0, "{run:?}");
     let warning = run.stderr.trim_end();
     assert!(
-        warning.starts_with("warning: ")
-            && warning.ends_with(" fixed-point saturations (values hit the numeric range)"),
+        warning.starts_with("warning: 1 fixed-point saturations (values hit the numeric range)")
+            && warning.ends_with(
+                "the first at tick 4 (1 that tick), in the particles stage, particle 0v0 \
+                 holding a value at the range's edge"
+            )
+            && warning.lines().count() == 1,
         "{warning:?}"
     );
     assert!(is_checksum_line(run.stdout.lines().last().expect("output")));

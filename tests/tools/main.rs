@@ -13,6 +13,7 @@ mod cli_mesh_files;
 mod cli_query;
 mod cli_run_outputs;
 mod cli_scene_files;
+mod cli_warnings;
 mod net_handshake;
 mod net_inputs;
 mod net_peers;

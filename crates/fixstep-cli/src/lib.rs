@@ -52,6 +52,7 @@ mod scenes;
 mod status;
 mod timing_table;
 mod verify;
+mod warnings;
 
 use std::ffi::OsString;
 

@@ -6,6 +6,7 @@ use super::args::RenderArgs;
 use super::output::print_line;
 use super::scene_arg::resolve_source;
 use super::status::Status;
+use super::warnings::{DIVERGENCE_CHECK_EVERY, health_warnings, print_warnings};
 use fixstep::world::checksum::hex;
 use fixstep_viewer::{BodyColours, Film, GIF_NAME, PAGE_NAME, PageSettings, write_outputs};
 
@@ -32,7 +33,9 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
     }
     std::fs::create_dir_all(&args.out)
         .map_err(|e| format!("{}: cannot create the directory: {e}", args.out.display()))?;
-    let world = source.build_world(&args.input)?;
+    let mut world = source.build_world(&args.input)?;
+    world.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
+    print_warnings(None, world.warnings());
     let colours = if args.flat {
         BodyColours::PerBody
     } else {
@@ -75,6 +78,7 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
     print_line(&format!(
         "wrote {out}/tick-*.png, {out}/{GIF_NAME}, {out}/{PAGE_NAME}"
     ))?;
+    print_warnings(None, health_warnings(&film.health));
     let last = film.frames.last().map_or(0, |f| f.checksum);
     print_line(&format!("checksum: {}", hex(last)))?;
     Ok(Status::Ok)

@@ -13,6 +13,7 @@ use super::progress::Progress;
 use super::scene_arg::resolve_scene;
 use super::status::Status;
 use super::timing_table::timing_table;
+use super::warnings::{DIVERGENCE_CHECK_EVERY, health_warnings, print_warnings};
 use fixstep::math::{Fx, Real};
 use fixstep::replay::{AtomicFile, DEFAULT_CHECKSUM_EVERY, InputFeed, Recorder, scene_id};
 use fixstep::scene::{Scene, Simulation};
@@ -21,9 +22,6 @@ use fixstep::world::checksum::hex;
 use fixstep::world::{
     MAX_SNAPSHOT_LEN, SceneId, TickReport, World, decode_snapshot, encode_snapshot,
 };
-
-/// Ticks between two divergence checks of `fixstep run` (an O(particles) energy sum each).
-const DIVERGENCE_CHECK_EVERY: u64 = 10;
 
 /// What `run` steps: a recorder from the scene's first tick, or a simulation resumed from a
 /// snapshot (which cannot be recorded, since a replay starts at tick 0).
@@ -173,9 +171,7 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
         )),
     };
     runner.enable_reports();
-    for warning in runner.world().warnings() {
-        eprint_line(&format!("warning: {warning}"));
-    }
+    print_warnings(None, runner.world().warnings());
     if let Some(metrics) = &mut metrics {
         metrics.tick(runner.world())?;
     }
@@ -216,8 +212,7 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
             print_line(&line)?;
         }
     }
-    let saturations = world.saturations_total();
-    let divergence = world.divergence();
+    let health = world.health();
     let checksum = world.checksum().total;
     if let Some(metrics) = metrics {
         metrics.finish(world)?;
@@ -235,19 +230,7 @@ pub fn run(args: &RunArgs) -> Result<Status, String> {
     if let (Runner::Recording(recorder), Some(file)) = (runner, replay_file) {
         commit_output(file, "replay", recorder.finish().to_bytes())?;
     }
-    if saturations > 0 {
-        eprint_line(&format!(
-            "warning: {saturations} fixed-point saturations (values hit the numeric range)"
-        ));
-    }
-    if let Some(d) = divergence {
-        eprint_line(&format!(
-            "warning: the simulation diverged at tick {}: the energy per point grew from \
-             {:.3e} J to {:.3e} J; the step is too long for the stiffest force, or the \
-             integrator is unstable (try more substeps)",
-            d.tick, d.reference, d.energy_scale
-        ));
-    }
+    print_warnings(None, health_warnings(&health));
     print_line(&format!("checksum: {}", hex(checksum)))?;
     Ok(Status::Ok)
 }

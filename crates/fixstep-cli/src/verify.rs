@@ -4,7 +4,8 @@ use std::path::Path;
 
 use super::output::{eprint_line, print_line};
 use super::status::Status;
-use fixstep::replay::{Replay, ReplayError, ReplayErrorKind, VerifyOutcome, verify};
+use super::warnings::{DIVERGENCE_CHECK_EVERY, health_warnings, print_warnings};
+use fixstep::replay::{Replay, ReplayError, ReplayErrorKind, VerifyOutcome, verify_reporting};
 use fixstep::world::checksum::hex;
 
 /// Verifies every file, reporting each; the status is the most severe of them.
@@ -20,10 +21,15 @@ pub fn verify_files(files: &[impl AsRef<Path>]) -> Result<Status, String> {
 fn verify_file(path: &Path) -> Result<Status, String> {
     let name = path.display();
     let outcome = Replay::read(path).and_then(|replay| {
-        verify(&replay)
+        verify_reporting(&replay, DIVERGENCE_CHECK_EVERY)
             .map_err(|e| ReplayError::new(name.to_string(), ReplayErrorKind::Scene(e.to_string())))
     });
-    match outcome {
+    if let Ok((_, world)) = &outcome {
+        let about = Some(name.to_string());
+        print_warnings(about.as_deref(), world.warnings());
+        print_warnings(about.as_deref(), health_warnings(&world.health()));
+    }
+    match outcome.map(|(outcome, _)| outcome) {
         Ok(VerifyOutcome::Ok { ticks, checksum }) => {
             print_line(&format!("ok {name} {ticks} {}", hex(checksum)))?;
             Ok(Status::Ok)

@@ -10,7 +10,7 @@ use super::draw_soft::draw_soft;
 use super::draw_trails::Trails;
 use fixstep::math::{Fx, Real};
 use fixstep::replay::InputFeed;
-use fixstep::world::{TickInput, World};
+use fixstep::world::{Health, TickInput, World};
 
 /// Fraction of the scene's largest side added around it, so the ground shows.
 const PADDING: f64 = 0.06;
@@ -26,6 +26,9 @@ pub struct Film {
     pub palette: Palette,
     /// Ticks per simulated second.
     pub tick_rate: u32,
+    /// What the run had to warn about up to the last frame ([`World::health`]): nothing
+    /// for a film made from frames.
+    pub health: Health,
 }
 
 /// A film stopped because its frames would hold too many figures.
@@ -112,7 +115,10 @@ impl Film {
                 keep(shot(&world, &trails))?;
             }
         }
-        Ok(Film::from_frames(frames, world.settings().tick_rate))
+        Ok(Film {
+            health: world.health(),
+            ..Film::from_frames(frames, world.settings().tick_rate)
+        })
     }
 
     /// The film of `frames`, with their shared bounds and colours.
@@ -122,6 +128,7 @@ impl Film {
             palette: Palette::of_frames(&frames),
             frames,
             tick_rate,
+            health: Health::default(),
         }
     }
 }
