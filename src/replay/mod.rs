@@ -14,13 +14,15 @@ mod file;
 pub mod format;
 mod record;
 pub mod scene_section;
+mod stream;
 mod verify;
 
-pub use atomic::{AtomicFile, write_atomic};
+pub use atomic::{AtomicFile, temporary_path_for, write_atomic};
 pub use decode::{MAX_FILE_LEN, StateVersionCheck};
 pub use error::{ReplayError, ReplayErrorKind};
 pub use feed::InputFeed;
 pub use file::Replay;
 pub use format::{Checkpoint, ReplayHeader, Section, content_hash};
 pub use record::{DEFAULT_CHECKSUM_EVERY, Recorder, record, rerecord};
+pub use stream::StreamingRecorder;
 pub use verify::{VerifyOutcome, verify};
