@@ -7,11 +7,18 @@ mod replay_support;
 
 mod bench_accuracy;
 mod bench_stability;
+#[cfg(target_os = "linux")]
+mod cli_bounded_memory;
 mod cli_commands;
+mod cli_interrupted_outputs;
 mod cli_mesh_files;
+mod cli_output_clashes;
 mod cli_query;
+mod cli_record_stream;
+mod cli_render_folder;
 mod cli_run_outputs;
 mod cli_scene_files;
+mod cli_usage_messages;
 mod net_inputs;
 mod net_peers;
 mod net_sync_test;

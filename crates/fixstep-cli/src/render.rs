@@ -4,6 +4,7 @@ use std::time::Instant;
 
 use super::args::RenderArgs;
 use super::output::print_line;
+use super::output_folder::OutputFolder;
 use super::scene_arg::resolve_source;
 use super::status::Status;
 use fixstep::world::checksum::hex;
@@ -30,8 +31,7 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
             args.every
         ));
     }
-    std::fs::create_dir_all(&args.out)
-        .map_err(|e| format!("{}: cannot create the directory: {e}", args.out.display()))?;
+    let folder = OutputFolder::create(&args.out)?;
     let world = source.build_world(&args.input)?;
     let colours = if args.flat {
         BodyColours::PerBody
@@ -62,7 +62,8 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
         every: args.every,
         flat: args.flat,
     };
-    let written = write_outputs(&film, &source.scene.name, &settings, &args.out)?;
+    let written = write_outputs(&film, &source.scene.name, &settings, folder.path())?;
+    folder.commit()?;
     let wall = started.elapsed();
     let out = args.out.display();
     print_line(&format!(
