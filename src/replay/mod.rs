@@ -25,4 +25,4 @@ pub use file::Replay;
 pub use format::{Checkpoint, ReplayHeader, Section, content_hash};
 pub use record::{DEFAULT_CHECKSUM_EVERY, Recorder, record, rerecord};
 pub use stream::StreamingRecorder;
-pub use verify::{VerifyOutcome, verify};
+pub use verify::{VerifyOutcome, verify, verify_with_progress};

@@ -37,12 +37,22 @@ pub enum VerifyOutcome {
 /// Simulates the replay's scene with its inputs and compares the world's checksum (total
 /// and every part) at each checkpoint; stops at the first difference.
 pub fn verify(replay: &Replay) -> Result<VerifyOutcome, SceneError> {
+    verify_with_progress(replay, |_| {})
+}
+
+/// [`verify`](fn@verify), calling `on_tick` with the number of ticks simulated after each
+/// tick (to show progress; it cannot change the outcome).
+pub fn verify_with_progress(
+    replay: &Replay,
+    mut on_tick: impl FnMut(u64),
+) -> Result<VerifyOutcome, SceneError> {
     let mut world = build_world(replay.scene())?;
     let mut feed = InputFeed::new(replay.inputs());
     for checkpoint in replay.checkpoints() {
         while world.tick() < checkpoint.tick {
             let tick = world.tick();
             world.step(feed.at(tick));
+            on_tick(world.tick());
         }
         let got = world.checksum();
         let objects = world.object_digests();

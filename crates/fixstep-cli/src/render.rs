@@ -5,6 +5,7 @@ use std::time::Instant;
 use super::args::RenderArgs;
 use super::output::print_line;
 use super::output_folder::OutputFolder;
+use super::progress::Progress;
 use super::scene_arg::resolve_source;
 use super::status::Status;
 use fixstep::world::checksum::hex;
@@ -39,15 +40,18 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
         BodyColours::Palette
     };
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
-    let film = Film::shoot(
+    let mut progress = Progress::new(ticks);
+    let film = Film::shoot_with_progress(
         world,
         &source.inputs,
         ticks,
         args.every,
         colours,
         MAX_FIGURES,
-    )
-    .map_err(|e| {
+        |done| progress.update(done),
+    );
+    progress.finish();
+    let film = film.map_err(|e| {
         format!(
             "{}: the frames up to tick {} hold {} figures, more than {}: draw fewer ticks \
              (--ticks) or a frame every more ticks (--every)",

@@ -3,8 +3,9 @@
 use std::path::Path;
 
 use super::output::{eprint_line, print_line};
+use super::progress::Progress;
 use super::status::Status;
-use fixstep::replay::{Replay, ReplayError, ReplayErrorKind, VerifyOutcome, verify};
+use fixstep::replay::{Replay, ReplayError, ReplayErrorKind, VerifyOutcome, verify_with_progress};
 use fixstep::world::checksum::hex;
 
 /// Verifies every file, reporting each; the status is the most severe of them.
@@ -20,7 +21,10 @@ pub fn verify_files(files: &[impl AsRef<Path>]) -> Result<Status, String> {
 fn verify_file(path: &Path) -> Result<Status, String> {
     let name = path.display();
     let outcome = Replay::read(path).and_then(|replay| {
-        verify(&replay)
+        let mut progress = Progress::new(replay.ticks());
+        let outcome = verify_with_progress(&replay, |done| progress.update(done));
+        progress.finish();
+        outcome
             .map_err(|e| ReplayError::new(name.to_string(), ReplayErrorKind::Scene(e.to_string())))
     });
     match outcome {
