@@ -1,7 +1,9 @@
 //! Atomic file output: readers see the old file or the complete new one, never a part.
 //!
-//! The bytes go to `<path>.tmp-<pid>` in the same directory, are flushed and synced to
-//! disk, and the temporary file is then renamed over `path` (an atomic replacement on the
+//! The bytes go to a temporary file of their own in the same directory,
+//! `.<name>.tmp-<pid>-<k>` (`k` counts the files this process has opened, so two outputs that
+//! name one file by different spellings never share a temporary file), are flushed and synced
+//! to disk, and the temporary file is then renamed over `path` (an atomic replacement on the
 //! same file system), after which the directory is synced so the rename itself survives a
 //! crash. A file that is dropped before [`AtomicFile::commit`], or whose commit fails, is
 //! removed and `path` is left untouched.
@@ -10,6 +12,7 @@ use std::ffi::OsString;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// An output file that appears at its path only once complete.
 #[derive(Debug)]
@@ -22,10 +25,8 @@ pub struct AtomicFile {
 impl AtomicFile {
     /// Starts writing the file that will replace `path`.
     pub fn create(path: &Path) -> io::Result<Self> {
-        let mut name = OsString::from(path.as_os_str());
-        name.push(format!(".tmp-{}", std::process::id()));
-        let temporary = PathBuf::from(name);
-        let file = File::create(&temporary)?;
+        let temporary = temporary_path_for(path)?;
+        let file = File::create_new(&temporary)?;
         Ok(Self {
             path: path.to_owned(),
             temporary,
@@ -36,6 +37,11 @@ impl AtomicFile {
     /// The path the file will have once committed.
     pub fn path(&self) -> &Path {
         &self.path
+    }
+
+    /// The temporary file the bytes go to until [`AtomicFile::commit`].
+    pub fn temporary_path(&self) -> &Path {
+        &self.temporary
     }
 
     /// Flushes, syncs and renames the file into place.
@@ -56,6 +62,20 @@ impl AtomicFile {
             .as_mut()
             .ok_or_else(|| io::Error::other("file already closed"))
     }
+}
+
+/// A fresh temporary path beside `path`: `.<name>.tmp-<pid>-<k>`, `k` unique in this process.
+/// Fails when `path` names no file (it ends in `..` or is a root).
+pub fn temporary_path_for(path: &Path) -> io::Result<PathBuf> {
+    static OPENED: AtomicU64 = AtomicU64::new(0);
+    let name = path
+        .file_name()
+        .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "the path names no file"))?;
+    let k = OPENED.fetch_add(1, Ordering::Relaxed);
+    let mut temporary = OsString::from(".");
+    temporary.push(name);
+    temporary.push(format!(".tmp-{}-{k}", std::process::id()));
+    Ok(path.with_file_name(temporary))
 }
 
 /// Flush, sync, rename, sync the directory.

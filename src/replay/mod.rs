@@ -15,9 +15,10 @@ pub mod format;
 mod record;
 mod scene_id;
 pub mod scene_section;
+mod stream;
 mod verify;
 
-pub use atomic::{AtomicFile, write_atomic};
+pub use atomic::{AtomicFile, temporary_path_for, write_atomic};
 pub use decode::{MAX_FILE_LEN, StateVersionCheck};
 pub use error::{ReplayError, ReplayErrorKind};
 pub use feed::InputFeed;
@@ -25,4 +26,5 @@ pub use file::Replay;
 pub use format::{Checkpoint, ReplayHeader, Section, content_hash};
 pub use record::{DEFAULT_CHECKSUM_EVERY, Recorder, record, rerecord};
 pub use scene_id::scene_id;
-pub use verify::{VerifyOutcome, verify, verify_reporting};
+pub use stream::StreamingRecorder;
+pub use verify::{VerifyOutcome, verify, verify_reporting, verify_with_progress};

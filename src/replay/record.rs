@@ -82,6 +82,12 @@ impl Recorder {
         report
     }
 
+    /// Takes the checkpoints captured so far out of the recorder (to write them as they come,
+    /// see [`StreamingRecorder`](super::StreamingRecorder)).
+    pub(super) fn drain_checkpoints(&mut self) -> std::vec::Drain<'_, Checkpoint> {
+        self.checkpoints.drain(..)
+    }
+
     /// The replay of the ticks run so far.
     pub fn finish(mut self) -> Replay {
         let ticks = self.world.tick();

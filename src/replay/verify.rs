@@ -37,31 +37,47 @@ pub enum VerifyOutcome {
 /// Simulates the replay's scene with its inputs and compares the world's checksum (total
 /// and every part) at each checkpoint; stops at the first difference.
 pub fn verify(replay: &Replay) -> Result<VerifyOutcome, SceneError> {
-    let mut world = build_world(replay.scene())?;
-    Ok(verify_world(replay, &mut world))
+    verify_with_progress(replay, |_| {})
 }
 
-/// [`verify`] with the divergence check on (sampled every `divergence_every` ticks),
-/// returning the world as it stopped as well, so that a driver can report what it has to
-/// warn about, as it would for a run ([`World::warnings`], [`World::health`]).
+/// [`verify`](fn@verify), calling `on_tick` with the number of ticks simulated after each
+/// tick (to show progress; it cannot change the outcome).
+pub fn verify_with_progress(
+    replay: &Replay,
+    mut on_tick: impl FnMut(u64),
+) -> Result<VerifyOutcome, SceneError> {
+    let mut world = build_world(replay.scene())?;
+    Ok(verify_world(replay, &mut world, &mut on_tick))
+}
+
+/// [`verify_with_progress`] with the divergence check on (sampled every
+/// `divergence_every` ticks), returning the world as it stopped as well, so that a driver
+/// can report what it has to warn about, as it would for a run ([`World::warnings`],
+/// [`World::health`]).
 pub fn verify_reporting(
     replay: &Replay,
     divergence_every: u64,
+    mut on_tick: impl FnMut(u64),
 ) -> Result<(VerifyOutcome, World), SceneError> {
     let mut world = build_world(replay.scene())?;
     world.enable_divergence_check(divergence_every);
-    let outcome = verify_world(replay, &mut world);
+    let outcome = verify_world(replay, &mut world, &mut on_tick);
     Ok((outcome, world))
 }
 
 /// Steps `world` (built from the replay's scene) through the replay's inputs, comparing
-/// each checkpoint.
-fn verify_world(replay: &Replay, world: &mut World) -> VerifyOutcome {
+/// each checkpoint and calling `on_tick` with the ticks simulated after each tick.
+fn verify_world(
+    replay: &Replay,
+    world: &mut World,
+    on_tick: &mut impl FnMut(u64),
+) -> VerifyOutcome {
     let mut feed = InputFeed::new(replay.inputs());
     for checkpoint in replay.checkpoints() {
         while world.tick() < checkpoint.tick {
             let tick = world.tick();
             world.step(feed.at(tick));
+            on_tick(world.tick());
         }
         let got = world.checksum();
         let objects = world.object_digests();

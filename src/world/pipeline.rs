@@ -349,7 +349,7 @@ impl<R: Real> World<R> {
         self.state.soft.as_mut()
     }
 
-    /// Warnings found when the world was built: mass ratios past 1:1000 between rigid
+    /// Warnings found when the world was built: mass ratios past 1:100 between rigid
     /// bodies that can touch or are jointed (see [`Scene::build`](crate::scene::Scene::build)),
     /// then soft-body networks past their stability bound, for the driver to report.
     pub fn warnings(&self) -> Vec<String> {

@@ -34,6 +34,7 @@ mod queries;
 mod readme_limits;
 mod replay_committed;
 mod replay_snapshot;
+mod replay_streaming;
 mod restore_support;
 mod rigid_broadphase;
 mod rigid_ccd;

@@ -265,7 +265,7 @@ fn record_and_metrics_to_one_file_is_an_error() {
         "--metrics",
         file.str(),
     ]);
-    run.assert_error(&[file.str(), "--record and --metrics name the same file"]);
+    run.assert_error(&[&format!("--metrics {0} is also --record {0}", file.str())]);
     assert!(!file.path().exists());
 }
 

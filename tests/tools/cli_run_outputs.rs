@@ -111,7 +111,7 @@ fn two_outputs_to_one_file_are_refused() {
         "--events",
         file.str(),
     ]);
-    run.assert_error(&[file.str(), "--bodies and --events name the same file"]);
+    run.assert_error(&[&format!("--events {0} is also --bodies {0}", file.str())]);
     assert!(!file.path().exists());
 }
 

@@ -48,7 +48,7 @@ fn a_heavy_box_on_a_light_one_is_named_at_build() {
     assert!(
         lines[0].starts_with(
             "warning: rigid.bodies: bodies 1 (1 kg) and 2 (100000 kg) can touch, a mass ratio \
-             of 1:100000, past 1:1000"
+             of 1:100000, past 1:100"
         ),
         "{}",
         run.stderr

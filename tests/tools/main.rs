@@ -7,12 +7,19 @@ mod replay_support;
 
 mod bench_accuracy;
 mod bench_stability;
+#[cfg(target_os = "linux")]
+mod cli_bounded_memory;
 mod cli_commands;
 mod cli_input_files;
+mod cli_interrupted_outputs;
 mod cli_mesh_files;
+mod cli_output_clashes;
 mod cli_query;
+mod cli_record_stream;
+mod cli_render_folder;
 mod cli_run_outputs;
 mod cli_scene_files;
+mod cli_usage_messages;
 mod cli_warnings;
 mod net_handshake;
 mod net_inputs;

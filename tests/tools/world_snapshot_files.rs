@@ -258,7 +258,7 @@ fn run_refuses_one_file_for_two_outputs() {
         "--metrics",
         out.str(),
     ]);
-    run.assert_error(&[out.str(), "--metrics and --snapshot name the same file"]);
+    run.assert_error(&[&format!("--snapshot {0} is also --metrics {0}", out.str())]);
     assert!(!out.path().exists());
 }
 

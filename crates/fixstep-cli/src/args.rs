@@ -4,8 +4,11 @@
 use std::net::SocketAddr;
 use std::path::PathBuf;
 
+#[cfg(feature = "net")]
+use clap::builder::TypedValueParser as _;
 use clap::{Args, Parser, Subcommand};
 
+use super::count_arg::Count;
 use fixstep_viewer::View;
 
 /// Deterministic fixed-point physics: run scenes, record and verify replays.
@@ -97,7 +100,8 @@ pub struct RunArgs {
     #[arg(value_name = "SCENE|FILE.ron", default_value = "showcase")]
     pub scene: String,
     /// Ticks to run (default: the scene's `ticks`).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = Count::at_least("--ticks", 1))]
     pub ticks: Option<u64>,
     /// Seed of the world's generator, decimal or 0x-prefixed hex (default: the scene's).
     #[arg(long, value_name = "S", value_parser = parse_seed)]
@@ -120,8 +124,8 @@ pub struct RunArgs {
     pub events: Option<PathBuf>,
     /// Write the --metrics and --bodies rows every K ticks (from tick 0, and after the last
     /// tick).
-    #[arg(long, value_name = "K", default_value_t = 1,
-          value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "K", default_value_t = 1, allow_negative_numbers = true,
+          value_parser = Count::at_least("--every", 1))]
     pub every: u64,
     /// Save the world's final state as a snapshot file.
     #[arg(long, value_name = "OUT.snapshot")]
@@ -158,14 +162,15 @@ pub struct RenderArgs {
     #[arg(value_name = "REPLAY|SCENE")]
     pub input: String,
     /// Ticks to simulate (default: the replay's ticks, or the scene's `ticks`).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = Count::at_least("--ticks", 1))]
     pub ticks: Option<u64>,
     /// Output directory (created if missing).
     #[arg(long, value_name = "DIR", default_value = "render-out")]
     pub out: PathBuf,
     /// Draw a frame every K ticks (and after the last tick).
-    #[arg(long, value_name = "K", default_value_t = 1,
-          value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "K", default_value_t = 1, allow_negative_numbers = true,
+          value_parser = Count::at_least("--every", 1))]
     pub every: u64,
     /// The view of the pictures and the GIF, and the player's first view.
     #[arg(long, value_name = "iso|front|top", default_value = "iso", value_parser = parse_view)]
@@ -191,7 +196,8 @@ pub struct QueryArgs {
     #[arg(value_name = "SCENE|FILE.ron|FILE.replay")]
     pub input: String,
     /// Simulate this many ticks before the query.
-    #[arg(long, value_name = "N", default_value_t = 0)]
+    #[arg(long, value_name = "N", default_value_t = 0, allow_negative_numbers = true,
+          value_parser = Count::at_least("--tick", 0))]
     pub tick: u64,
     /// Cast a ray from (OX,OY,OZ) along (DX,DY,DZ) (any length but zero): prints the first
     /// hit, or `{"hit":false}`.
@@ -271,7 +277,8 @@ pub struct PeerArgs {
     #[arg(long, value_name = "S", default_value = "showcase")]
     pub scene: String,
     /// Ticks to run (default: the scene's `ticks`).
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", allow_negative_numbers = true,
+          value_parser = Count::at_least("--ticks", 1))]
     pub ticks: Option<u64>,
     /// Lockstep: every tick waits for every peer's input (the default).
     #[arg(long, conflicts_with = "rollback")]
@@ -290,8 +297,9 @@ pub struct PeerArgs {
     #[arg(long, value_name = "FILE.ron", conflicts_with = "bot")]
     pub inputs: Option<PathBuf>,
     /// Ticks between two desync checks.
-    #[arg(long, value_name = "N", default_value_t = 10,
-          value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = 10, allow_negative_numbers = true,
+          value_parser = Count::within("--desync-every", 1, u64::from(u32::MAX))
+              .map(|n| u32::try_from(n).unwrap_or(u32::MAX)))]
     pub desync_every: u32,
     /// Give up after this many seconds (synchronisation included).
     #[arg(long, value_name = "SECONDS", default_value_t = 60,

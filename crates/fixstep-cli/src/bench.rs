@@ -8,8 +8,8 @@ use std::time::Instant;
 
 use super::args::BenchCommand;
 use super::output::{print_line, write_error};
+use super::output_file::OutputFile;
 use super::status::Status;
-use fixstep::replay::AtomicFile;
 use fixstep_bench::{
     AccuracyConfig, StabilityConfig, accuracy_csv, floors_table, measured_orders, orders_table,
     run_accuracy, run_stability, stability_csv, stability_table, work_precision_svg,
@@ -86,15 +86,14 @@ fn output_directory(dir: &Path) -> Result<(), String> {
         .map_err(|e| format!("{}: cannot create the output directory: {e}", dir.display()))
 }
 
-/// Starts the atomic output file `path`.
-fn open(path: &Path) -> Result<AtomicFile, String> {
-    AtomicFile::create(path).map_err(|e| write_error(path, &e))
+/// Starts the output file `path`.
+fn open(path: &Path) -> Result<OutputFile, String> {
+    OutputFile::create(path)
 }
 
 /// Writes `bytes` to `file` and puts it in place.
-fn commit(mut file: AtomicFile, bytes: &[u8]) -> Result<(), String> {
-    let path = file.path().to_owned();
+fn commit(mut file: OutputFile, bytes: &[u8]) -> Result<(), String> {
     file.write_all(bytes)
-        .and_then(|()| file.commit())
-        .map_err(|e| write_error(&path, &e))
+        .map_err(|e| write_error(file.path(), &e))?;
+    file.commit()
 }

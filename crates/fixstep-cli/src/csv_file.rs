@@ -5,19 +5,19 @@ use std::io::Write;
 use std::path::Path;
 
 use super::output::write_error;
-use fixstep::replay::AtomicFile;
+use super::output_file::OutputFile;
 
 /// A CSV output file, written to a temporary file and renamed into place by
 /// [`CsvFile::commit`].
 #[derive(Debug)]
 pub struct CsvFile {
-    file: AtomicFile,
+    file: OutputFile,
 }
 
 impl CsvFile {
     /// Starts the file at `path` with `header` as its first line.
     pub fn create(path: &Path, header: &str) -> Result<Self, String> {
-        let file = AtomicFile::create(path).map_err(|e| write_error(path, &e))?;
+        let file = OutputFile::create(path)?;
         let mut csv = Self { file };
         csv.line(header)?;
         Ok(csv)
@@ -30,7 +30,6 @@ impl CsvFile {
 
     /// Puts the file in place.
     pub fn commit(self) -> Result<(), String> {
-        let path = self.file.path().to_owned();
-        self.file.commit().map_err(|e| write_error(&path, &e))
+        self.file.commit()
     }
 }

@@ -24,8 +24,10 @@
 //! ```
 //!
 //! Exit status: 0 success; 1 a replay or a peer desynchronised; 2 a bad argument, an unreadable or
-//! invalid input, or a failed write. Errors are one line on standard error starting with
-//! `error: `.
+//! invalid input, an output that is also an input or another output, or a failed write;
+//! 130 or 143 when SIGINT or SIGTERM stopped it (its temporary files removed). Errors are one
+//! line on standard error starting with `error: `. Outputs appear only once complete: each is
+//! written to a temporary file beside it and renamed into place.
 
 // The modules' documentation is for developers and links to private items (read it with
 // `cargo doc --document-private-items`, as the test command builds it).
@@ -34,11 +36,15 @@
 mod args;
 mod bench;
 mod bodies_csv;
+mod count_arg;
 mod csv_file;
 mod events_csv;
+mod file_identity;
 mod info;
 mod metrics_csv;
 mod output;
+mod output_file;
+mod output_folder;
 #[cfg(feature = "net")]
 mod peer;
 mod progress;
@@ -50,7 +56,9 @@ mod run;
 mod scene_arg;
 mod scenes;
 mod status;
+mod temporaries;
 mod timing_table;
+mod usage_error;
 mod verify;
 mod warnings;
 
@@ -74,17 +82,26 @@ pub fn main() -> i32 {
             "error: internal error (a bug in fixstep): {report}"
         ));
     }));
+    if let Err(message) = temporaries::remove_on_signal() {
+        output::eprint_line(&format!("error: {message}"));
+        return Status::Invalid.code();
+    }
     main_with_args(std::env::args_os())
 }
 
 /// Runs a command line (`args` starts with the program name); returns the exit code.
 pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone>) -> i32 {
-    let cli = match Cli::try_parse_from(args) {
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
-        Err(error) => {
-            // Usage errors exit 2; --help and --version exit 0.
+        Err(error) if error.exit_code() == 0 => {
+            // --help and --version.
             let _ = error.print();
-            return error.exit_code();
+            return 0;
+        }
+        Err(error) => {
+            output::eprint_line(&usage_error::usage_error_line(&error, &args));
+            return Status::Invalid.code();
         }
     };
     if let Err(message) = fixstep::math::cpu::cap_from_env() {

@@ -4,10 +4,11 @@ use std::io::Write;
 use std::time::{Duration, Instant};
 
 use super::args::PeerArgs;
+use super::file_identity::{NamedFile, refuse_shared_files};
 use super::output::{print_line, write_error};
-use super::scene_arg::resolve_scene;
+use super::output_file::OutputFile;
+use super::scene_arg::{resolve_scene, scene_file};
 use super::status::Status;
-use fixstep::replay::AtomicFile;
 use fixstep::world::checksum::hex;
 use fixstep_net::{
     Bot, DesyncReport, InputSource, Mode, PeerOptions, PeerOutcome, build_world, part_byte,
@@ -18,6 +19,7 @@ use fixstep_net::{
 /// checksum of the confirmed world after the last tick; on a desync, one line names the
 /// frame, both checksums and the part that differs, and the status is [`Status::Desync`].
 pub fn peer(args: &PeerArgs) -> Result<Status, String> {
+    refuse_clashes(args)?;
     let scene = resolve_scene(&args.scene)?;
     let ticks = args.ticks.unwrap_or(scene.ticks);
     let mode = if args.rollback {
@@ -33,11 +35,7 @@ pub fn peer(args: &PeerArgs) -> Result<Status, String> {
         }
     };
     // Open the replay first, so that a bad path fails before the session.
-    let replay_file = args
-        .record
-        .as_deref()
-        .map(|path| AtomicFile::create(path).map_err(|e| write_error(path, &e)))
-        .transpose()?;
+    let replay_file = args.record.as_deref().map(OutputFile::create).transpose()?;
     let name = scene.name.clone();
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
     let outcome = run_peer(PeerOptions {
@@ -74,14 +72,30 @@ pub fn peer(args: &PeerArgs) -> Result<Status, String> {
                 let bytes = replay
                     .to_bytes()
                     .map_err(|e| format!("{}: cannot encode the replay: {e}", path.display()))?;
-                file.write_all(&bytes)
-                    .and_then(|()| file.commit())
-                    .map_err(|e| write_error(&path, &e))?;
+                file.write_all(&bytes).map_err(|e| write_error(&path, &e))?;
+                file.commit()?;
             }
             print_line(&format!("checksum: {}", hex(checksum)))?;
             Ok(Status::Ok)
         }
     }
+}
+
+/// Refuses a `--record` file that is also the scene file or the `--inputs` file.
+fn refuse_clashes(args: &PeerArgs) -> Result<(), String> {
+    let mut inputs = Vec::new();
+    if let Some(path) = scene_file(&args.scene) {
+        inputs.push(NamedFile::new("the scene file", path));
+    }
+    if let Some(path) = &args.inputs {
+        inputs.push(NamedFile::new("--inputs", path));
+    }
+    let outputs: Vec<NamedFile> = args
+        .record
+        .iter()
+        .map(|path| NamedFile::new("--record", path))
+        .collect();
+    refuse_shared_files(&inputs, &outputs)
 }
 
 /// `desync at frame F with peer ADDR: local checksum L, remote checksum R; sub-checksum

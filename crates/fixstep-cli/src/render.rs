@@ -4,6 +4,8 @@ use std::time::Instant;
 
 use super::args::RenderArgs;
 use super::output::print_line;
+use super::output_folder::OutputFolder;
+use super::progress::Progress;
 use super::scene_arg::resolve_source;
 use super::status::Status;
 use super::warnings::{DIVERGENCE_CHECK_EVERY, health_warnings, print_warnings};
@@ -31,8 +33,7 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
             args.every
         ));
     }
-    std::fs::create_dir_all(&args.out)
-        .map_err(|e| format!("{}: cannot create the directory: {e}", args.out.display()))?;
+    let folder = OutputFolder::create(&args.out)?;
     let mut world = source.build_world(&args.input)?;
     world.enable_divergence_check(DIVERGENCE_CHECK_EVERY);
     print_warnings(None, world.warnings());
@@ -42,15 +43,18 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
         BodyColours::Palette
     };
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
-    let film = Film::shoot(
+    let mut progress = Progress::new(ticks);
+    let film = Film::shoot_with_progress(
         world,
         &source.inputs,
         ticks,
         args.every,
         colours,
         MAX_FIGURES,
-    )
-    .map_err(|e| {
+        |done| progress.update(done),
+    );
+    progress.finish();
+    let film = film.map_err(|e| {
         format!(
             "{}: the frames up to tick {} hold {} figures, more than {}: draw fewer ticks \
              (--ticks) or a frame every more ticks (--every)",
@@ -65,7 +69,8 @@ pub fn render(args: &RenderArgs) -> Result<Status, String> {
         every: args.every,
         flat: args.flat,
     };
-    let written = write_outputs(&film, &source.scene.name, &settings, &args.out)?;
+    let written = write_outputs(&film, &source.scene.name, &settings, folder.path())?;
+    folder.commit()?;
     let wall = started.elapsed();
     let out = args.out.display();
     print_line(&format!(

@@ -3,8 +3,9 @@
 use std::path::Path;
 
 use super::output::{eprint_line, print_line};
+use super::output_file::OutputFile;
 use super::status::Status;
-use fixstep::replay::{Replay, StateVersionCheck, rerecord, write_atomic};
+use fixstep::replay::{Replay, StateVersionCheck, rerecord};
 use fixstep::world::STATE_VERSION;
 use fixstep::world::checksum::hex;
 
@@ -28,7 +29,7 @@ fn rerecord_file(path: &Path) -> Result<Status, String> {
             let bytes = new
                 .to_bytes()
                 .map_err(|e| format!("{name}: cannot encode the replay: {e}"))?;
-            write_atomic(path, &bytes).map_err(|e| format!("{name}: cannot write: {e}"))?;
+            OutputFile::write(path, &bytes)?;
             Ok((old, new))
         });
     match result {

@@ -9,16 +9,23 @@ use fixstep::scene::{Scene, load_scene_file};
 use fixstep::world::{TickInput, World};
 use fixstep_scenes::{BUILTIN_SCENES, builtin_scene};
 
-/// The scene `arg` names. A built-in name wins unless `arg` looks like a path (ends in
-/// `.ron` or contains a path separator); anything else that exists is read as a RON file.
-pub fn resolve_scene(arg: &str) -> Result<Scene<Fx>, String> {
+/// The file the SCENE argument `arg` names, or `None` when it is a built-in scene's name
+/// or names nothing. A built-in name wins unless `arg` looks like a path (ends in `.ron` or
+/// contains a path separator); anything else that exists is a file.
+pub fn scene_file(arg: &str) -> Option<&Path> {
     let path = Path::new(arg);
     let looks_like_path = arg.ends_with(".ron") || arg.contains('/') || arg.contains('\\');
-    if !looks_like_path && let Some(scene) = builtin_scene(arg) {
-        return Ok(scene);
-    }
-    if looks_like_path || path.exists() {
+    let builtin = BUILTIN_SCENES.iter().any(|(name, _)| *name == arg);
+    (looks_like_path || (!builtin && path.exists())).then_some(path)
+}
+
+/// The scene `arg` names: a built-in scene or a RON file (see [`scene_file`]).
+pub fn resolve_scene(arg: &str) -> Result<Scene<Fx>, String> {
+    if let Some(path) = scene_file(arg) {
         return load_scene_file(path).map_err(|e| e.to_string());
+    }
+    if let Some(scene) = builtin_scene(arg) {
+        return Ok(scene);
     }
     let names: Vec<&str> = BUILTIN_SCENES.iter().map(|(name, _)| *name).collect();
     Err(format!(

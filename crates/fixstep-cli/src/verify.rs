@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use super::output::{eprint_line, print_line};
+use super::progress::Progress;
 use super::status::Status;
 use super::warnings::{DIVERGENCE_CHECK_EVERY, health_warnings, print_warnings};
 use fixstep::replay::{Replay, ReplayError, ReplayErrorKind, VerifyOutcome, verify_reporting};
@@ -21,7 +22,12 @@ pub fn verify_files(files: &[impl AsRef<Path>]) -> Result<Status, String> {
 fn verify_file(path: &Path) -> Result<Status, String> {
     let name = path.display();
     let outcome = Replay::read(path).and_then(|replay| {
-        verify_reporting(&replay, DIVERGENCE_CHECK_EVERY)
+        let mut progress = Progress::new(replay.ticks());
+        let outcome = verify_reporting(&replay, DIVERGENCE_CHECK_EVERY, |done| {
+            progress.update(done)
+        });
+        progress.finish();
+        outcome
             .map_err(|e| ReplayError::new(name.to_string(), ReplayErrorKind::Scene(e.to_string())))
     });
     if let Ok((_, world)) = &outcome {

@@ -72,12 +72,26 @@ impl Film {
     /// last tick; particles leave trails (see [`Trails`]). Every frame is held until the film is complete, so the film stops with
     /// an error once its frames hold more than `max_figures` figures in all.
     pub fn shoot(
+        world: World<Fx>,
+        inputs: &[TickInput<Fx>],
+        ticks: u64,
+        every: u64,
+        colours: BodyColours,
+        max_figures: usize,
+    ) -> Result<Film, TooManyFigures> {
+        Self::shoot_with_progress(world, inputs, ticks, every, colours, max_figures, |_| {})
+    }
+
+    /// [`Film::shoot`], calling `on_tick` with the number of ticks simulated after each
+    /// tick (to show progress).
+    pub fn shoot_with_progress(
         mut world: World<Fx>,
         inputs: &[TickInput<Fx>],
         ticks: u64,
         every: u64,
         colours: BodyColours,
         max_figures: usize,
+        mut on_tick: impl FnMut(u64),
     ) -> Result<Film, TooManyFigures> {
         let every = every.max(1);
         let mut feed = InputFeed::new(inputs);
@@ -114,6 +128,7 @@ impl Film {
             if done % every == 0 || done == ticks {
                 keep(shot(&world, &trails))?;
             }
+            on_tick(done);
         }
         Ok(Film {
             health: world.health(),
