@@ -7,7 +7,7 @@
 #                                         target for SECONDS
 #   scripts/fuzz.sh run TARGET [SECONDS]  fuzz one target (default: until stopped)
 #
-# Targets: handshake_decode (fuzz_targets/handshake_decode.rs), mesh_obj, replay_decode,
+# Targets: cli_args (fuzz/src/cli_args.rs), handshake_decode (fuzz_targets/handshake_decode.rs), mesh_obj, replay_decode,
 # scene_ron, snapshot_decode, world_step (see fuzz/src/lib.rs).
 # The working corpus is fuzz/corpus/TARGET (not committed), started from fuzz/seeds/TARGET.
 # A crash lands in fuzz/artifacts/TARGET/; once fixed, copy it to fuzz/regressions/TARGET/,
@@ -21,7 +21,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-TARGETS=(handshake_decode mesh_obj replay_decode scene_ron snapshot_decode world_step)
+TARGETS=(cli_args handshake_decode mesh_obj replay_decode scene_ron snapshot_decode world_step)
 
 # libFuzzer's instrumentation, as cargo-fuzz 0.13 sets it by default on Linux.
 FUZZ_RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4
@@ -64,7 +64,37 @@ seeds() {
   done
   cargo run --release --quiet -p fixstep-net --example handshake_seeds -- \
     fuzz/seeds/handshake_decode
+  cli_seeds
   echo "seeds: $(find fuzz/seeds -type f | wc -l) files in fuzz/seeds/"
+}
+
+# The command lines cli_args starts from, arguments separated by NUL bytes: each command's
+# usual forms, its refusals (bad counts, clashing outputs) and help.
+cli_seeds() {
+  local dir=fuzz/seeds/cli_args i=0 line
+  while IFS= read -r line; do
+    i=$((i + 1))
+    printf '%s' "$line" | tr ' ' '\0' >"$dir/$(printf '%02d' "$i")"
+  done <<'LINES'
+run stack --ticks 60
+run stack --ticks -1
+run scenes/rigid.ron --record scenes/rigid.ron
+run stack --record x.replay --metrics ./x.replay --every 0
+run stack --bodies b.csv --events e.csv --snapshot s.snapshot --seed 7
+run stack --from-snapshot s.snapshot --metrics s.snapshot
+verify replays/stack.replay replays/cradle.replay
+info replays/stack.replay
+render stack --out frames --every 5 --size 320x240 --view top --flat
+render stack --size 0x0 --view sideways
+query stack --tick 10 --ray 0,5,0,0,-1,0 --max 20 --mask 3
+query stack --cast capsule:0.1,0.5 --from 0,5,0 --dir 0,-1,0
+query stack --overlap box:1,1,1 --at 0,0,0
+peer --local-port 7122 --remote 127.0.0.1:7123 --player-index 1 --record p.replay --inputs p.replay
+bench accuracy --quick
+bench
+--help
+scenes --version
+LINES
 }
 
 # run_target TARGET MODE: MODE `replay` runs the seeds and kept crashes once; a number

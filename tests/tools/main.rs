@@ -8,6 +8,7 @@ mod replay_support;
 mod bench_accuracy;
 mod bench_stability;
 #[cfg(target_os = "linux")]
+mod cli_args_seeds;
 mod cli_bounded_memory;
 mod cli_commands;
 mod cli_input_files;

@@ -37,5 +37,7 @@ pub use order::{Distrust, MeasuredOrder, OrderRow, measured_orders};
 pub use plot::work_precision_svg;
 pub use problems::{Outcome, Problem};
 pub use report::{accuracy_csv, floors_table, orders_table, stability_csv, stability_table};
-pub use stability::{Measured, StabilityConfig, StabilityRow, Theory, run_stability};
-pub use sweep::{AccuracyConfig, AccuracyRow, run_accuracy};
+pub use stability::{
+    Measured, StabilityConfig, StabilityRow, Theory, run_stability, run_stability_with_progress,
+};
+pub use sweep::{AccuracyConfig, AccuracyRow, run_accuracy, run_accuracy_with_progress};

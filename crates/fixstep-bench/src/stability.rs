@@ -98,6 +98,12 @@ pub struct StabilityConfig {
 }
 
 impl StabilityConfig {
+    /// The number of limits the sweep measures: one per integrator, damping ratio and
+    /// format.
+    pub fn limits(&self) -> usize {
+        self.integrators.len() * self.damping_ratios.len() * self.formats.len()
+    }
+
     /// Every scheme; ζ = 0, 0.1, 0.5 and 1; f64 and I32F32.
     pub fn full() -> Self {
         Self {
@@ -125,6 +131,15 @@ pub struct StabilityRow {
 
 /// Measures every limit of `config`, by integrator, then ζ, then format.
 pub fn run_stability(config: &StabilityConfig) -> Vec<StabilityRow> {
+    run_stability_with_progress(config, |_| {})
+}
+
+/// [`run_stability`], calling `on_limit` with the number of limits measured after each one
+/// (of [`StabilityConfig::limits`]), to show progress.
+pub fn run_stability_with_progress(
+    config: &StabilityConfig,
+    mut on_limit: impl FnMut(usize),
+) -> Vec<StabilityRow> {
     let mut rows = Vec::new();
     for &integrator in &config.integrators {
         for &damping_ratio in &config.damping_ratios {
@@ -138,6 +153,7 @@ pub fn run_stability(config: &StabilityConfig) -> Vec<StabilityRow> {
                     }),
                     theory: theory(integrator, damping_ratio),
                 });
+                on_limit(rows.len());
             }
         }
     }

@@ -25,6 +25,15 @@ pub struct AccuracyConfig {
 }
 
 impl AccuracyConfig {
+    /// The number of points the sweep measures: one per problem, integrator, format and
+    /// step.
+    pub fn points(&self) -> usize {
+        self.problems.len()
+            * self.integrators.len()
+            * self.formats.len()
+            * (self.halvings as usize + 1)
+    }
+
     /// Everything, 8 halvings, one run per point: a few seconds in release.
     pub fn quick() -> Self {
         Self {
@@ -92,6 +101,15 @@ impl AccuracyRow {
 /// Runs the sweep. Rows come grouped by problem, then integrator, then format (in the
 /// config's orders), each group from the coarsest step to the finest.
 pub fn run_accuracy(config: &AccuracyConfig) -> Vec<AccuracyRow> {
+    run_accuracy_with_progress(config, |_| {})
+}
+
+/// [`run_accuracy`], calling `on_point` with the number of points measured after each one
+/// (of [`AccuracyConfig::points`]), to show progress.
+pub fn run_accuracy_with_progress(
+    config: &AccuracyConfig,
+    mut on_point: impl FnMut(usize),
+) -> Vec<AccuracyRow> {
     let mut rows = Vec::new();
     for &problem in &config.problems {
         let coarsest = problem.coarsest_log2_inverse_step();
@@ -99,6 +117,7 @@ pub fn run_accuracy(config: &AccuracyConfig) -> Vec<AccuracyRow> {
             for &format in &config.formats {
                 for k in coarsest..=coarsest + config.halvings {
                     rows.push(measure(problem, integrator, format, k, config.repeats));
+                    on_point(rows.len());
                 }
             }
         }

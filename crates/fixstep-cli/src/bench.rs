@@ -9,10 +9,12 @@ use std::time::Instant;
 use super::args::BenchCommand;
 use super::output::{print_line, write_error};
 use super::output_file::OutputFile;
+use super::progress::Progress;
 use super::status::Status;
 use fixstep_bench::{
     AccuracyConfig, StabilityConfig, accuracy_csv, floors_table, measured_orders, orders_table,
-    run_accuracy, run_stability, stability_csv, stability_table, work_precision_svg,
+    run_accuracy_with_progress, run_stability_with_progress, stability_csv, stability_table,
+    work_precision_svg,
 };
 
 /// Runs the benchmark `command` names.
@@ -35,7 +37,9 @@ fn accuracy(out: &Path, quick: bool) -> Result<Status, String> {
         AccuracyConfig::full()
     };
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
-    let rows = run_accuracy(&config);
+    let mut progress = Progress::runs(config.points());
+    let rows = run_accuracy_with_progress(&config, |done| progress.update(done as u64));
+    progress.finish();
     let wall = started.elapsed().as_secs_f64();
     let orders = measured_orders(&rows);
     commit(csv, accuracy_csv(&rows).as_bytes())?;
@@ -63,7 +67,10 @@ fn stability(out: &Path) -> Result<Status, String> {
     output_directory(out)?;
     let csv = open(&out.join("stability.csv"))?;
     let started = Instant::now(); // ok-det: wall time is reported, never simulated
-    let rows = run_stability(&StabilityConfig::full());
+    let config = StabilityConfig::full();
+    let mut progress = Progress::runs(config.limits());
+    let rows = run_stability_with_progress(&config, |done| progress.update(done as u64));
+    progress.finish();
     let wall = started.elapsed().as_secs_f64();
     commit(csv, stability_csv(&rows).as_bytes())?;
     for line in stability_table(&rows) {

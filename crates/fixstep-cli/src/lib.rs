@@ -89,18 +89,50 @@ pub fn main() -> i32 {
     main_with_args(std::env::args_os())
 }
 
+/// A command line read and checked before any work ([`read_command_line`]).
+#[derive(Debug)]
+pub enum CommandLine {
+    /// A command to run.
+    Command(Box<Cli>),
+    /// `--help` or `--version`: the text to print, and nothing to run.
+    Help(String),
+}
+
+/// Reads a command line (`args` starts with the program name) and makes every check that
+/// comes before any work: its usage (clap's, and the options' own parsers: counts, shapes,
+/// sizes), and that no output of `run` or `peer` is one of its inputs or another of its
+/// outputs, however the paths are spelt (which reads files' metadata, nothing more). `Err`
+/// holds the one line to print, `error: …`. The fuzz target `cli_args` feeds it arbitrary
+/// command lines.
+pub fn read_command_line(args: &[OsString]) -> Result<CommandLine, String> {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(error) if error.exit_code() == 0 => {
+            return Ok(CommandLine::Help(error.render().to_string()));
+        }
+        Err(error) => return Err(usage_error::usage_error_line(&error, args)),
+    };
+    let checked = match &cli.command {
+        Some(Command::Run(args)) => run::refuse_clashes(args),
+        #[cfg(feature = "net")]
+        Some(Command::Peer(args)) => peer::refuse_clashes(args),
+        _ => Ok(()),
+    };
+    checked.map_err(|message| format!("error: {message}"))?;
+    Ok(CommandLine::Command(Box::new(cli)))
+}
+
 /// Runs a command line (`args` starts with the program name); returns the exit code.
 pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone>) -> i32 {
     let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
-    let cli = match Cli::try_parse_from(&args) {
-        Ok(cli) => cli,
-        Err(error) if error.exit_code() == 0 => {
-            // --help and --version.
-            let _ = error.print();
+    let cli = match read_command_line(&args) {
+        Ok(CommandLine::Command(cli)) => cli,
+        Ok(CommandLine::Help(text)) => {
+            output::print_text(&text);
             return 0;
         }
-        Err(error) => {
-            output::eprint_line(&usage_error::usage_error_line(&error, &args));
+        Err(line) => {
+            output::eprint_line(&line);
             return Status::Invalid.code();
         }
     };

@@ -14,6 +14,13 @@ pub fn print_line(line: &str) -> Result<(), String> {
         .map_err(|e| format!("cannot write to standard output: {e}"))
 }
 
+/// Writes `text` as it is to standard output (help pages); errors are ignored, since the
+/// text is all the command had to say.
+pub fn print_text(text: &str) {
+    let mut out = std::io::stdout().lock();
+    let _ = out.write_all(text.as_bytes()).and_then(|()| out.flush());
+}
+
 /// Writes `line` and a newline to standard error; errors are ignored, since there is
 /// nowhere left to report them.
 pub fn eprint_line(line: &str) {

@@ -18,8 +18,8 @@ use fixstep_net::{
 /// Runs the peer. On success the last line printed is `checksum: <16 hex digits>`, the
 /// checksum of the confirmed world after the last tick; on a desync, one line names the
 /// frame, both checksums and the part that differs, and the status is [`Status::Desync`].
+/// The caller has made the checks of [`read_command_line`](crate::read_command_line).
 pub fn peer(args: &PeerArgs) -> Result<Status, String> {
-    refuse_clashes(args)?;
     let scene = resolve_scene(&args.scene)?;
     let ticks = args.ticks.unwrap_or(scene.ticks);
     let mode = if args.rollback {
@@ -82,7 +82,7 @@ pub fn peer(args: &PeerArgs) -> Result<Status, String> {
 }
 
 /// Refuses a `--record` file that is also the scene file or the `--inputs` file.
-fn refuse_clashes(args: &PeerArgs) -> Result<(), String> {
+pub fn refuse_clashes(args: &PeerArgs) -> Result<(), String> {
     let mut inputs = Vec::new();
     if let Some(path) = scene_file(&args.scene) {
         inputs.push(NamedFile::new("the scene file", path));

@@ -9,10 +9,12 @@ const MIN_TICKS: u64 = 2000;
 const WIDTH: u64 = 40;
 
 /// A one-line progress bar, redrawn when the percentage changes. Shown only when standard
-/// error is a terminal and the run is long; otherwise every call does nothing.
+/// error is a terminal and the work is long; otherwise every call does nothing.
 #[derive(Debug)]
 pub struct Progress {
     total: u64,
+    /// What is counted, for the line: `tick`, `run`.
+    unit: &'static str,
     shown_percent: Option<u64>,
     enabled: bool,
 }
@@ -22,8 +24,19 @@ impl Progress {
     pub fn new(total: u64) -> Self {
         Self {
             total,
+            unit: "tick",
             shown_percent: None,
             enabled: total > MIN_TICKS && std::io::stderr().is_terminal(),
+        }
+    }
+
+    /// A bar for a benchmark of `total` runs, each of which may take seconds.
+    pub fn runs(total: usize) -> Self {
+        Self {
+            total: total as u64,
+            unit: "run",
+            shown_percent: None,
+            enabled: total > 0 && std::io::stderr().is_terminal(),
         }
     }
 
@@ -46,7 +59,8 @@ impl Progress {
         let total = self.total;
         let _ = write!(
             std::io::stderr().lock(),
-            "\r[{bar}] {percent:3}% tick {done}/{total}"
+            "\r[{bar}] {percent:3}% {} {done}/{total}",
+            self.unit
         );
     }
 

@@ -137,7 +137,7 @@ fn resume(scene: &Scene<Fx>, path: &Path) -> Result<Simulation<Fx>, String> {
 
 /// Refuses an output that is also an input (the scene file, the snapshot resumed from) or
 /// another output, however the paths are spelt.
-fn refuse_clashes(args: &RunArgs) -> Result<(), String> {
+pub fn refuse_clashes(args: &RunArgs) -> Result<(), String> {
     let mut inputs = Vec::new();
     if let Some(path) = scene_file(&args.scene) {
         inputs.push(NamedFile::new("the scene file", path));
@@ -159,8 +159,8 @@ fn refuse_clashes(args: &RunArgs) -> Result<(), String> {
 }
 
 /// Runs the scene. The last line printed is `checksum: <16 hex digits>`.
+/// The caller has made the checks of [`read_command_line`](crate::read_command_line).
 pub fn run(args: &RunArgs) -> Result<Status, String> {
-    refuse_clashes(args)?;
     let mut scene = resolve_scene(&args.scene)?;
     if let Some(seed) = args.seed {
         scene.seed = seed;
