@@ -94,11 +94,7 @@ fn finish(writer: BufWriter<File>, temporary: &Path, path: &Path) -> io::Result<
 /// platforms and file systems cannot open or sync a directory, and the file itself is
 /// already complete.
 fn sync_directory(path: &Path) {
-    let directory = match path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
-    if let Ok(dir) = File::open(directory) {
+    if let Ok(dir) = File::open(folder_of(path)) {
         let _ = dir.sync_all();
     }
 }
@@ -118,6 +114,14 @@ impl Drop for AtomicFile {
         if self.writer.take().is_some() {
             let _ = std::fs::remove_file(&self.temporary);
         }
+    }
+}
+
+/// The folder that holds `path`: its parent, or `.` for a bare file name.
+pub fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
     }
 }
 

@@ -18,7 +18,7 @@ pub mod scene_section;
 mod stream;
 mod verify;
 
-pub use atomic::{AtomicFile, temporary_path_for, write_atomic};
+pub use atomic::{AtomicFile, folder_of, temporary_path_for, write_atomic};
 pub use decode::{MAX_FILE_LEN, StateVersionCheck};
 pub use error::{ReplayError, ReplayErrorKind};
 pub use feed::InputFeed;

@@ -5,17 +5,7 @@ use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::replay_support::TempPath;
-
-/// The names in `folder`.
-fn names_in(folder: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(folder)
-        .expect("readable")
-        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
-}
+use crate::replay_support::{TempPath, names_in};
 
 /// Waits until `folder` holds a temporary file (the command is running and writing), or
 /// 20 s have passed.

@@ -1,19 +1,7 @@
 //! `fixstep render` replaces its output folder whole: a render into an earlier render's
 //! folder holds only the new frames, and a folder holding anything else is refused.
 
-use std::path::Path;
-
-use crate::replay_support::{TempPath, fixstep};
-
-/// The names in `folder`, sorted.
-fn names_in(folder: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(folder)
-        .expect("readable")
-        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
-}
+use crate::replay_support::{TempPath, fixstep, names_in};
 
 /// Renders `scene` for `ticks` ticks, a frame every `every`, into `out`; checks success.
 fn render(scene: &str, ticks: &str, every: &str, out: &TempPath) {

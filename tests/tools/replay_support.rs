@@ -216,3 +216,13 @@ pub fn rewrite_header(bytes: &mut [u8], header: &ReplayHeader) {
     let hash = content_hash(&bytes[..end]);
     bytes[end..end + 8].copy_from_slice(&hash.to_le_bytes());
 }
+
+/// The names in `folder`, sorted.
+pub fn names_in(folder: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(folder)
+        .expect("readable")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}

@@ -7,6 +7,8 @@
 
 use std::path::{Path, PathBuf};
 
+use fixstep::replay::folder_of;
+
 /// A file named on the command line, and the role it plays there (`--record`, `the scene
 /// file`, …), for the error message.
 #[derive(Clone, Copy, Debug)]
@@ -88,10 +90,7 @@ impl Identity {
 /// The canonical path of a file that does not exist yet: its folder's canonical path and
 /// its name (the folder's absolute path when the folder does not exist either).
 fn new_file_path(path: &Path) -> PathBuf {
-    let folder = match path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
+    let folder = folder_of(path);
     let folder = std::fs::canonicalize(folder)
         .or_else(|_| std::path::absolute(folder))
         .unwrap_or_else(|_| folder.to_owned());

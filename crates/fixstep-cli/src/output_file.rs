@@ -7,7 +7,7 @@ use std::path::Path;
 
 use super::output::write_error;
 use super::temporaries::Temporaries;
-use fixstep::replay::AtomicFile;
+use fixstep::replay::{AtomicFile, folder_of};
 
 /// A file that appears at its path only once complete.
 #[derive(Debug)]
@@ -40,10 +40,7 @@ impl OutputFile {
     /// The folder the file is written in (a temporary file beside it can be renamed into
     /// place).
     pub fn folder(&self) -> &Path {
-        match self.path().parent() {
-            Some(parent) if !parent.as_os_str().is_empty() => parent,
-            _ => Path::new("."),
-        }
+        folder_of(self.path())
     }
 
     /// Flushes, syncs and renames the file into place.

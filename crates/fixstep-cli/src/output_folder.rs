@@ -8,7 +8,7 @@
 use std::path::{Path, PathBuf};
 
 use super::temporaries::Temporaries;
-use fixstep::replay::temporary_path_for;
+use fixstep::replay::{folder_of, temporary_path_for};
 use fixstep_viewer::{GIF_NAME, PAGE_NAME};
 
 /// A folder that appears at its path only once complete.
@@ -147,10 +147,7 @@ fn absolute_destination(destination: &Path) -> std::io::Result<PathBuf> {
     if destination.exists() {
         return std::fs::canonicalize(destination);
     }
-    let folder = match destination.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
+    let folder = folder_of(destination);
     let name = destination.file_name().ok_or_else(|| {
         std::io::Error::new(std::io::ErrorKind::InvalidInput, "the path names no folder")
     })?;
