@@ -95,6 +95,7 @@
 // every link resolves (the test command builds it so, with warnings as errors).
 #![allow(rustdoc::private_intra_doc_links)]
 
+pub mod character;
 pub mod codec;
 pub mod fluid;
 pub mod math;

@@ -35,7 +35,8 @@ impl<R: Real> ParticleSystem<R> {
             | Command::Payload(_)
             | Command::SetMotor { .. }
             | Command::SpawnBody { .. }
-            | Command::SpawnJoint { .. } => false,
+            | Command::SpawnJoint { .. }
+            | Command::MoveCharacter { .. } => false,
         }
     }
 

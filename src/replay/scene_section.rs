@@ -37,10 +37,12 @@
 //! whose soft bodies have either adds [`Addition::SoftCoupling`]: per such body, by index
 //! in ascending order, its ties and contacts, never both absent, never naming a body that
 //! does not exist. A fluid that meets rigid bodies adds [`Addition::FluidBodies`] with
-//! their filter, never without a fluid.
+//! their filter, never without a fluid. Kinematic characters add
+//! [`Addition::Characters`], never empty.
 
 use serde::{Deserialize, Serialize};
 
+use crate::character::CharacterDesc;
 use crate::codec::{self, CodecError};
 use crate::fluid::{FluidBlock, FluidBodiesDesc, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
@@ -155,6 +157,8 @@ enum Addition<R: Real> {
     SoftCoupling(Vec<SoftCoupling<R>>),
     /// The layers of the rigid bodies the fluid meets, when it meets any.
     FluidBodies(CollisionFilter),
+    /// The kinematic characters, when there are any.
+    Characters(Vec<CharacterDesc<R>>),
 }
 
 /// [`SoftDesc`]'s fields as snapshot format 9 wrote them, with its bodies as
@@ -403,6 +407,7 @@ impl<R: Real> Addition<R> {
             Self::ParticleCollisions(_) => 9,
             Self::SoftCoupling(_) => 10,
             Self::FluidBodies(_) => 11,
+            Self::Characters(_) => 12,
         }
     }
 }
@@ -592,6 +597,9 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     if let Some(bodies) = scene.fluid.as_ref().and_then(|f| f.bodies) {
         additions.push(Addition::FluidBodies(bodies.filter));
     }
+    if !scene.characters.is_empty() {
+        additions.push(Addition::Characters(scene.characters.clone()));
+    }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
     }
@@ -616,6 +624,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         fluid: None,
         soft: None,
         joints: None,
+        characters: Vec::new(),
         script: base.script,
     };
     if used == bytes.len() {
@@ -773,6 +782,12 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                     ));
                 };
                 fluid.bodies = Some(FluidBodiesDesc { filter });
+            }
+            Addition::Characters(characters) => {
+                if characters.is_empty() {
+                    return Err((used, SceneSectionError::NotCanonical("no characters")));
+                }
+                scene.characters = characters;
             }
         }
     }

@@ -27,11 +27,17 @@ pub enum EventKind {
     SensorExit,
     /// A joint broke ([`JointEvent`](super::JointEvent) gives its load).
     JointBreak,
+    /// A character ([`crate::character`]) landed: `a` is the character, `b` the body it
+    /// landed on.
+    CharacterLand,
+    /// A character hit a body it did not touch during the previous tick: `a` is the
+    /// character, `b` the body.
+    CharacterHit,
 }
 
 impl EventKind {
     /// The name written in CSV files and JSON: `contact_begin`, `contact_end`,
-    /// `sensor_enter`, `sensor_exit`, `joint_break`.
+    /// `sensor_enter`, `sensor_exit`, `joint_break`, `character_land`, `character_hit`.
     pub const fn name(self) -> &'static str {
         match self {
             Self::ContactBegin => "contact_begin",
@@ -39,6 +45,8 @@ impl EventKind {
             Self::SensorEnter => "sensor_enter",
             Self::SensorExit => "sensor_exit",
             Self::JointBreak => "joint_break",
+            Self::CharacterLand => "character_land",
+            Self::CharacterHit => "character_hit",
         }
     }
 }
@@ -57,7 +65,8 @@ pub struct Event {
     /// What happened.
     pub kind: EventKind,
     /// The body of lower slot (for a sensor event, sensor or visitor, whichever is
-    /// lower); for [`EventKind::JointBreak`], the joint.
+    /// lower); for [`EventKind::JointBreak`], the joint; for a character event, the
+    /// character.
     pub a: Handle,
     /// The body of higher slot; `None` for [`EventKind::JointBreak`].
     pub b: Option<Handle>,
@@ -99,6 +108,17 @@ impl<R: Real> RigidSystem<R> {
             kind: EventKind::JointBreak,
             a: joint,
             b: None,
+        };
+        self.scratch.events.push(event);
+    }
+
+    /// Records a character's event (`a` the character, `b` the body) in the current tick.
+    pub(crate) fn push_character_event(&mut self, kind: EventKind, character: Handle, body: Handle) {
+        let event = Event {
+            tick: self.scratch.event_tick,
+            kind,
+            a: character,
+            b: Some(body),
         };
         self.scratch.events.push(event);
     }

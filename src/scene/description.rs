@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 
 use super::mass_ratios::mass_ratio_warnings;
 use super::simulation::input_at;
+use crate::character::{CharacterDesc, CharacterSystem};
 use crate::fluid::{FluidDesc, FluidSystem};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{ParticleSystem, ParticlesDesc};
@@ -58,6 +59,11 @@ pub struct Scene<R: Real = Fx> {
     /// scene when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joints: Option<JointsDesc<R>>,
+    /// Kinematic characters ([`crate::character`]), driven by
+    /// [`Command::MoveCharacter`](crate::types::Command::MoveCharacter) with the handle
+    /// (index, 0). Left out of a written scene when empty.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub characters: Vec<CharacterDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by [`Simulation`](super::Simulation)
     /// (and so by `fixstep run`).
     #[serde(default)]
@@ -96,6 +102,7 @@ impl<R: Real> Scene<R> {
             fluid: None,
             soft: None,
             joints: None,
+            characters: Vec::new(),
             script: Vec::new(),
         }
     }
@@ -160,6 +167,9 @@ impl<R: Real> Scene<R> {
                 ));
             }
             world.set_soft(soft);
+        }
+        if !self.characters.is_empty() {
+            world.set_characters(CharacterSystem::from_desc(&self.characters)?);
         }
         Ok(world)
     }

@@ -136,6 +136,17 @@ pub enum Command<R: Real = Fx> {
         /// The joint axis, world frame, unit length.
         axis: Vec3<R>,
     },
+    /// Drives a kinematic character ([`crate::character`]): from this tick on it walks at
+    /// the horizontal part of `desired_velocity` (m/s) until told otherwise, and it jumps
+    /// this tick when `jump` is set and it stands on the ground.
+    MoveCharacter {
+        /// The character (index, generation 0).
+        target: Handle,
+        /// Walking velocity, m/s; its y component is ignored.
+        desired_velocity: Vec3<R>,
+        /// Jump now (with the character's `jump_speed`), if grounded.
+        jump: bool,
+    },
 }
 
 /// The commands of one player for one tick.

@@ -17,6 +17,8 @@ pub enum Part {
     Soft,
     /// The fluid particles and emitters.
     Fluid,
+    /// The kinematic characters.
+    Characters,
 }
 
 impl Part {
@@ -28,6 +30,7 @@ impl Part {
             Part::Rigid => 2,
             Part::Soft => 3,
             Part::Fluid => 4,
+            Part::Characters => 5,
         }
     }
 
@@ -39,6 +42,7 @@ impl Part {
             Part::Rigid => "rigid",
             Part::Soft => "soft",
             Part::Fluid => "fluid",
+            Part::Characters => "characters",
         }
     }
 }

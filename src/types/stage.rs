@@ -13,18 +13,21 @@ pub enum Stage {
     Soft,
     /// Fluid: emit, neighbours, density, pressure solve, advect (once per substep).
     Fluid,
+    /// Kinematic characters: move-and-slide against the bodies (once per tick).
+    Characters,
     /// Advance the tick counter and clear per-tick accumulators.
     EndTick,
 }
 
 impl Stage {
     /// Every stage, in execution order.
-    pub const ALL: [Stage; 6] = [
+    pub const ALL: [Stage; 7] = [
         Stage::ApplyInputs,
         Stage::Particles,
         Stage::Rigid,
         Stage::Soft,
         Stage::Fluid,
+        Stage::Characters,
         Stage::EndTick,
     ];
 
@@ -36,6 +39,7 @@ impl Stage {
             Stage::Rigid => "rigid",
             Stage::Soft => "soft",
             Stage::Fluid => "fluid",
+            Stage::Characters => "characters",
             Stage::EndTick => "end_tick",
         }
     }

@@ -1,5 +1,6 @@
 //! The world and its tick: state, stages, inputs, checksums and snapshots.
 
+mod character_coupling;
 pub mod checksum;
 pub mod difference;
 pub mod divergence;

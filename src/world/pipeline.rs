@@ -2,6 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::character_coupling::step_characters;
 use super::checksum::Checksum;
 use super::divergence::{Divergence, DivergenceMonitor};
 use super::fluid_coupling::step_fluid_with_bodies;
@@ -10,6 +11,7 @@ use super::particle_coupling::step_colliding_particles;
 use super::soft_coupling::step_rigid_and_soft;
 use super::stage::StageTimings;
 use super::stage_watch::StageWatch;
+use crate::character::CharacterSystem;
 use crate::fluid::FluidSystem;
 use crate::math::rng::Pcg32;
 use crate::math::saturation::count_saturations;
@@ -83,6 +85,8 @@ pub struct WorldState<R: Real = Fx> {
     pub soft: Option<SoftSystem<R>>,
     /// The fluid, when the scene has one.
     pub fluid: Option<FluidSystem<R>>,
+    /// Kinematic characters, when the scene has any.
+    pub characters: Option<CharacterSystem<R>>,
 }
 
 impl<R: Real> WorldState<R> {
@@ -113,12 +117,13 @@ impl<R: Real> WorldState<R> {
     /// The subsystems, in [`Stage`] order, `None` where the scene has none. With
     /// [`WorldState::split_mut`] and [`WorldState::keep_unsimulated`], the place that lists
     /// the subsystem fields: a new subsystem is added there.
-    pub fn subsystems(&self) -> [Option<&dyn Subsystem<R>>; 4] {
+    pub fn subsystems(&self) -> [Option<&dyn Subsystem<R>>; 5] {
         [
             self.particles.as_ref().map(|s| s as &dyn Subsystem<R>),
             self.rigid.as_ref().map(|s| s as &dyn Subsystem<R>),
             self.soft.as_ref().map(|s| s as &dyn Subsystem<R>),
             self.fluid.as_ref().map(|s| s as &dyn Subsystem<R>),
+            self.characters.as_ref().map(|s| s as &dyn Subsystem<R>),
         ]
     }
 
@@ -130,6 +135,7 @@ impl<R: Real> WorldState<R> {
             self.rigid.as_mut().map(|s| s as &mut dyn Subsystem<R>),
             self.soft.as_mut().map(|s| s as &mut dyn Subsystem<R>),
             self.fluid.as_mut().map(|s| s as &mut dyn Subsystem<R>),
+            self.characters.as_mut().map(|s| s as &mut dyn Subsystem<R>),
         ];
         (&self.settings, &mut self.rng, subsystems)
     }
@@ -142,6 +148,7 @@ impl<R: Real> WorldState<R> {
         keep_unsimulated(&mut self.rigid, current.rigid.take());
         keep_unsimulated(&mut self.soft, current.soft.take());
         keep_unsimulated(&mut self.fluid, current.fluid.take());
+        keep_unsimulated(&mut self.characters, current.characters.take());
     }
 }
 
@@ -233,7 +240,7 @@ fn keep_unsimulated<R: Real, S: Subsystem<R>>(restored: &mut Option<S>, current:
 }
 
 /// The mutable subsystems of a state in [`Stage`] order, `None` where absent.
-type SubsystemsMut<'a, R> = [Option<&'a mut dyn Subsystem<R>>; 4];
+type SubsystemsMut<'a, R> = [Option<&'a mut dyn Subsystem<R>>; 5];
 
 /// Per-part lists of (object handle, 32-bit state digest), in [`Part`] order.
 pub type ObjectDigests = Vec<(Part, Vec<(Handle, u32)>)>;
@@ -276,6 +283,8 @@ pub struct TickReport {
 ///    advect); a fluid that meets the rigid bodies sees them as sampled boundaries and
 ///    pushes them back, the rigid stage then stepping with it at the fluid's substep rate,
 ///    each rigid substep before the fluid's ([`fluid_coupling`](super::fluid_coupling)).
+/// 5b. [`Stage::Characters`]: once per tick, each kinematic character moves against the
+///    bodies where they now are ([`character_coupling`](super::character_coupling)).
 /// 6. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
 ///
 /// A stage whose subsystem is absent from the scene is skipped without a loop or an
@@ -307,6 +316,7 @@ impl<R: Real> World<R> {
             rigid: None,
             soft: None,
             fluid: None,
+            characters: None,
         })
     }
 
@@ -365,6 +375,16 @@ impl<R: Real> World<R> {
     /// Adds a fluid (replacing any previous one).
     pub fn set_fluid(&mut self, fluid: FluidSystem<R>) {
         self.state.fluid = Some(fluid);
+    }
+
+    /// Adds kinematic characters (replacing any previous ones).
+    pub fn set_characters(&mut self, characters: CharacterSystem<R>) {
+        self.state.characters = Some(characters);
+    }
+
+    /// The kinematic characters, if the scene has any.
+    pub fn characters(&self) -> Option<&CharacterSystem<R>> {
+        self.state.characters.as_ref()
     }
 
     /// The fluid, if the scene has one.
@@ -482,6 +502,13 @@ impl<R: Real> World<R> {
                 }
                 state.step_alone(Stage::Fluid, &mut watch, dt);
             }
+            if let Some(characters) = &mut state.characters {
+                let tick_dt = R::from_ratio(1, i64::from(state.settings.tick_rate));
+                let gravity = state.settings.gravity;
+                watch.run(Stage::Characters, || {
+                    step_characters(characters, state.rigid.as_mut(), tick_dt, gravity);
+                });
+            }
             watch.run(Stage::EndTick, || self.end_tick());
             ignored
         });
@@ -591,6 +618,11 @@ impl<R: Real> World<R> {
                 .rigid
                 .as_mut()
                 .is_some_and(|r| r.apply_command(command)),
+            Command::MoveCharacter { .. } => self
+                .state
+                .characters
+                .as_mut()
+                .is_some_and(|c| c.apply_command(command)),
             Command::MoveKinematic {
                 target: Target::SoftAttachment(_),
                 ..

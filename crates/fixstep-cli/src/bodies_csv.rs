@@ -1,14 +1,18 @@
-//! The `--bodies` CSV file: the state of every live rigid body every K ticks (from tick 0,
-//! and after the last tick, like `--metrics`), written atomically.
+//! The `--bodies` CSV file: the state of every live rigid body and every kinematic
+//! character every K ticks (from tick 0, and after the last tick, like `--metrics`),
+//! written atomically.
 
 use std::path::Path;
 
 use super::csv_file::CsvFile;
+use fixstep::character::CharacterSystem;
 use fixstep::math::{Fx, Real, Vec3};
 use fixstep::world::World;
 
 /// The columns: tick, the body's handle (`3v0`), its centre of mass (m), orientation
-/// quaternion, linear velocity (m/s) and angular velocity (rad/s, world frame).
+/// quaternion, linear velocity (m/s) and angular velocity (rad/s, world frame). A
+/// character's row follows the bodies' with its handle after a `c` (`c0v0`), its centre,
+/// the identity orientation, its own velocity and no angular velocity.
 pub const BODIES_CSV_HEADER: &str = "tick,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
 
 /// A bodies file being written.
@@ -45,10 +49,28 @@ impl BodiesCsv {
         self.file.commit()
     }
 
-    /// One row per live body, in slot order; none in a world without rigid bodies.
+    /// One row per live body, in slot order, then one per character, in index order.
     fn rows(&mut self, world: &World<Fx>) -> Result<(), String> {
         let tick = world.tick();
         self.last_tick = Some(tick);
+        self.body_rows(world)?;
+        let Some(characters) = world.characters() else {
+            return Ok(());
+        };
+        for (i, c) in characters.characters().iter().enumerate() {
+            let handle = CharacterSystem::<Fx>::handle(i);
+            self.file.line(&format!(
+                "{tick},c{handle},{},1,0,0,0,{},0,0,0",
+                columns(c.position),
+                columns(c.velocity)
+            ))?;
+        }
+        Ok(())
+    }
+
+    /// One row per live body, in slot order; none in a world without rigid bodies.
+    fn body_rows(&mut self, world: &World<Fx>) -> Result<(), String> {
+        let tick = world.tick();
         let Some(rigid) = world.rigid() else {
             return Ok(());
         };

@@ -96,6 +96,7 @@ fn object_noun(part: Part) -> &'static str {
         Part::Rigid => "rigid body",
         Part::Soft => "soft-body vertex",
         Part::Fluid => "fluid particle",
+        Part::Characters => "character",
         Part::Core => "object",
     }
 }
