@@ -17,13 +17,16 @@
 //!    walking: the motion is first projected on its horizontal normal, so that walking
 //!    never climbs it, and only then on the surface itself (falling slides down it).
 //! 4. **Step.** A grounded character blocked by a steep surface tries to step: a cast up
-//!    by `step_height`, forward by the rest of the horizontal motion, then down; the step
-//!    is taken when the shape lands on a surface it can stand on whose contact is at most
-//!    `step_height` above its feet.
-//! 5. **Ground and snap.** Moving down or not at all, it looks below its feet, `snap_distance`
-//!    when it was grounded and did not jump (so that it follows slopes and stairs down),
-//!    2 × `skin` otherwise, sliding off steep edges on the way; it is grounded (v_y = 0)
-//!    when that finds a surface no steeper than `max_slope`, and then moves there.
+//!    by `step_height`, forward by the rest of the horizontal motion (a probe of at least
+//!    its half width), then down; the step is taken when the probe lands on a surface it
+//!    can stand on whose contact is at most `step_height` above its feet, and the
+//!    character then moves up, forward by the rest of its motion, and down onto the step.
+//! 5. **Ground and snap.** Moving down or not at all, it casts its shape down,
+//!    `snap_distance` when it was grounded and did not jump (so that it follows slopes and
+//!    stairs down), 2 × `skin` otherwise; it is grounded (v_y = 0) when that meets a
+//!    surface no steeper than `max_slope`, and then moves there. When the cast first meets
+//!    a steep surface (the edge of a step it stands over), it stays where it is, grounded
+//!    if a ray down from its centre meets ground it can stand on.
 //! 6. **Push.** Each dynamic body hit takes the impulse of an inelastic collision between it
 //!    and a body of `push_mass` moving at the character's velocity,
 //!    J = v_n / (1/m_c + 1/m_b) along the normal, v_n the closing speed at the contact point.
@@ -56,6 +59,15 @@ pub fn foot_offset<R: Real>(shape: &Shape<R>) -> R {
             half_height,
         } => *radius + *half_height,
         Shape::Box { half_extents } => half_extents.y,
+        _ => R::ZERO,
+    }
+}
+
+/// The largest horizontal half extent of `shape`, m.
+fn half_width<R: Real>(shape: &Shape<R>) -> R {
+    match shape {
+        Shape::Sphere { radius } | Shape::Capsule { radius, .. } => *radius,
+        Shape::Box { half_extents } => half_extents.x.max(half_extents.z),
         _ => R::ZERO,
     }
 }
@@ -195,39 +207,45 @@ impl<R: Real> Mover<'_, R> {
             return None;
         }
         let raised = p + Vec3::new(R::ZERO, lift, R::ZERO);
-        let (advance, _) = self.cast(raised, flat, filter);
+        // Probe at least the shape's half width ahead, so that the landing is looked for
+        // on the step's top rather than at its edge.
+        let probe_len = flat_len.max(half_width(&self.shape) + self.settings.skin * R::TWO);
+        let probe = flat * (probe_len / flat_len);
+        let (advance, _) = self.cast(raised, probe, filter);
         if advance <= tiny() {
             return None;
         }
-        let ahead = Self::advanced(raised, flat, advance, flat_len);
+        let ahead = Self::advanced(raised, probe, advance, probe_len);
         let (drop, hit) = self.cast(ahead, Vec3::new(R::ZERO, -lift, R::ZERO), filter);
         let hit = hit?;
         let feet = p.y - foot_offset(&self.shape);
         if !self.walkable(hit.normal) || hit.point.y - feet > height {
             return None;
         }
-        let landed = ahead - Vec3::new(R::ZERO, drop, R::ZERO);
-        Some((landed, (advance / flat_len).min(R::ONE)))
+        let forward = advance.min(flat_len);
+        let moved = Self::advanced(raised, flat, forward, flat_len);
+        let (settle, _) = self.cast(moved, Vec3::new(R::ZERO, -drop, R::ZERO), filter);
+        let landed = moved - Vec3::new(R::ZERO, settle, R::ZERO);
+        Some((landed, forward / flat_len))
     }
 
-    /// Ground within `reach` (m) below `p`, sliding off steep edges on the way down: the
-    /// position on it and the hit, or `None` (see the [module](self), step 5).
-    fn find_ground(&self, mut p: Vec3<R>, reach: R, filter: &QueryFilter) -> Option<(Vec3<R>, RayHit<R>)> {
-        let mut remaining = Vec3::new(R::ZERO, -reach, R::ZERO);
-        for _ in 0..MAX_SLIDES {
-            let len = remaining.length();
-            if len <= tiny() {
-                return None;
-            }
-            let (travel, hit) = self.cast(p, remaining, filter);
-            let hit = hit?;
-            p = Self::advanced(p, remaining, travel, len);
-            if self.walkable(hit.normal) {
-                return Some((p, hit));
-            }
-            remaining = project(remaining * ((len - travel) / len), hit.normal);
+    /// Ground within `reach` (m) below `p`: the position on it and the surface, or `None`
+    /// (see the [module](self), step 5). When the shape would first meet a steep surface
+    /// (the edge of a step), it stays where it is, grounded on what a ray straight down
+    /// from its centre meets within its feet's depth plus `reach` and `step_height`, if
+    /// that can be stood on.
+    fn find_ground(&self, p: Vec3<R>, reach: R, filter: &QueryFilter) -> Option<(Vec3<R>, RayHit<R>)> {
+        let down = Vec3::new(R::ZERO, -reach, R::ZERO);
+        let (travel, hit) = self.cast(p, down, filter);
+        let hit = hit?;
+        if self.walkable(hit.normal) {
+            return Some((p - Vec3::new(R::ZERO, travel, R::ZERO), hit));
         }
-        None
+        let depth = foot_offset(&self.shape)
+            + reach.max(self.settings.step_height)
+            + self.settings.skin * R::TWO;
+        let below = self.surroundings.cast_ray(p, -Vec3::Y, depth, filter)?;
+        self.walkable(below.normal).then_some((p, below))
     }
 }
 
@@ -299,10 +317,14 @@ pub fn move_character<R: Real>(
     let mut touches = Vec::new();
     c.position = mover.move_and_slide(start, motion, on_ground, &filter, &mut touches);
     if !on_ground {
+        // Stopped by a floor or a ceiling, its vertical speed is what it achieved; sliding
+        // down a steep surface keeps the fall's (the projection then gives g sin²θ).
         let moved = c.position.y - start.y;
-        if motion.y < R::ZERO && moved > motion.y {
+        let floor = touches.iter().any(|t| mover.walkable(t.normal));
+        let ceiling = touches.iter().any(|t| t.normal.y < R::ZERO);
+        if floor && motion.y < R::ZERO && moved > motion.y {
             vy = vy.max(moved / dt);
-        } else if motion.y > R::ZERO && moved < motion.y {
+        } else if ceiling && motion.y > R::ZERO && moved < motion.y {
             vy = vy.min(moved / dt);
         }
     }

@@ -43,6 +43,17 @@ pub trait Surroundings<R: Real> {
         filter: &QueryFilter,
     ) -> Option<RayHit<R>>;
 
+    /// The first body the ray from `origin` along `direction` meets within `max_distance`
+    /// (m), among those `filter` accepts: as
+    /// [`RigidSystem::cast_ray`](crate::rigid::RigidSystem::cast_ray).
+    fn cast_ray(
+        &self,
+        origin: Vec3<R>,
+        direction: Vec3<R>,
+        max_distance: R,
+        filter: &QueryFilter,
+    ) -> Option<RayHit<R>>;
+
     /// How `body` moves now; `None` when it does not exist.
     fn motion(&self, body: Handle) -> Option<BodyMotion<R>>;
 
@@ -63,6 +74,10 @@ impl<R: Real> Surroundings<R> for NoSurroundings {
         _: R,
         _: &QueryFilter,
     ) -> Option<RayHit<R>> {
+        None
+    }
+
+    fn cast_ray(&self, _: Vec3<R>, _: Vec3<R>, _: R, _: &QueryFilter) -> Option<RayHit<R>> {
         None
     }
 

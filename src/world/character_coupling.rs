@@ -26,6 +26,16 @@ impl<R: Real> Surroundings<R> for Bodies<'_, R> {
             .cast_shape(shape, position, Quat::IDENTITY, direction, max_distance, filter)
     }
 
+    fn cast_ray(
+        &self,
+        origin: Vec3<R>,
+        direction: Vec3<R>,
+        max_distance: R,
+        filter: &QueryFilter,
+    ) -> Option<RayHit<R>> {
+        self.rigid.cast_ray(origin, direction, max_distance, filter)
+    }
+
     fn motion(&self, body: Handle) -> Option<BodyMotion<R>> {
         let r = &*self.rigid;
         let kind = r.kind(body)?;

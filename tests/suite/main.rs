@@ -7,6 +7,8 @@
 mod mesh_obj;
 mod property_cases;
 
+mod character_moves;
+mod character_support;
 mod fluid_bodies;
 mod fluid_dam_break;
 mod fluid_dfsph_large_step;

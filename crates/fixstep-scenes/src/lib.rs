@@ -11,6 +11,7 @@ pub mod fluid;
 pub mod game;
 pub mod harbour;
 pub mod joints;
+pub mod parkour;
 pub mod particles;
 pub mod rigid;
 pub mod soft;
@@ -21,7 +22,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 27] = [
+pub const BUILTIN_SCENES: [(&str, &str); 28] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -42,6 +43,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 27] = [
     (
         "shooter",
         "a player fires spawned projectiles, on their own layer, at a wall of boxes; a sensor plate counts arrivals; the aim is a ray query",
+    ),
+    (
+        "parkour",
+        "two scripted kinematic characters: one climbs stairs and jumps a gap, the other pushes crates, fails to climb a steep slope and rides a moving platform",
     ),
     (
         "bullets",
@@ -165,6 +170,12 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.rigid = Some(game::shooter());
             scene.script = game::shooter_script();
             scene.ticks = 600;
+        }
+        "parkour" => {
+            scene.rigid = Some(parkour::parkour_bodies());
+            scene.characters = parkour::parkour_characters();
+            scene.script = parkour::parkour_script();
+            scene.ticks = 420;
         }
         "bullets" => {
             scene.rigid = Some(bullets::bullets());
