@@ -146,7 +146,9 @@ impl<R: Real> Mover<'_, R> {
         if self.walkable(n) || n.y < R::ZERO {
             return project(motion, n);
         }
-        let wall = horizontal(n).try_normalize().map_or(motion, |(h, _)| project(motion, h));
+        let wall = horizontal(n)
+            .try_normalize()
+            .map_or(motion, |(h, _)| project(motion, h));
         project(wall, n)
     }
 
@@ -185,7 +187,8 @@ impl<R: Real> Mover<'_, R> {
             if can_step && !self.walkable(hit.normal) && hit.normal.y >= R::ZERO {
                 if let Some((stepped, fraction)) = self.step_up(p, flat, filter) {
                     p = stepped;
-                    remaining = Vec3::new(R::ZERO, remaining.y, R::ZERO) + flat * (R::ONE - fraction);
+                    remaining =
+                        Vec3::new(R::ZERO, remaining.y, R::ZERO) + flat * (R::ONE - fraction);
                     continue;
                 }
             }
@@ -234,7 +237,12 @@ impl<R: Real> Mover<'_, R> {
     /// (the edge of a step), it stays where it is, grounded on what a ray straight down
     /// from its centre meets within its feet's depth plus `reach` and `step_height`, if
     /// that can be stood on.
-    fn find_ground(&self, p: Vec3<R>, reach: R, filter: &QueryFilter) -> Option<(Vec3<R>, RayHit<R>)> {
+    fn find_ground(
+        &self,
+        p: Vec3<R>,
+        reach: R,
+        filter: &QueryFilter,
+    ) -> Option<(Vec3<R>, RayHit<R>)> {
         let down = Vec3::new(R::ZERO, -reach, R::ZERO);
         let (travel, hit) = self.cast(p, down, filter);
         let hit = hit?;

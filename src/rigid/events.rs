@@ -113,7 +113,12 @@ impl<R: Real> RigidSystem<R> {
     }
 
     /// Records a character's event (`a` the character, `b` the body) in the current tick.
-    pub(crate) fn push_character_event(&mut self, kind: EventKind, character: Handle, body: Handle) {
+    pub(crate) fn push_character_event(
+        &mut self,
+        kind: EventKind,
+        character: Handle,
+        body: Handle,
+    ) {
         let event = Event {
             tick: self.scratch.event_tick,
             kind,

@@ -22,8 +22,14 @@ impl<R: Real> Surroundings<R> for Bodies<'_, R> {
         max_distance: R,
         filter: &QueryFilter,
     ) -> Option<RayHit<R>> {
-        self.rigid
-            .cast_shape(shape, position, Quat::IDENTITY, direction, max_distance, filter)
+        self.rigid.cast_shape(
+            shape,
+            position,
+            Quat::IDENTITY,
+            direction,
+            max_distance,
+            filter,
+        )
     }
 
     fn cast_ray(

@@ -29,10 +29,19 @@ fn walk_to_step(height: f64) -> [f64; 3] {
 fn a_step_below_the_step_height_is_climbed_and_one_above_it_stops() {
     let climbed = walk_to_step(0.3);
     assert!(climbed[0] > 3.5, "walked on over the step: {climbed:?}");
-    assert!((climbed[1] - 1.11).abs() < 0.02, "stands on the step: {climbed:?}");
+    assert!(
+        (climbed[1] - 1.11).abs() < 0.02,
+        "stands on the step: {climbed:?}"
+    );
     let stopped = walk_to_step(0.4);
-    assert!(stopped[0] < 0.71, "stopped before the face at x = 1: {stopped:?}");
-    assert!((stopped[1] - 0.81).abs() < 0.02, "still on the floor: {stopped:?}");
+    assert!(
+        stopped[0] < 0.71,
+        "stopped before the face at x = 1: {stopped:?}"
+    );
+    assert!(
+        (stopped[1] - 0.81).abs() < 0.02,
+        "still on the floor: {stopped:?}"
+    );
 }
 
 /// A slope of `degrees` rising along +x from the origin, with the floor before it; a
@@ -42,7 +51,11 @@ fn walk_up_slope(degrees: f64) -> Vec<(f64, f64, bool)> {
     let (s, c) = a.sin_cos();
     // The slab's top face passes through the origin; its centre is half its thickness
     // below, along the face's normal (−sin a, cos a, 0); its near end is under the floor.
-    let slope = slab(v(10.0 * c + 0.5 * s, 10.0 * s - 0.5 * c, 0.0), v(10.0, 0.5, 5.0), a);
+    let slope = slab(
+        v(10.0 * c + 0.5 * s, 10.0 * s - 0.5 * c, 0.0),
+        v(10.0, 0.5, 5.0),
+        a,
+    );
     let mut character = standing(-1.0, 0.0);
     character.settings.max_slope = fx(45f64.to_radians());
     let mut world = world(vec![floor(-20.0, 0.0), slope], vec![character]);
@@ -66,10 +79,16 @@ fn a_slope_under_the_limit_is_walked_up_and_one_over_it_is_not() {
     assert!(x > 3.0 && grounded, "walked up the 40° slope: {x} {y}");
     // On the slope, its feet (0.8 m below the centre, the skin above) are on the surface.
     let surface = x * 40f64.to_radians().tan();
-    assert!(y > surface + 0.5, "above the surface at x: {y} vs {surface}");
+    assert!(
+        y > surface + 0.5,
+        "above the surface at x: {y} vs {surface}"
+    );
     let steep = walk_up_slope(50.0);
     let furthest = steep.iter().map(|t| t.0).fold(f64::MIN, f64::max);
-    assert!(furthest < 0.1, "no progress up the 50° slope: reached x = {furthest}");
+    assert!(
+        furthest < 0.1,
+        "no progress up the 50° slope: reached x = {furthest}"
+    );
     let highest = steep.iter().map(|t| t.1).fold(f64::MIN, f64::max);
     assert!(highest < 0.81 + 0.1, "did not climb: {highest}");
 }
@@ -78,7 +97,11 @@ fn a_slope_under_the_limit_is_walked_up_and_one_over_it_is_not() {
 fn on_a_slope_over_the_limit_it_slides_down() {
     let a = 50f64.to_radians();
     let (s, c) = a.sin_cos();
-    let slope = slab(v(10.0 * c + 0.5 * s, 10.0 * s - 0.5 * c, 0.0), v(10.0, 0.5, 5.0), a);
+    let slope = slab(
+        v(10.0 * c + 0.5 * s, 10.0 * s - 0.5 * c, 0.0),
+        v(10.0, 0.5, 5.0),
+        a,
+    );
     // Dropped just above the slope at x = 2 (surface at 2.38 m).
     let dropped = CharacterDesc::new(capsule(), v(2.0, 2.0 * a.tan() + 1.3, 0.0));
     let mut world = world(vec![floor(-20.0, 0.0), slope], vec![dropped]);
@@ -113,13 +136,20 @@ fn walking_down_stairs_at_5_m_s_it_is_never_airborne_two_ticks_running() {
     let mut longest = 0;
     while pos(&world, 0)[0] < 5.0 {
         walk(&mut world, v(5.0, 0.0, 0.0));
-        airborne_run = if character(&world, 0).grounded { 0 } else { airborne_run + 1 };
+        airborne_run = if character(&world, 0).grounded {
+            0
+        } else {
+            airborne_run + 1
+        };
         longest = longest.max(airborne_run);
         assert!(world.tick() < 200, "reached the bottom");
     }
     assert!(longest <= 1, "airborne {longest} ticks running");
     let p = pos(&world, 0);
-    assert!((p[1] - (-2.0 + 0.81)).abs() < 0.03, "on the bottom floor: {p:?}");
+    assert!(
+        (p[1] - (-2.0 + 0.81)).abs() < 0.03,
+        "on the bottom floor: {p:?}"
+    );
 }
 
 #[test]
@@ -134,9 +164,19 @@ fn on_a_platform_at_2_m_s_it_keeps_its_place_within_a_centimetre_over_5_s() {
     platform.velocity = v(2.0, 0.0, 0.0);
     let mut world = world(vec![platform], vec![standing(0.5, 0.25)]);
     idle(&mut world);
-    let handle = world.rigid().expect("rigid").handles().next().expect("platform");
+    let handle = world
+        .rigid()
+        .expect("rigid")
+        .handles()
+        .next()
+        .expect("platform");
     let relative = |w: &fixstep::world::World<Fx>| {
-        let p = w.rigid().expect("rigid").position(handle).expect("live").to_f64();
+        let p = w
+            .rigid()
+            .expect("rigid")
+            .position(handle)
+            .expect("live")
+            .to_f64();
         let c = pos(w, 0);
         [c[0] - p[0], c[1] - p[1], c[2] - p[2]]
     };
@@ -144,7 +184,9 @@ fn on_a_platform_at_2_m_s_it_keeps_its_place_within_a_centimetre_over_5_s() {
     for _ in 0..300 {
         idle(&mut world);
         let now = relative(&world);
-        let drift = (0..3).map(|i| (now[i] - start[i]).abs()).fold(0.0, f64::max);
+        let drift = (0..3)
+            .map(|i| (now[i] - start[i]).abs())
+            .fold(0.0, f64::max);
         assert!(drift < 0.01, "tick {}: drifted {drift} m", world.tick());
         assert!(character(&world, 0).grounded);
     }
@@ -168,7 +210,10 @@ fn a_jump_at_speed_v_rises_v_squared_over_2g() {
     }
     let expected = 6.0 * 6.0 / (2.0 * 9.81);
     let rise = peak - y0;
-    assert!((rise - expected).abs() < 0.01 * expected, "rose {rise} m, expected {expected}");
+    assert!(
+        (rise - expected).abs() < 0.01 * expected,
+        "rose {rise} m, expected {expected}"
+    );
     assert!(character(&world, 0).grounded, "landed again");
     assert!((pos(&world, 0)[1] - y0).abs() < 0.01);
 }
@@ -182,16 +227,28 @@ fn it_pushes_a_crate_and_raises_hit_and_land_events() {
         v(2.0, 0.4, 0.0),
     );
     // Dropped from 0.5 m above the floor.
-    let mut world = world(vec![floor(-10.0, 20.0), crate_box], vec![standing(0.0, 0.5)]);
+    let mut world = world(
+        vec![floor(-10.0, 20.0), crate_box],
+        vec![standing(0.0, 0.5)],
+    );
     let mut events = Vec::new();
     for _ in 0..180 {
         walk(&mut world, v(2.0, 0.0, 0.0));
         events.extend(world.events().iter().copied());
     }
     let handles: Vec<_> = world.rigid().expect("rigid").handles().collect();
-    let crate_x = world.rigid().expect("rigid").position(handles[1]).expect("live").x.to_f64();
+    let crate_x = world
+        .rigid()
+        .expect("rigid")
+        .position(handles[1])
+        .expect("live")
+        .x
+        .to_f64();
     assert!(crate_x > 3.0, "the crate was pushed along: x = {crate_x}");
-    let lands: Vec<_> = events.iter().filter(|e| e.kind == EventKind::CharacterLand).collect();
+    let lands: Vec<_> = events
+        .iter()
+        .filter(|e| e.kind == EventKind::CharacterLand)
+        .collect();
     assert_eq!(lands.len(), 1, "{events:?}");
     assert_eq!(lands[0].b, Some(handles[0]));
     assert!(

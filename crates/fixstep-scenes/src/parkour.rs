@@ -38,16 +38,23 @@ pub fn parkour_bodies<R: Real>() -> RigidDesc<R> {
     let mut bodies = vec![ground()];
     for k in 0..4 {
         let top = 25 * (k + 1);
-        bodies.push(BodyDesc::new(
-            Shape::Box {
-                half_extents: Vec3::new(R::from_ratio(25, 100), R::from_ratio(top, 200), R::ONE),
-            },
-            Vec3::new(
-                R::from_ratio(225 + 50 * k, 100),
-                R::from_ratio(top, 200),
-                -R::TWO,
-            ),
-        ).fixed());
+        bodies.push(
+            BodyDesc::new(
+                Shape::Box {
+                    half_extents: Vec3::new(
+                        R::from_ratio(25, 100),
+                        R::from_ratio(top, 200),
+                        R::ONE,
+                    ),
+                },
+                Vec3::new(
+                    R::from_ratio(225 + 50 * k, 100),
+                    R::from_ratio(top, 200),
+                    -R::TWO,
+                ),
+            )
+            .fixed(),
+        );
     }
     bodies.push(block(at(50, 5, -20), at(10, 5, 10)));
     bodies.push(block(at(86, 5, -20), at(14, 5, 10)));
@@ -65,7 +72,11 @@ pub fn parkour_bodies<R: Real>() -> RigidDesc<R> {
     let angle = R::from_ratio(55, 180) * R::PI;
     let (s, c) = angle.sin_cos();
     let mut slope = block(
-        Vec3::new(R::from_int(7) + c * R::TWO + s * R::HALF, s * R::TWO - c * R::HALF, R::TWO),
+        Vec3::new(
+            R::from_int(7) + c * R::TWO + s * R::HALF,
+            s * R::TWO - c * R::HALF,
+            R::TWO,
+        ),
         Vec3::new(R::TWO, R::HALF, R::ONE),
     );
     slope.orientation = fixstep::math::Quat::from_axis_angle(Vec3::Z, angle);
@@ -97,7 +108,12 @@ pub fn parkour_characters<R: Real>() -> Vec<CharacterDesc<R>> {
     };
     [-20, 20]
         .into_iter()
-        .map(|z| CharacterDesc::new(capsule.clone(), Vec3::new(R::ZERO, R::from_ratio(81, 100), tenths(z))))
+        .map(|z| {
+            CharacterDesc::new(
+                capsule.clone(),
+                Vec3::new(R::ZERO, R::from_ratio(81, 100), tenths(z)),
+            )
+        })
         .collect()
 }
 
