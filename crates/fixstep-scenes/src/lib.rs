@@ -46,7 +46,7 @@ pub const BUILTIN_SCENES: [(&str, &str); 28] = [
     ),
     (
         "parkour",
-        "two scripted kinematic characters: one climbs stairs and jumps a gap, the other pushes crates, fails to climb a steep slope and rides a moving platform",
+        "two scripted kinematic characters: one climbs stairs, jumps a gap and is stopped by a slope too steep to climb; the other pushes crates and rides a moving platform",
     ),
     (
         "bullets",

@@ -1,8 +1,8 @@
 //! The `parkour` scene: two scripted kinematic characters ([`fixstep::character`]) on a
 //! course of static boxes. The runner (character 0) climbs stairs, jumps a gap between
-//! two ledges and drops back to the ground; the mover (character 1) pushes two crates,
-//! walks into a slope too steep to climb and slides back, then steps onto a kinematic
-//! platform shuttling along x and rides it.
+//! two ledges, drops back to the ground and walks into a slope too steep to climb; the
+//! mover (character 1) pushes two crates, then steps onto a kinematic platform shuttling
+//! along x and rides it.
 
 use fixstep::character::CharacterDesc;
 use fixstep::math::{Real, Vec3};
@@ -27,13 +27,13 @@ fn at<R: Real>(x: i64, y: i64, z: i64) -> Vec3<R> {
 }
 
 /// The slot of the shuttling platform among the bodies (the last one).
-const PLATFORM: u32 = 13;
+const PLATFORM: u32 = 10;
 
 /// The course. The runner's lane (z = −2 m): four stairs of 0.25 m rise and 0.5 m run from
 /// x = 2 m up to a ledge 1 m high (x = 4 to 6 m), a 1.2 m gap, a second ledge (x = 7.2 to
-/// 10 m). The mover's lane (z = 2 m): two 0.5 m crates of 50 kg at x = 2 and 3.2 m, a 55°
-/// slope from x = 7 m. Between the lanes (z = 5 m) a kinematic platform 0.2 m thick,
-/// 2 m × 2 m, starting at x = 1 m (its velocity is set by the script).
+/// 10 m), a 55° slope from x = 13 m. The mover's lane (z = 2 m): two 0.5 m crates of 50 kg
+/// at x = 2 and 3.2 m. Beyond it (z = 5 m) a kinematic platform 0.2 m thick, 2 m × 2 m,
+/// starting at x = 1 m (its velocity is set by the script), body 10.
 pub fn parkour_bodies<R: Real>() -> RigidDesc<R> {
     let mut bodies = vec![ground()];
     for k in 0..4 {
@@ -68,23 +68,19 @@ pub fn parkour_bodies<R: Real>() -> RigidDesc<R> {
         crate_box.density = R::from_int(400);
         bodies.push(crate_box);
     }
-    // The slope: a slab whose top face rises at 55° from (7, 0, 2) along +x.
+    // The slope: a slab whose top face rises at 55° from (13, 0, −2) along +x.
     let angle = R::from_ratio(55, 180) * R::PI;
     let (s, c) = angle.sin_cos();
     let mut slope = block(
         Vec3::new(
-            R::from_int(7) + c * R::TWO + s * R::HALF,
+            R::from_int(13) + c * R::TWO + s * R::HALF,
             s * R::TWO - c * R::HALF,
-            R::TWO,
+            -R::TWO,
         ),
         Vec3::new(R::TWO, R::HALF, R::ONE),
     );
     slope.orientation = fixstep::math::Quat::from_axis_angle(Vec3::Z, angle);
     bodies.push(slope);
-    // Fillers keep the platform's slot fixed whatever is added above.
-    while bodies.len() < PLATFORM as usize {
-        bodies.push(block(at(-100, -5, 0), at(5, 5, 5)));
-    }
     let mut platform = BodyDesc::new(
         Shape::Box {
             half_extents: at(10, 1, 10),
@@ -121,8 +117,8 @@ pub fn parkour_characters<R: Real>() -> Vec<CharacterDesc<R>> {
 /// velocity in tenths of m/s, and a jump.
 type Cue = (u64, Option<u32>, [i64; 3], bool);
 
-/// The script: the runner walks at 3 m/s, jumps at the ledge's end and walks off the far
-/// one; the mover walks at 2 m/s into the crates and the slope, then turns to the
+/// The script: the runner walks at 3 m/s, jumps at the ledge's end, walks off the far one
+/// and on into the slope; the mover walks at 2 m/s into the crates, then turns to the
 /// platform, which shuttles at 1.5 m/s along x, turning every 2 s.
 const CUES: [Cue; 10] = [
     (0, Some(0), [30, 0, 0], false),
