@@ -184,13 +184,14 @@ impl<R: Real> Mover<'_, R> {
                 remaining * ((len - travel) / len)
             };
             let flat = horizontal(remaining);
-            if can_step && !self.walkable(hit.normal) && hit.normal.y >= R::ZERO {
-                if let Some((stepped, fraction)) = self.step_up(p, flat, filter) {
-                    p = stepped;
-                    remaining =
-                        Vec3::new(R::ZERO, remaining.y, R::ZERO) + flat * (R::ONE - fraction);
-                    continue;
-                }
+            if can_step
+                && !self.walkable(hit.normal)
+                && hit.normal.y >= R::ZERO
+                && let Some((stepped, fraction)) = self.step_up(p, flat, filter)
+            {
+                p = stepped;
+                remaining = Vec3::new(R::ZERO, remaining.y, R::ZERO) + flat * (R::ONE - fraction);
+                continue;
             }
             remaining = self.slide(remaining, hit.normal);
         }

@@ -283,9 +283,9 @@ pub struct TickReport {
 ///    advect); a fluid that meets the rigid bodies sees them as sampled boundaries and
 ///    pushes them back, the rigid stage then stepping with it at the fluid's substep rate,
 ///    each rigid substep before the fluid's ([`fluid_coupling`](super::fluid_coupling)).
-/// 5b. [`Stage::Characters`]: once per tick, each kinematic character moves against the
+/// 6. [`Stage::Characters`]: once per tick, each kinematic character moves against the
 ///    bodies where they now are ([`character_coupling`](super::character_coupling)).
-/// 6. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
+/// 7. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
 ///
 /// A stage whose subsystem is absent from the scene is skipped without a loop or an
 /// allocation.

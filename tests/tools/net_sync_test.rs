@@ -65,6 +65,7 @@ sync_tests!(
     pyramid,
     stack,
     shooter,
+    parkour,
     bullets,
     terrain,
     debris,
