@@ -2,7 +2,7 @@
 //! [solver](super::solver), copy the velocities and impulses back, and break the joints
 //! that were overloaded.
 
-use super::solver::{JointPass, STATIC_BODY, Softness, SolvePass, SolverBody};
+use super::solver::{BouncePass, JointPass, STATIC_BODY, Softness, SolvePass, SolverBody};
 use super::system::RigidSystem;
 use crate::math::{Real, Vec3};
 
@@ -116,10 +116,14 @@ impl<R: Real> RigidSystem<R> {
                 block.solve(solver_bodies, &relax);
             }
         }
-        let threshold = settings.restitution_threshold;
+        let bounce = BouncePass {
+            threshold: settings.restitution_threshold,
+            gravity,
+            h,
+        };
         let (blocks, solver_bodies) = solver.blocks_and_bodies();
         for block in blocks.iter_mut() {
-            block.apply_restitution(solver_bodies, threshold);
+            block.apply_restitution(solver_bodies, &bounce);
         }
         for block in solver.blocks() {
             block.store_impulses(&mut self.contacts);

@@ -39,6 +39,7 @@ mod replay_committed;
 mod replay_snapshot;
 mod replay_streaming;
 mod restore_support;
+mod rigid_bounce;
 mod rigid_broadphase;
 mod rigid_ccd;
 mod rigid_convex_shapes;

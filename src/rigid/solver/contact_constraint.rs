@@ -37,6 +37,7 @@
 //! blocks in order, so the block layout is storage only: it changes no result.
 
 use super::body::{SolverBody, pair};
+use super::bounce::BouncePass;
 use super::lanes::{LANES, Lanes, Lanes3};
 use super::softness::Softness;
 use crate::math::Real;
@@ -445,10 +446,11 @@ impl<R: Real> ContactBlock<R> {
     }
 
     /// Restitution, after the substeps, lane by lane: a point that approached faster than
-    /// `threshold` (m/s) and pushed during the step gets the normal impulse that makes it
-    /// separate at e times its approach speed, λ = −m_n (v_n + e v_n,before), accumulated
+    /// the pass's threshold (m/s) and pushed during the step gets the normal impulse that
+    /// makes it separate at the speed [`BouncePass::leaving_speed`] gives (e times the
+    /// impact speed, gravity's share of the step included), λ = m_n (u − v_n), accumulated
     /// and kept ≥ 0.
-    pub fn apply_restitution(&mut self, bodies: &mut [SolverBody<R>], threshold: R) {
+    pub fn apply_restitution(&mut self, bodies: &mut [SolverBody<R>], pass: &BouncePass<R>) {
         for l in 0..self.len {
             let restitution = self.restitution[l];
             if restitution == R::ZERO {
@@ -457,14 +459,23 @@ impl<R: Real> ContactBlock<R> {
             let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
             let normal = self.normal.get(l);
             let (normal_a, normal_b) = (self.normal_a.get(l), self.normal_b.get(l));
+            let falls = |body: &SolverBody<R>| body.inv_mass > R::ZERO;
+            let separating = match (falls(ba), falls(bb)) {
+                (true, false) => -pass.gravity.dot(normal),
+                (false, true) => pass.gravity.dot(normal),
+                _ => R::ZERO,
+            };
             for cp in &mut self.points[..usize::from(self.count[l])] {
-                if cp.relative_velocity[l] > -threshold || cp.max_normal_impulse[l] == R::ZERO {
+                let v0 = cp.relative_velocity[l];
+                if v0 > -pass.threshold || cp.max_normal_impulse[l] == R::ZERO {
                     continue;
                 }
+                let separations = (cp.base_separation[l], cp.separation[l]);
+                let u = pass.leaving_speed(restitution, v0, separations, separating);
                 let (rn_a, rn_b) = (cp.rn_a.get(l), cp.rn_b.get(l));
                 let vn =
                     (bb.v - ba.v).dot_fused(normal) + bb.w.dot_fused(rn_b) - ba.w.dot_fused(rn_a);
-                let impulse = -(cp.normal_mass[l] * (vn + restitution * cp.relative_velocity[l]));
+                let impulse = cp.normal_mass[l] * (u - vn);
                 let old_impulse = cp.normal_impulse[l];
                 let new_impulse = (old_impulse + impulse).max(R::ZERO);
                 let applied = new_impulse - old_impulse;

@@ -21,6 +21,7 @@
 
 mod batching;
 mod body;
+mod bounce;
 mod contact_constraint;
 mod integrate;
 mod joint_point;
@@ -36,6 +37,7 @@ mod softness;
 pub(crate) mod wide_bodies;
 
 pub(crate) use body::{STATIC_BODY, SolverBody};
+pub(crate) use bounce::BouncePass;
 pub(crate) use contact_constraint::{ContactBlock, SolvePass};
 pub(crate) use joint_pose::{JointPose, twist_angle};
 pub(crate) use joint_row::JointPass;
