@@ -47,7 +47,10 @@ use crate::types::{
 /// that has moved less than that relative to its last narrowphase carries its contact
 /// points with the bodies instead of recomputing them; the contacts' recycling frames are
 /// state (snapshots, checksums), and the rigid solver settings gain the distance.
-pub const STATE_VERSION: u32 = 5;
+///
+/// 6: restitution acts on the speed of the impact (gravity's share of the step included),
+/// giving the next flight e² times the height of the last (`rigid::solver::bounce`).
+pub const STATE_VERSION: u32 = 6;
 
 /// The RNG stream of the world's generator (the seed comes from the scene).
 const RNG_STREAM: u64 = 0x6669_7873_7465_7021; // "fixstep!"
