@@ -3,9 +3,10 @@
 # the engine crate's dependencies (no tool crate among them), the documentation (its links
 # checked), every test in the test profile (debug arithmetic checks on), the engine's tests
 # again in release (each run re-simulates every committed replay), the determinism matrix's
-# i686 row, the lints for i686, and the fuzz smoke
-# run (every seed and kept crash through every fuzz target, then 10 s of fuzzing per
-# target). It ends with one line totalling both test runs: `tests: N passed, N failed`.
+# i686 row, the lints for i686, the wasm package and the live page in headless Chromium
+# (scripts/web-test.sh), and the fuzz smoke run (every seed and kept crash through every
+# fuzz target, then 10 s of fuzzing per target). It ends with one line totalling both test
+# runs: `tests: N passed, N failed`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -37,6 +38,9 @@ cargo test -p fixstep --locked --release --test suite 2>&1 | tee -a "$log"
 # by the AVX-512 paths must not be dead elsewhere. The tool crates have no such paths.
 cargo clippy -p fixstep --all-targets --locked --target i686-unknown-linux-gnu \
   --target-dir target/clippy-i686 -- -D warnings
+# The wasm package and the live page in headless Chromium: the page's checksums are the
+# native ones, every committed replay verifies in the browser (docs/web.md).
+./scripts/web-test.sh
 ./scripts/fuzz.sh smoke 10
 
 awk '/^test result:/ { passed += $4; failed += $6 }

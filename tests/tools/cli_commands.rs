@@ -61,9 +61,11 @@ fn no_arguments_runs_the_showcase() {
     assert_eq!(bare.code, 0, "{bare:?}");
     assert!(bare.stdout.starts_with("showcase: "), "{}", bare.stdout);
     let explicit = fixstep(&["run", "showcase"]);
-    let last = bare.stdout.lines().last().expect("output");
-    assert!(is_checksum_line(last), "{last:?}");
-    assert_eq!(Some(last), explicit.stdout.lines().last());
+    let mut lines = bare.stdout.lines().rev();
+    assert_eq!(lines.next(), Some(fixstep_cli::SHOW_IN_3D));
+    let checksum = lines.next().expect("output");
+    assert!(is_checksum_line(checksum), "{checksum:?}");
+    assert_eq!(Some(checksum), explicit.stdout.lines().last());
 }
 
 #[test]

@@ -71,6 +71,10 @@ pub use args::PeerArgs;
 pub use args::{BenchCommand, Cli, Command, QueryArgs, RenderArgs, RunArgs};
 pub use status::Status;
 
+/// The last line of a bare `fixstep` (`cargo run --release`): the command that shows the
+/// showcase live in 3D in a browser.
+pub const SHOW_IN_3D: &str = "see it live in 3D in a browser: ./scripts/web.sh";
+
 /// Runs the command line of this process; returns the exit code.
 ///
 /// A panic would be a bug in fixstep; it is reported as one `error:` line (and the process
@@ -141,7 +145,10 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         return Status::Invalid.code();
     }
     let result = match cli.command {
-        None => run::run(&RunArgs::default()),
+        None => run::run(&RunArgs::default()).and_then(|status| {
+            output::print_line(SHOW_IN_3D)?;
+            Ok(status)
+        }),
         Some(Command::Scenes) => scenes::scenes(),
         Some(Command::Run(args)) => run::run(&args),
         Some(Command::Verify { files }) => verify::verify_files(&files),

@@ -201,8 +201,12 @@ impl Session {
         pz: f64,
         speed: f64,
     ) -> bool {
-        self.0
-            .queue_push(Handle::new(index, generation), [dx, dy, dz], [px, py, pz], speed)
+        self.0.queue_push(
+            Handle::new(index, generation),
+            [dx, dy, dz],
+            [px, py, pz],
+            speed,
+        )
     }
 
     /// Queues, for the next tick, the commands written in RON `text` (a list of the

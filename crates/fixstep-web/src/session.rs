@@ -107,8 +107,8 @@ impl Session {
     /// Queues the commands written in RON `text`, a list such as
     /// `[ApplyImpulse(target: Body((index: 3, generation: 0)), impulse: (x: 0, y: 5, z: 0), point: None)]`.
     pub fn queue_ron(&mut self, text: &str) -> Result<(), String> {
-        let options =
-            ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
+        let options = ron::Options::default()
+            .with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME);
         let commands: Vec<Command<Fx>> = options
             .from_str(text)
             .map_err(|e| format!("commands: {e}"))?;
@@ -130,8 +130,7 @@ impl Session {
         let Some(rigid) = self.world().rigid() else {
             return false;
         };
-        let (Some(BodyKind::Dynamic), Some(mass)) = (rigid.kind(handle), rigid.mass(handle))
-        else {
+        let (Some(BodyKind::Dynamic), Some(mass)) = (rigid.kind(handle), rigid.mass(handle)) else {
             return false;
         };
         let length = direction.iter().map(|c| c * c).sum::<f64>().sqrt();
@@ -252,9 +251,8 @@ impl Session {
                 let q = rigid
                     .orientation(handle)
                     .map_or([1.0, 0.0, 0.0, 0.0], |q| q.to_f64());
-                self.buffer.extend(
-                    [p[0], p[1], p[2], q[1], q[2], q[3], q[0]].map(|c| c as f32),
-                );
+                self.buffer
+                    .extend([p[0], p[1], p[2], q[1], q[2], q[3], q[0]].map(|c| c as f32));
             }
         }
         &self.buffer

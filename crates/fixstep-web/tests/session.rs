@@ -14,7 +14,9 @@ use fixstep_web::verdict::verify_bytes;
 fn native_checksum(name: &str, ticks: u64) -> String {
     let scene = fixstep_scenes::builtin_scene::<Fx>(name).expect("built-in scene");
     let every = NonZeroU32::new(1000).expect("non-zero");
-    hex(record(&scene, ticks, every).expect("records").final_checksum())
+    hex(record(&scene, ticks, every)
+        .expect("records")
+        .final_checksum())
 }
 
 fn committed(name: &str) -> Vec<u8> {
@@ -24,7 +26,12 @@ fn committed(name: &str) -> Vec<u8> {
 
 #[test]
 fn the_checksum_after_n_ticks_is_the_native_run_s() {
-    for (name, ticks) in [("pyramid", 12), ("cloth", 6), ("dam_break", 2), ("shooter", 40)] {
+    for (name, ticks) in [
+        ("pyramid", 12),
+        ("cloth", 6),
+        ("dam_break", 2),
+        ("shooter", 40),
+    ] {
         let mut session = Session::builtin(name).expect("loads");
         for _ in 0..ticks {
             session.step();
