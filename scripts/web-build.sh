@@ -41,7 +41,7 @@ fi
 build() { # build OUT_DIR TARGET_SUBDIR [RUSTFLAGS]
   RUSTFLAGS="${RUSTFLAGS:-} ${3:-}" cargo build --release --locked -p fixstep-web \
     --target wasm32-unknown-unknown --target-dir "$target/$2"
-  "$bindgen" --target web --out-dir "$1" \
+  "$bindgen" --target web --remove-name-section --remove-producers-section --out-dir "$1" \
     "$target/$2/wasm32-unknown-unknown/release/fixstep_web.wasm"
 }
 
