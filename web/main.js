@@ -30,6 +30,8 @@ world.add(new THREE.HemisphereLight(0xdde6ff, 0x3a3128, 1.1));
 const sun = new THREE.DirectionalLight(0xffffff, 2.2);
 sun.castShadow = true;
 sun.shadow.mapSize.set(2048, 2048);
+sun.shadow.bias = -0.0005;
+sun.shadow.normalBias = 0.02;
 world.add(sun, sun.target);
 const camera = new THREE.PerspectiveCamera(50, 1, 0.05, 500);
 const controls = new OrbitControls(camera, canvas);
