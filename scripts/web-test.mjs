@@ -1,94 +1,21 @@
-// The live page in headless Chromium, driven over the DevTools protocol (a small client on
-// Node's WebSocket; run with `node --experimental-websocket` on Node 20). Called by
+// The live page in headless Chromium, driven over the DevTools protocol (scripts/cdp.mjs;
+// run with `node --experimental-websocket` on Node 20). Called by
 // scripts/web-test.sh, which serves the repository on BASE and checks what this prints.
 // Usage: node --experimental-websocket scripts/web-test.mjs CHROMIUM BASE OUT SCENES REPLAYS
 //   SCENES: NAME:TICKS,...  REPLAYS: file names in replays/, comma-separated
 // Prints one line per check: `checksum NAME TICKS HEX`, `replay FILE VERDICT MS LINE`,
 // `bad-replay VERDICT MESSAGE`, `recorded PATH COMMANDS`, `first-frame MS`, `screenshot
 // PATH SHARE`, then `console-errors N` (and each error); exits 1 on a failure it can see.
-import { spawn } from 'node:child_process';
-import { mkdtempSync, readdirSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { inflateSync } from 'node:zlib';
+import { launch, sleep } from './cdp.mjs';
 
 const [chromium, base, out, scenesArg, replaysArg] = process.argv.slice(2);
 const scenes = scenesArg.split(',').map((s) => s.split(':'));
 const replays = replaysArg ? replaysArg.split(',') : [];
 const downloads = join(out, 'downloads');
-const profile = mkdtempSync(join(tmpdir(), 'fixstep-web-test-'));
-
-const browser = spawn(chromium, [
-  '--headless', '--no-sandbox', '--hide-scrollbars', '--window-size=1000,700',
-  '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist',
-  '--no-first-run', '--no-default-browser-check', `--user-data-dir=${profile}`,
-  '--remote-debugging-port=0', 'about:blank',
-], { stdio: ['ignore', 'ignore', 'pipe'] });
-const endpoint = await new Promise((resolve, reject) => {
-  let text = '';
-  browser.stderr.on('data', (chunk) => {
-    text += chunk;
-    const match = text.match(/DevTools listening on (ws:\/\/\S+)/);
-    if (match) resolve(match[1]);
-  });
-  browser.on('exit', (code) => reject(new Error(`chromium exited (${code}): ${text}`)));
-  setTimeout(() => reject(new Error(`no DevTools endpoint: ${text}`)), 30000);
-});
-
-// The protocol: numbered requests, answered by id; events to listeners.
-const socket = new WebSocket(endpoint);
-await new Promise((resolve) => socket.addEventListener('open', resolve));
-let next = 0;
-const waiting = new Map();
-const listeners = [];
-socket.addEventListener('message', ({ data }) => {
-  const message = JSON.parse(data);
-  if (message.id !== undefined) {
-    const { resolve, reject } = waiting.get(message.id);
-    waiting.delete(message.id);
-    message.error ? reject(new Error(JSON.stringify(message.error))) : resolve(message.result);
-  } else {
-    for (const listener of listeners) listener(message);
-  }
-});
-const send = (method, params = {}, sessionId) => new Promise((resolve, reject) => {
-  const id = ++next;
-  waiting.set(id, { resolve, reject });
-  socket.send(JSON.stringify({ id, method, params, sessionId }));
-});
-
-const { targetId } = await send('Target.createTarget', { url: 'about:blank' });
-const { sessionId } = await send('Target.attachToTarget', { targetId, flatten: true });
-const page = (method, params) => send(method, params, sessionId);
-const errors = [];
-listeners.push(({ method, params }) => {
-  if (method === 'Runtime.exceptionThrown') {
-    errors.push(`uncaught: ${params.exceptionDetails.exception?.description ?? params.exceptionDetails.text}`);
-  } else if (method === 'Runtime.consoleAPICalled' && ['error', 'assert'].includes(params.type)) {
-    errors.push(`console.${params.type}: ${params.args.map((a) => a.value ?? a.description).join(' ')}`);
-  } else if (method === 'Log.entryAdded' && params.entry.level === 'error') {
-    errors.push(`log: ${params.entry.text} ${params.entry.url ?? ''}`);
-  }
-});
-await page('Runtime.enable');
-await page('Log.enable');
-await page('Page.enable');
-await send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
-
-const evaluate = async (expression) => {
-  const { result, exceptionDetails } = await page('Runtime.evaluate', {
-    expression, awaitPromise: true, returnByValue: true,
-  });
-  if (exceptionDetails) throw new Error(`${expression}: ${exceptionDetails.exception?.description}`);
-  return result.value;
-};
-const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
-const until = async (expression, seconds, what) => {
-  for (const end = Date.now() + seconds * 1000; Date.now() < end; await sleep(50)) {
-    if (await evaluate(expression)) return;
-  }
-  throw new Error(`timed out after ${seconds} s waiting for ${what}`);
-};
+const { page, evaluate, until, errors, close } = await launch(chromium, downloads);
 const open = async (query) => {
   await page('Page.navigate', { url: `${base}/web/index.html?${query}` });
   await until("document.readyState === 'complete' && window.fixstepPage?.session != null", 60, `the page (${query})`);
@@ -166,7 +93,7 @@ try {
 console.log(`console-errors ${errors.length}`);
 for (const error of errors) console.log(`  ${error}`);
 if (errors.length) failed = true;
-browser.kill();
+close();
 process.exit(failed ? 1 : 0);
 
 // The share of a PNG's pixels in saturated colour (the background and ground are grey).

@@ -31,9 +31,11 @@ pub struct Session {
     pending: Vec<Command<Fx>>,
     /// The ticks at which the page gave commands.
     page_ticks: Vec<u64>,
-    /// Live bodies last listed by [`Session::bodies`].
+    /// Live bodies last listed by [`Session::body_poses`].
     handles: Vec<Handle>,
+    /// Bumped whenever `handles` changes.
     layout: u32,
+    /// The floats the last position view shows.
     buffer: Vec<f32>,
 }
 
