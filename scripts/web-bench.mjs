@@ -9,8 +9,10 @@ import { launch } from './cdp.mjs';
 const [chromium, base, scenesArg] = process.argv.slice(2);
 const { page, evaluate, until, errors, close } = await launch(chromium);
 const open = async (query) => {
+  await page('Page.navigate', { url: 'about:blank' });
+  await until("location.href === 'about:blank'", 60, 'a blank page');
   await page('Page.navigate', { url: `${base}/web/index.html?${query}` });
-  await until("document.body.dataset.firstFrame !== undefined", 60, `the page (${query})`);
+  await until("document.body?.dataset.firstFrame !== undefined", 60, `the page (${query})`);
 };
 
 await open('scene=tiny&ticks=1');
