@@ -14,6 +14,7 @@
 #   host-avx2      host-release's binary with FIXSTEP_SIMD=avx2 (its AVX2 kernels, none of
 #                  its AVX-512 ones: what an x86-64 processor without AVX-512 runs)
 #   host-scalar    host-release's binary with FIXSTEP_SIMD=scalar (no kernels at all)
+#   host-threads4  host-release's binary with FIXSTEP_THREADS=4 (each world on 4 threads)
 #   i686           32-bit x86, run natively
 #   aarch64        64-bit ARM under qemu-user, with its NEON kernels
 #   aarch64-scalar aarch64's binary with FIXSTEP_SIMD=scalar (no kernels)
@@ -31,7 +32,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-ALL=host-debug,host-release,host-native,host-avx2,host-scalar,i686,aarch64,aarch64-scalar,s390x,wasm32-wasip1,wasm32-simd128,miri-s390x
+ALL=host-debug,host-release,host-native,host-avx2,host-scalar,host-threads4,i686,aarch64,aarch64-scalar,s390x,wasm32-wasip1,wasm32-simd128,miri-s390x
 SELECTED=$ALL INSTALL=1 STRICT=0
 while [[ $# -gt 0 ]]; do
   case $1 in
@@ -99,6 +100,7 @@ t_host_debug()   { build host-debug && verify host-debug target/debug/$VERIFIER;
 t_host_release() { build host-release --release && verify host-release target/release/$VERIFIER; }
 t_host_avx2()    { build host-release --release && FIXSTEP_SIMD=avx2 verify host-avx2 target/release/$VERIFIER; }
 t_host_scalar()  { build host-release --release && FIXSTEP_SIMD=scalar verify host-scalar target/release/$VERIFIER; }
+t_host_threads4() { build host-release --release && FIXSTEP_THREADS=4 verify host-threads4 target/release/$VERIFIER; }
 t_host_native() {
   CARGO_TARGET_DIR=target/matrix-native RUSTFLAGS="${RUSTFLAGS:-} -C target-cpu=native" \
     build host-native --release && verify host-native target/matrix-native/release/$VERIFIER

@@ -99,6 +99,7 @@ pub mod character;
 pub mod codec;
 pub mod fluid;
 pub mod math;
+pub mod parallel;
 pub mod particles;
 pub mod prelude;
 pub mod replay;

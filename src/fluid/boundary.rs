@@ -13,7 +13,9 @@
 //! into the wall removed. So no particle ever leaves the tank except upward, however fast.
 
 use super::settings::FluidSettings;
+use super::system::PARTICLE_CHUNK;
 use crate::math::{Real, Vec3};
+use crate::parallel::for_each_zip_mut;
 
 /// The lattice sites `lo + (i + ½)·spacing` below `hi`, as coordinates.
 fn sites<R: Real>(lo: R, hi: R, spacing: R) -> Vec<R> {
@@ -100,13 +102,13 @@ pub(crate) fn advect<R: Real>(
     let gap = s.spacing * R::from_ratio(1, 4);
     let lo = Vec3::new(s.tank.min.x + gap, s.tank.min.y + gap, s.tank.min.z + gap);
     let hi = Vec3::new(s.tank.max.x - gap, R::MAX, s.tank.max.z - gap);
-    for (x, v) in positions.iter_mut().zip(velocities) {
+    for_each_zip_mut(positions, velocities, PARTICLE_CHUNK, |_, x, v| {
         let mut p = x.add_scaled(*v, dt);
         limit(&mut p.x, &mut v.x, lo.x, hi.x);
         limit(&mut p.y, &mut v.y, lo.y, hi.y);
         limit(&mut p.z, &mut v.z, lo.z, hi.z);
         *x = p;
-    }
+    });
 }
 
 /// Keeps one coordinate in `[lo, hi]`, removing the velocity that points out.

@@ -1,7 +1,8 @@
 //! Density by kernel summation, normalised by the rest density.
 
-use super::system::FluidSystem;
+use super::system::{FluidSystem, PARTICLE_CHUNK};
 use crate::math::Real;
+use crate::parallel::for_each_mut;
 
 impl<R: Real> FluidSystem<R> {
     /// Stage 3: ρᵢ/ρ₀ = V₀W(0) + Σⱼ V₀Wᵢⱼ + Σ_b V₀W_ib over fluid neighbours j and boundary
@@ -11,21 +12,21 @@ impl<R: Real> FluidSystem<R> {
         let s = &mut self.scratch;
         let own = self.settings.kernel.density_scale;
         s.density.clear();
-        for i in 0..self.positions.len() {
-            let mut rho = own;
-            for &w in &s.fluid.value[s.fluid.range(i)] {
-                rho += w;
+        s.density.resize(self.positions.len(), own);
+        let (fluid, walls, bodies) = (&s.fluid, &s.walls, &s.bodies);
+        for_each_mut(&mut s.density, PARTICLE_CHUNK, |i, rho| {
+            for &w in &fluid.value[fluid.range(i)] {
+                *rho += w;
             }
-            for &w in &s.walls.value[s.walls.range(i)] {
-                rho += w;
+            for &w in &walls.value[walls.range(i)] {
+                *rho += w;
             }
-            if s.bodies.active {
-                let lists = &s.bodies.lists;
+            if bodies.active {
+                let lists = &bodies.lists;
                 for &w in &lists.value[lists.range(i)] {
-                    rho += w;
+                    *rho += w;
                 }
             }
-            s.density.push(rho);
-        }
+        });
     }
 }

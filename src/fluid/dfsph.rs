@@ -47,8 +47,9 @@
 //! corrections ≈ 10⁻² m/s.
 
 use super::row_sums;
-use super::system::FluidSystem;
+use super::system::{FluidSystem, PARTICLE_CHUNK};
 use crate::math::{Real, Vec3};
+use crate::parallel::{for_each_mut, for_each_zip_mut, map_chunks_mut};
 
 /// The largest predicted compression max(ρ̃*ᵢ − 1, 0) a solve leaves on any one particle:
 /// 1/10, the loosest tolerance on the mean a scene may set.
@@ -125,27 +126,35 @@ impl<R: Real> FluidSystem<R> {
         let mass = self.particle_mass();
         let s = &mut self.scratch;
         s.gradient_bits = row_sums::gradient_sums(&s.fluid, &mut s.delta, &mut s.rate);
+        let n = self.positions.len();
         s.factor.clear();
+        s.factor.resize(n, R::ZERO);
         s.wall_gradient.clear();
-        for i in 0..self.positions.len() {
-            let (sum, squares) = (s.delta[i], s.rate[i]);
-            let mut wall = Vec3::ZERO;
-            for g in s.walls.range(i).map(|e| s.walls.gradient(e)) {
-                wall += g;
-            }
-            if s.bodies.active {
-                let lists = &s.bodies.lists;
-                for g in lists.range(i).map(|e| lists.gradient(e)) {
-                    wall += g;
+        s.wall_gradient.resize(n, Vec3::ZERO);
+        let (walls, bodies, positions) = (&s.walls, &s.bodies, &self.positions);
+        let (delta, rate) = (&s.delta, &s.rate);
+        for_each_zip_mut(
+            &mut s.wall_gradient,
+            &mut s.factor,
+            PARTICLE_CHUNK,
+            |i, wall, factor| {
+                let (sum, squares) = (delta[i], rate[i]);
+                for g in walls.range(i).map(|e| walls.gradient(e)) {
+                    *wall += g;
                 }
-            }
-            s.wall_gradient.push(wall);
-            let mut d = ((sum + wall).length_squared() + squares).max(floor);
-            if s.bodies.active {
-                d += s.bodies.mobility(i, self.positions[i], mass);
-            }
-            s.factor.push(inv_dt / (dt * d));
-        }
+                if bodies.active {
+                    let lists = &bodies.lists;
+                    for g in lists.range(i).map(|e| lists.gradient(e)) {
+                        *wall += g;
+                    }
+                }
+                let mut d = ((sum + *wall).length_squared() + squares).max(floor);
+                if bodies.active {
+                    d += bodies.mobility(i, positions[i], mass);
+                }
+                *factor = inv_dt / (dt * d);
+            },
+        );
     }
 
     /// kᵢ = max(ρ̃*ᵢ − 1, 0) αᵢ into `scalar`, ρ̃*ᵢ = bᵢ + Δt Dρ̃ᵢ/Dt with bᵢ as `solve`
@@ -154,30 +163,46 @@ impl<R: Real> FluidSystem<R> {
         let s = &mut self.scratch;
         row_sums::density_rates(&s.fluid, s.gradient_bits, &self.velocities, &mut s.rate);
         s.scalar.clear();
-        let mut total = R::ZERO;
-        let mut largest = R::ZERO;
-        for (i, &vi) in self.velocities.iter().enumerate() {
-            // Away from the walls (most of the fluid) the wall term is zero.
-            let wall = s.wall_gradient[i];
-            let mut walls = if wall == Vec3::ZERO {
-                R::ZERO
-            } else {
-                vi.dot(wall)
-            };
-            if s.bodies.active {
-                walls -= s.bodies.rate[i];
+        s.scalar.resize(self.velocities.len(), R::ZERO);
+        let velocities = &self.velocities;
+        let (wall_gradient, bodies, rate) = (&s.wall_gradient, &s.bodies, &s.rate);
+        let (density, factor) = (&s.density, &s.factor);
+        // Σ and max over fixed chunks of particles, folded in chunk order: in fixed point
+        // the sum is exact in any grouping unless it saturates, and the chunks depend on
+        // the particle count alone, never on the thread count.
+        let parts = map_chunks_mut(&mut s.scalar, PARTICLE_CHUNK, |start, scalar| {
+            let mut total = R::ZERO;
+            let mut largest = R::ZERO;
+            for (k, stiffness) in scalar.iter_mut().enumerate() {
+                let i = start + k;
+                let vi = velocities[i];
+                // Away from the walls (most of the fluid) the wall term is zero.
+                let wall = wall_gradient[i];
+                let mut walls = if wall == Vec3::ZERO {
+                    R::ZERO
+                } else {
+                    vi.dot(wall)
+                };
+                if bodies.active {
+                    walls -= bodies.rate[i];
+                }
+                let change = (rate[i] + walls) * dt;
+                let error = match solve {
+                    Solve::DivergenceFree => change,
+                    Solve::ConstantDensity => density[i] + change - R::ONE,
+                }
+                .max(R::ZERO);
+                total += error;
+                largest = largest.max(error);
+                *stiffness = error * factor[i];
             }
-            let change = (s.rate[i] + walls) * dt;
-            let error = match solve {
-                Solve::DivergenceFree => change,
-                Solve::ConstantDensity => s.density[i] + change - R::ONE,
-            }
-            .max(R::ZERO);
-            total += error;
-            largest = largest.max(error);
-            s.scalar.push(error * s.factor[i]);
-        }
-        (total, largest)
+            (total, largest)
+        });
+        parts
+            .into_iter()
+            .fold((R::ZERO, R::ZERO), |(total, largest), (t, l)| {
+                (total + t, largest.max(l))
+            })
     }
 
     /// vᵢ ← vᵢ − Δt (Σⱼ (kᵢ + kⱼ) V₀∇Wᵢⱼ + Σ_b kᵢ V₀∇W_ib), Jacobi.
@@ -185,15 +210,16 @@ impl<R: Real> FluidSystem<R> {
         let mass = self.particle_mass();
         let s = &mut self.scratch;
         row_sums::pressure_pushes(&s.fluid, s.gradient_bits, &s.scalar, &mut s.delta);
-        for (i, v) in self.velocities.iter_mut().enumerate() {
-            let wall = s.wall_gradient[i];
+        let (wall_gradient, delta, scalar) = (&s.wall_gradient, &s.delta, &s.scalar);
+        for_each_mut(&mut self.velocities, PARTICLE_CHUNK, |i, v| {
+            let wall = wall_gradient[i];
             let push = if wall == Vec3::ZERO {
-                s.delta[i]
+                delta[i]
             } else {
-                s.delta[i] + wall * s.scalar[i]
+                delta[i] + wall * scalar[i]
             };
             *v -= push * dt;
-        }
+        });
         if s.bodies.active {
             s.bodies.push_iteration(&s.scalar, mass * dt);
         }

@@ -14,6 +14,11 @@ use super::row_sums::GradientBits;
 use super::settings::FluidSettings;
 use crate::math::{Fx, Real, Vec3};
 
+/// Particles a worker takes at a time in the fluid's per-particle loops
+/// ([`crate::parallel`]); it sets which particles a partial sum covers, so it is a constant,
+/// never derived from the thread count.
+pub(crate) const PARTICLE_CHUNK: usize = 1024;
+
 /// The fluid of a world: particle positions and velocities, in creation order (a
 /// particle's index is its id; particles are never removed), and the emitters.
 ///

@@ -27,4 +27,6 @@ pub use format::{Checkpoint, ReplayHeader, Section, content_hash};
 pub use record::{DEFAULT_CHECKSUM_EVERY, Recorder, record, rerecord};
 pub use scene_id::scene_id;
 pub use stream::StreamingRecorder;
-pub use verify::{VerifyOutcome, verify, verify_reporting, verify_with_progress};
+pub use verify::{
+    VerifyOutcome, verify, verify_on_threads, verify_reporting, verify_with_progress,
+};

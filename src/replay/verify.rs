@@ -50,6 +50,14 @@ pub fn verify_with_progress(
     Ok(verify_world(replay, &mut world, &mut on_tick))
 }
 
+/// [`verify`](fn@verify) with the world stepping on `threads` threads
+/// ([`World::set_threads`]; 0: every core): the outcome is the same at any count.
+pub fn verify_on_threads(replay: &Replay, threads: usize) -> Result<VerifyOutcome, SceneError> {
+    let mut world = build_world(replay.scene())?;
+    world.set_threads(threads);
+    Ok(verify_world(replay, &mut world, &mut |_| {}))
+}
+
 /// [`verify_with_progress`] with the divergence check on (sampled every
 /// `divergence_every` ticks), returning the world as it stopped as well, so that a driver
 /// can report what it has to warn about, as it would for a run ([`World::warnings`],

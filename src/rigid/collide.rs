@@ -26,6 +26,7 @@
 //! The result is sorted by key.
 
 use super::aabb::Aabb;
+use super::bodies::Bodies;
 use super::capped_pairs::static_pairs;
 use super::contact::{Contact, ContactKey};
 use super::desc::BodyKind;
@@ -41,6 +42,7 @@ use super::solver::LANES;
 use super::system::RigidSystem;
 use super::transform::Transform;
 use crate::math::{Real, Vec3};
+use crate::parallel::{map_collect, splits};
 
 impl<R: Real> RigidSystem<R> {
     /// Stage 1: recomputes the contact list (see the [module](self) documentation).
@@ -191,94 +193,31 @@ impl<R: Real> RigidSystem<R> {
             };
             contacts.push(contact);
         };
-        let box_pair = |index: usize| {
-            let (a, b) = pairs[index];
-            if carried[index] != u32::MAX {
-                // Carried, not recomputed: no separating-axis test.
-                return None;
-            }
-            let (ia, ib) = (a as usize, b as usize);
-            match (&bodies.shape[ia], &bodies.shape[ib]) {
-                (Shape::Box { half_extents: ha }, Shape::Box { half_extents: hb })
-                    if collides((a, b)) =>
-                {
-                    Some(BoxPair {
-                        half_a: *ha,
-                        xf_a: &transforms[ia],
-                        half_b: *hb,
-                        xf_b: &transforms[ib],
-                    })
-                }
-                _ => None,
-            }
+        let narrowphase = Narrowphase {
+            pairs,
+            carried,
+            bodies,
+            transforms,
+            margin,
         };
-        // Pairs go in runs: from a box–box pair, up to LANES of them, whose separating-axis
-        // tests are done together, and the other pairs among them; otherwise the one pair.
-        // Every pair of a run, in order, then gets its manifold.
-        let unused = BoxPair {
-            half_a: Vec3::ZERO,
-            xf_a: &Transform::IDENTITY,
-            half_b: Vec3::ZERO,
-            xf_b: &Transform::IDENTITY,
-        };
-        let mut boxes = [unused; LANES];
-        let mut indices = [usize::MAX; LANES];
-        let mut next = 0;
-        while next < pairs.len() {
-            let mut count = 0;
-            let mut end = next;
-            while end < pairs.len() && count < LANES {
-                if let Some(pair) = box_pair(end) {
-                    boxes[count] = pair;
-                    indices[count] = end;
-                    count += 1;
-                } else if count == 0 {
-                    end += 1;
-                    break;
-                }
-                end += 1;
-            }
-            let axes = if count > 0 {
-                separating_axes_batch(&boxes[..count], margin)
-            } else {
-                [None; LANES]
-            };
-            let mut lane = 0;
-            for (index, &(a, b)) in pairs.iter().enumerate().take(end).skip(next) {
-                if !collides((a, b)) {
-                    continue;
-                }
-                let key = |part_a, part_b| ContactKey {
-                    body_a: a,
-                    body_b: b,
-                    part_a,
-                    part_b,
-                };
-                if carried[index] != u32::MAX {
-                    push(key(0, 0), Found::Carried(carried[index]));
-                    continue;
-                }
-                if lane < count && indices[lane] == index {
-                    if let Some(axes) = &axes[lane] {
-                        let manifold = box_box_contact(&boxes[lane], axes, margin);
-                        if manifold.count > 0 {
-                            push(key(0, 0), Found::Fresh(&manifold));
-                        }
-                    }
-                    lane += 1;
-                    continue;
-                }
-                let (ia, ib) = (a as usize, b as usize);
-                for_each_manifold(
-                    &bodies.shape[ia],
-                    &transforms[ia],
-                    &bodies.shape[ib],
-                    &transforms[ib],
-                    margin,
-                    |part_a, part_b, manifold| push(key(part_a, part_b), Found::Fresh(manifold)),
+        if splits() && pairs.len() > NARROWPHASE_CHUNK {
+            // On the workers: each chunk of pairs finds its manifolds into a list of its own;
+            // the lists are then taken in chunk order, so the contacts come in the order the
+            // one-thread loop gives them.
+            let found = map_collect(pairs.len().div_ceil(NARROWPHASE_CHUNK), 1, |c| {
+                let start = c * NARROWPHASE_CHUNK;
+                let mut found = Vec::new();
+                narrowphase.run(
+                    start..(start + NARROWPHASE_CHUNK).min(pairs.len()),
+                    |key, f| found.push((key, f.to_owned())),
                 );
+                found
+            });
+            for (key, f) in found.iter().flatten() {
+                push(*key, f.borrowed());
             }
-            next = end;
+        } else {
+            narrowphase.run(0..pairs.len(), &mut push);
         }
         // Two runs, each in key order (the contacts kept, then the new ones), with distinct
         // keys: the stable sort merges them in one pass and leaves a single run untouched.
@@ -488,6 +427,153 @@ pub(super) fn for_each_part<R: Real>(
 enum Found<'a, R: Real> {
     Fresh(&'a Manifold<R>),
     Carried(u32),
+}
+
+impl<R: Real> Found<'_, R> {
+    /// The same, holding its manifold (to pass it from a worker).
+    fn to_owned(&self) -> FoundOwned<R> {
+        match *self {
+            Found::Fresh(manifold) => FoundOwned::Fresh(*manifold),
+            Found::Carried(index) => FoundOwned::Carried(index),
+        }
+    }
+}
+
+/// [`Found`], holding its manifold.
+enum FoundOwned<R: Real> {
+    Fresh(Manifold<R>),
+    Carried(u32),
+}
+
+impl<R: Real> FoundOwned<R> {
+    fn borrowed(&self) -> Found<'_, R> {
+        match self {
+            FoundOwned::Fresh(manifold) => Found::Fresh(manifold),
+            FoundOwned::Carried(index) => Found::Carried(*index),
+        }
+    }
+}
+
+/// Pairs a worker takes at a time in the narrowphase: enough that a chunk's work (a few
+/// microseconds at least) outweighs handing it over.
+const NARROWPHASE_CHUNK: usize = 256;
+
+/// What the narrowphase of one step reads: the pairs in key order, which of them carry last
+/// step's contact (`u32::MAX`: none), the bodies and their placements, the speculative
+/// margin (m).
+struct Narrowphase<'a, R: Real> {
+    pairs: &'a [(u32, u32)],
+    carried: &'a [u32],
+    bodies: &'a Bodies<R>,
+    transforms: &'a [Transform<R>],
+    margin: R,
+}
+
+impl<R: Real> Narrowphase<'_, R> {
+    /// Whether the pair has a dynamic body (otherwise it has no contact to solve).
+    fn collides(&self, (a, b): (u32, u32)) -> bool {
+        self.bodies.kind[a as usize] == BodyKind::Dynamic
+            || self.bodies.kind[b as usize] == BodyKind::Dynamic
+    }
+
+    /// The pair at `index` as a box–box pair, when it is one to test (not carried).
+    fn box_pair(&self, index: usize) -> Option<BoxPair<'_, R>> {
+        let (a, b) = self.pairs[index];
+        if self.carried[index] != u32::MAX {
+            // Carried, not recomputed: no separating-axis test.
+            return None;
+        }
+        let (ia, ib) = (a as usize, b as usize);
+        match (&self.bodies.shape[ia], &self.bodies.shape[ib]) {
+            (Shape::Box { half_extents: ha }, Shape::Box { half_extents: hb })
+                if self.collides((a, b)) =>
+            {
+                Some(BoxPair {
+                    half_a: *ha,
+                    xf_a: &self.transforms[ia],
+                    half_b: *hb,
+                    xf_b: &self.transforms[ib],
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// Calls `emit(key, found)` for each contact of the pairs `range`, in key order: the
+    /// carried ones, and the manifolds with points. Each pair's contacts depend on that pair
+    /// alone, so a range gives the contacts the whole list gives for its pairs.
+    fn run(&self, range: core::ops::Range<usize>, mut emit: impl FnMut(ContactKey, Found<'_, R>)) {
+        let (pairs, carried, margin) = (self.pairs, self.carried, self.margin);
+        // Pairs go in runs: from a box–box pair, up to LANES of them, whose separating-axis
+        // tests are done together, and the other pairs among them; otherwise the one pair.
+        // Every pair of a run, in order, then gets its manifold.
+        let unused = BoxPair {
+            half_a: Vec3::ZERO,
+            xf_a: &Transform::IDENTITY,
+            half_b: Vec3::ZERO,
+            xf_b: &Transform::IDENTITY,
+        };
+        let mut boxes = [unused; LANES];
+        let mut indices = [usize::MAX; LANES];
+        let mut next = range.start;
+        while next < range.end {
+            let mut count = 0;
+            let mut end = next;
+            while end < range.end && count < LANES {
+                if let Some(pair) = self.box_pair(end) {
+                    boxes[count] = pair;
+                    indices[count] = end;
+                    count += 1;
+                } else if count == 0 {
+                    end += 1;
+                    break;
+                }
+                end += 1;
+            }
+            let axes = if count > 0 {
+                separating_axes_batch(&boxes[..count], margin)
+            } else {
+                [None; LANES]
+            };
+            let mut lane = 0;
+            for (index, &(a, b)) in pairs.iter().enumerate().take(end).skip(next) {
+                if !self.collides((a, b)) {
+                    continue;
+                }
+                let key = |part_a, part_b| ContactKey {
+                    body_a: a,
+                    body_b: b,
+                    part_a,
+                    part_b,
+                };
+                if carried[index] != u32::MAX {
+                    emit(key(0, 0), Found::Carried(carried[index]));
+                    continue;
+                }
+                if lane < count && indices[lane] == index {
+                    if let Some(axes) = &axes[lane] {
+                        let manifold = box_box_contact(&boxes[lane], axes, margin);
+                        if manifold.count > 0 {
+                            emit(key(0, 0), Found::Fresh(&manifold));
+                        }
+                    }
+                    lane += 1;
+                    continue;
+                }
+                let (ia, ib) = (a as usize, b as usize);
+                let shape = &self.bodies.shape;
+                for_each_manifold(
+                    &shape[ia],
+                    &self.transforms[ia],
+                    &shape[ib],
+                    &self.transforms[ib],
+                    margin,
+                    |part_a, part_b, manifold| emit(key(part_a, part_b), Found::Fresh(manifold)),
+                );
+            }
+            next = end;
+        }
+    }
 }
 
 /// Fills `carried` with, for each of `pairs` (in key order, as `old`), the index in `old`

@@ -17,6 +17,7 @@ use crate::math::rng::Pcg32;
 use crate::math::saturation::count_saturations;
 use crate::math::state_hash::StateHasher;
 use crate::math::{Fx, Real, Vec3};
+use crate::parallel::Pool;
 use crate::particles::ParticleSystem;
 use crate::rigid::proxies::Proxies;
 use crate::rigid::{Event, RigidSystem};
@@ -305,6 +306,8 @@ pub struct World<R: Real = Fx> {
     divergence: Option<Box<DivergenceMonitor>>,
     /// The rigid bodies as the soft stage sees them (memory kept between ticks; not state).
     proxies: Proxies<R>,
+    /// The threads the step runs on ([`World::set_threads`]; not state: no bit depends on it).
+    pool: Pool,
 }
 
 impl<R: Real> World<R> {
@@ -334,7 +337,23 @@ impl<R: Real> World<R> {
             build_warnings: Vec::new(),
             divergence: None,
             proxies: Proxies::default(),
+            pool: Pool::process_default(),
         }
+    }
+
+    /// Steps on `threads` threads from now on: 0 for every core, 1 for the calling thread
+    /// alone. A world starts with [`parallel::default_threads`](crate::parallel::default_threads):
+    /// the environment variable `FIXSTEP_THREADS`, else 1.
+    /// The result is the same, bit for bit, at any count and after any change
+    /// ([`crate::parallel`]); only the speed differs. Without the `parallel` feature, or where
+    /// threads cannot be started (wasm32), the world keeps one thread.
+    pub fn set_threads(&mut self, threads: usize) {
+        self.pool = Pool::new(threads);
+    }
+
+    /// The threads the step runs on ([`World::set_threads`]).
+    pub fn threads(&self) -> usize {
+        self.pool.threads()
     }
 
     /// Adds a particle system (replacing any previous one).
@@ -479,8 +498,18 @@ impl<R: Real> World<R> {
     }
 
     /// Advances one tick with the given inputs (their `tick` field is not checked here; a
-    /// driver passes the inputs for [`World::tick`]).
+    /// driver passes the inputs for [`World::tick`]), on the world's threads
+    /// ([`World::set_threads`]).
     pub fn step(&mut self, input: &TickInput<R>) -> TickReport {
+        let pool = std::mem::take(&mut self.pool);
+        let report = pool.run(|| self.step_here(input));
+        self.pool = pool;
+        report
+    }
+
+    /// [`World::step`] on this thread, whose loops split across the pool when this thread
+    /// is one of its workers.
+    fn step_here(&mut self, input: &TickInput<R>) -> TickReport {
         let tick = self.state.tick;
         if let Some(rigid) = &mut self.state.rigid {
             rigid.begin_events(tick);

@@ -26,6 +26,7 @@ mod math_sqrt_exp;
 mod math_state_hash;
 mod math_trig;
 mod mesh_queries;
+mod parallel_threads;
 mod particles_collisions;
 mod particles_commands;
 mod particles_emitters;

@@ -35,6 +35,10 @@ pub enum Command {
         /// Replay files.
         #[arg(required = true, value_name = "FILE.replay")]
         files: Vec<PathBuf>,
+        /// Threads: 0 for every core (default: `FIXSTEP_THREADS`, else 1). With two or
+        /// more, the files are verified side by side, their lines printed in argument order.
+        #[arg(long, value_name = "N", value_parser = fixstep::parallel::parse_threads)]
+        threads: Option<usize>,
     },
     /// Describe a replay: header, scene, ticks, checkpoints.
     Info {
@@ -134,6 +138,10 @@ pub struct RunArgs {
     /// the script (from the snapshot's tick on) and user forces, the snapshot the state.
     #[arg(long, value_name = "IN.snapshot", conflicts_with = "record")]
     pub from_snapshot: Option<PathBuf>,
+    /// Threads to step on: 0 for every core (default: `FIXSTEP_THREADS`, else 1); the
+    /// results are the same at any count.
+    #[arg(long, value_name = "N", value_parser = fixstep::parallel::parse_threads)]
+    pub threads: Option<usize>,
 }
 
 impl Default for RunArgs {
@@ -150,6 +158,7 @@ impl Default for RunArgs {
             every: 1,
             snapshot: None,
             from_snapshot: None,
+            threads: None,
         }
     }
 }
@@ -181,6 +190,10 @@ pub struct RenderArgs {
     /// One flat colour per body, no shading, outlines or anti-aliasing (to count bodies).
     #[arg(long)]
     pub flat: bool,
+    /// Threads to step on: 0 for every core (default: `FIXSTEP_THREADS`, else 1); the
+    /// results are the same at any count.
+    #[arg(long, value_name = "N", value_parser = fixstep::parallel::parse_threads)]
+    pub threads: Option<usize>,
 }
 
 /// Arguments of `fixstep query`. The query's values are text here and parsed by
@@ -308,6 +321,10 @@ pub struct PeerArgs {
     /// Testing desync detection: once this peer has run TICK ticks, move a body by one ulp.
     #[arg(long, value_name = "TICK", hide = true)]
     pub nudge_at: Option<u64>,
+    /// Threads to step on: 0 for every core (default: `FIXSTEP_THREADS`, else 1); the
+    /// results are the same at any count.
+    #[arg(long, value_name = "N", value_parser = fixstep::parallel::parse_threads)]
+    pub threads: Option<usize>,
 }
 
 /// A peer address: `HOST:PORT`, resolved (the first address the name resolves to).

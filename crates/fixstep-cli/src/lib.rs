@@ -144,6 +144,22 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         output::eprint_line(&format!("error: {message}"));
         return Status::Invalid.code();
     }
+    if let Err(message) = fixstep::parallel::threads_from_env() {
+        output::eprint_line(&format!("error: {message}"));
+        return Status::Invalid.code();
+    }
+    // `--threads` sets the thread count of every world the command builds.
+    let threads = match &cli.command {
+        Some(Command::Run(args)) => args.threads,
+        Some(Command::Verify { threads, .. }) => *threads,
+        Some(Command::Render(args)) => args.threads,
+        #[cfg(feature = "net")]
+        Some(Command::Peer(args)) => args.threads,
+        _ => None,
+    };
+    if let Some(threads) = threads {
+        fixstep::parallel::set_default_threads(threads);
+    }
     let result = match cli.command {
         None => run::run(&RunArgs::default()).and_then(|status| {
             output::print_line(SHOW_IN_3D)?;
@@ -151,7 +167,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         }),
         Some(Command::Scenes) => scenes::scenes(),
         Some(Command::Run(args)) => run::run(&args),
-        Some(Command::Verify { files }) => verify::verify_files(&files),
+        Some(Command::Verify { files, .. }) => verify::verify_files(&files),
         Some(Command::Info { file }) => info::info(&file),
         Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
         Some(Command::Render(args)) => render::render(&args),

@@ -14,12 +14,20 @@ pub const DIVERGENCE_CHECK_EVERY: u64 = 10;
 /// Prints each of `lines` as `warning: [ABOUT: ]LINE`; `about` names the input when a
 /// command reads several (`verify`).
 pub fn print_warnings(about: Option<&str>, lines: impl IntoIterator<Item = String>) {
-    for line in lines {
-        match about {
-            Some(about) => eprint_line(&format!("warning: {about}: {line}")),
-            None => eprint_line(&format!("warning: {line}")),
-        }
+    for line in warning_lines(about, lines) {
+        eprint_line(&line);
     }
+}
+
+/// Each of `lines` as `warning: [ABOUT: ]LINE`, the lines [`print_warnings`] prints.
+pub fn warning_lines(
+    about: Option<&str>,
+    lines: impl IntoIterator<Item = String>,
+) -> impl Iterator<Item = String> {
+    lines.into_iter().map(move |line| match about {
+        Some(about) => format!("warning: {about}: {line}"),
+        None => format!("warning: {line}"),
+    })
 }
 
 /// The warnings of a run's health, in the order saturations, capped contacts, divergence;

@@ -12,7 +12,11 @@ use crate::math::Quat;
 use crate::math::{Real, Vec3};
 use crate::rigid::bodies::Bodies;
 use crate::rigid::desc::BodyKind;
+use crate::parallel::for_each_mut;
 use crate::rigid::gyroscopic;
+
+/// Bodies a worker takes at a time in the velocity update ([`crate::parallel`]).
+const BODY_CHUNK: usize = 1024;
 
 impl<R: Real> Solver<R> {
     /// Semi-implicit velocity update of every awake dynamic body over substep `h` (s):
@@ -28,10 +32,12 @@ impl<R: Real> Solver<R> {
     /// bodies keep their velocity.
     pub fn integrate_velocities(&mut self, bodies: &Bodies<R>, h: R, gravity: Vec3<R>) {
         let dv_gravity = gravity * h;
-        for (sb, &slot) in self.bodies.iter_mut().zip(&self.slots).skip(1) {
-            let i = slot as usize;
+        let slots = &self.slots[1..];
+        // Each body's update reads only its own slot: the bodies may go to the workers.
+        for_each_mut(&mut self.bodies[1..], BODY_CHUNK, |k, sb| {
+            let i = slots[k] as usize;
             if bodies.kind[i] != BodyKind::Dynamic {
-                continue;
+                return;
             }
             let mut v = sb.v;
             let mut w = sb.w;
@@ -57,7 +63,7 @@ impl<R: Real> Solver<R> {
             }
             sb.v = v;
             sb.w = w;
-        }
+        });
     }
 
     /// Position update over substep `h`: x ← x + h v, q ← normalize(q + ½ h (0, ω) ⊗ q)
