@@ -20,6 +20,7 @@ mod cli_record_stream;
 mod cli_render_folder;
 mod cli_run_outputs;
 mod cli_scene_files;
+mod cli_threads;
 mod cli_usage_messages;
 mod cli_warnings;
 mod net_handshake;

@@ -10,9 +10,9 @@ use super::lanes::LANES;
 #[cfg(doc)]
 use crate::math::Quat;
 use crate::math::{Real, Vec3};
+use crate::parallel::for_each_mut;
 use crate::rigid::bodies::Bodies;
 use crate::rigid::desc::BodyKind;
-use crate::parallel::for_each_mut;
 use crate::rigid::gyroscopic;
 
 /// Bodies a worker takes at a time in the velocity update ([`crate::parallel`]).
