@@ -34,6 +34,7 @@ pub fn reset_saturation_count() {
 
 /// Adds `count` saturations, counted on other threads for work this thread asked for, to
 /// this thread's counter ([`crate::parallel`]).
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 pub(crate) fn add_saturations(count: u64) {
     if count != 0 {
         SATURATIONS.with(|c| c.set(c.get().wrapping_add(count)));
@@ -43,6 +44,7 @@ pub(crate) fn add_saturations(count: u64) {
 /// Runs `f` and returns its result with the number of saturations it caused on this
 /// thread, leaving this thread's counter as it was before: for work done on a worker on
 /// behalf of another thread, which adds the count to its own ([`add_saturations`]).
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 pub(crate) fn isolate_saturations<T>(f: impl FnOnce() -> T) -> (T, u64) {
     let before = saturation_count();
     let value = f();

@@ -20,6 +20,7 @@
 
 use std::ops::Range;
 
+#[cfg(feature = "parallel")]
 use crate::math::saturation::{add_saturations, isolate_saturations};
 
 /// The environment variable that sets a new world's thread count.
@@ -106,16 +107,20 @@ impl Pool {
     /// without the `parallel` feature, or a platform that cannot start threads (wasm32) gets
     /// no workers, and [`Pool::threads`] then says 1.
     pub fn new(threads: usize) -> Self {
-        let threads = resolve_threads(threads);
         #[cfg(feature = "parallel")]
-        if threads >= 2
-            && let Some(workers) = shared_workers(threads)
         {
-            return Self {
-                threads,
-                workers: Some(workers),
-            };
+            let threads = resolve_threads(threads);
+            if threads >= 2
+                && let Some(workers) = shared_workers(threads)
+            {
+                return Self {
+                    threads,
+                    workers: Some(workers),
+                };
+            }
         }
+        #[cfg(not(feature = "parallel"))]
+        let _ = threads;
         Self::default()
     }
 
@@ -213,6 +218,8 @@ pub fn for_each_chunk_mut<T: Send>(
         add_saturations(saturations);
         return;
     }
+    #[cfg(not(feature = "parallel"))]
+    let _ = chunk_len;
     f(0, items);
 }
 
@@ -246,6 +253,8 @@ pub fn for_each_zip_mut<A: Send, B: Send>(
         add_saturations(saturations);
         return;
     }
+    #[cfg(not(feature = "parallel"))]
+    let _ = chunk_len;
     for (i, (a, b)) in a.iter_mut().zip(b).enumerate() {
         f(i, a, b);
     }
@@ -308,6 +317,8 @@ pub fn map_collect<T: Send>(n: usize, chunk_len: usize, f: impl Fn(usize) -> T +
         add_saturations(saturations);
         return values;
     }
+    #[cfg(not(feature = "parallel"))]
+    let _ = chunk_len;
     (0..n).map(f).collect()
 }
 
