@@ -7,6 +7,7 @@ pub mod divergence;
 mod fluid_coupling;
 pub mod health;
 mod particle_coupling;
+mod water_coupling;
 mod pipeline;
 mod queries;
 pub mod scene_id;
