@@ -518,7 +518,7 @@ impl<R: Real> World<R> {
                         water,
                         state.particles.as_mut(),
                         state.rigid.as_mut(),
-                        state.settings.gravity,
+                        &state.settings,
                     );
                 });
             }

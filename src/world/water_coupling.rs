@@ -13,10 +13,23 @@
 //!   other shape as the box that bounds it in its own frame. A body in the water is kept
 //!   awake, as a command's force keeps it. Its angular drag is τ = −k f I ω.
 //!
+//! # Energy
+//!
+//! A force held over a tick from the positions at its start is not what the integrators
+//! expect of a spring-like force: an integrator that splits the tick of h seconds into n
+//! semi-implicit Euler substeps moves a body by x' = x + h v + c h² a with
+//! c = (n + 1)/(2n), and the map (x, v) → (x', v') of an oscillator a = −ω²x then scales
+//! phase-space areas by 1 + (1 − c)(ωh)² per tick: the body bobs higher and higher.
+//! Sampling the water at the position predicted a lead β h ahead, x + β h v (and the
+//! orientation turned by β h ω), scales them by 1 + (1 − c − β)(ωh)², so
+//! β = 1 − c = (n − 1)/(2n) keeps the oscillator's energy ([`lead`]): 0 for particles
+//! stepped once a tick, 2/5 h for rigid bodies in the solver's 5 substeps.
+//!
 //! Bodies and particles outside the grid's footprint feel nothing. The water does not feel
 //! them (one-way coupling). Slots are visited in ascending order.
 
-use crate::math::{Real, Vec3};
+use super::pipeline::Settings;
+use crate::math::{Mat3, Real, Vec3};
 use crate::particles::ParticleSystem;
 use crate::rigid::{Aabb, BodyKind, RigidSystem, Shape, Transform};
 use crate::types::Target;
@@ -25,22 +38,33 @@ use crate::water::float::{
 };
 use crate::water::{WaterBodiesDesc, WaterSystem};
 
-/// Adds this tick's float forces (N) under `gravity` (m/s²) to the particles and bodies
-/// in `water`.
+/// Adds this tick's float forces (N) under the world's `settings` (gravity, tick rate,
+/// substeps) to the particles and bodies in `water`.
 pub(super) fn apply_float_forces<R: Real>(
     water: &WaterSystem<R>,
     particles: Option<&mut ParticleSystem<R>>,
     rigid: Option<&mut RigidSystem<R>>,
-    gravity: Vec3<R>,
+    settings: &Settings<R>,
 ) {
+    let gravity = settings.gravity;
     if let Some(particles) = particles
         && !water.settings().particles.is_empty()
     {
-        float_particles(water, particles, gravity);
+        let lead = lead(settings, settings.substeps);
+        float_particles(water, particles, gravity, lead);
     }
     if let (Some(rigid), Some(bodies)) = (rigid, &water.settings().bodies) {
-        float_bodies(water, bodies, rigid, gravity);
+        let substeps = settings.substeps.saturating_mul(rigid.settings().substeps);
+        float_bodies(water, bodies, rigid, gravity, lead(settings, substeps));
     }
+}
+
+/// The lead β h = (n − 1)/(2n) · h (s) at which the water is sampled ahead of a body
+/// integrated in `n` semi-implicit substeps per tick of h = 1/tick_rate seconds (see the
+/// [module](self)'s Energy).
+fn lead<R: Real>(settings: &Settings<R>, n: u32) -> R {
+    let n = i64::from(n.max(1));
+    R::from_ratio(n - 1, 2 * n * i64::from(settings.tick_rate))
 }
 
 /// Buoyancy ρ g V f and drag −k m f v on every live, movable particle of a floating group.
@@ -48,6 +72,7 @@ fn float_particles<R: Real>(
     water: &WaterSystem<R>,
     particles: &mut ParticleSystem<R>,
     gravity: Vec3<R>,
+    lead: R,
 ) {
     let density = water.settings().density;
     let forces: Vec<_> = particles
@@ -56,14 +81,14 @@ fn float_particles<R: Real>(
             let group = particles.group(handle)?;
             let float = water.settings().particles.iter().find(|f| f.group == group)?;
             let mass = particles.mass(handle).filter(|&m| m > R::ZERO)?;
-            let p = particles.position(handle)?;
+            let velocity = particles.velocity(handle)?;
+            let p = particles.position(handle)?.add_scaled(velocity, lead);
             let surface = water.surface_at(p.x, p.z)?;
             let fraction = column_fraction(p.y, float.height, surface);
             if fraction == R::ZERO {
                 return None;
             }
             let submerged = float.volume * fraction;
-            let velocity = particles.velocity(handle)?;
             let force = float_force(
                 gravity,
                 density,
@@ -88,6 +113,7 @@ fn float_bodies<R: Real>(
     desc: &WaterBodiesDesc<R>,
     rigid: &mut RigidSystem<R>,
     gravity: Vec3<R>,
+    lead: R,
 ) {
     let density = water.settings().density;
     for i in 0..rigid.bodies.len() {
@@ -96,8 +122,10 @@ fn float_bodies<R: Real>(
         {
             continue;
         }
-        let (x, q, mass) = (b.position[i], b.orientation[i], b.mass[i]);
-        let pieces = submerged_pieces(water, &b.shape[i], x, q.to_mat3());
+        let (v, w, mass) = (b.linear_velocity[i], b.angular_velocity[i], b.mass[i]);
+        let ahead = b.position[i].add_scaled(v, lead);
+        let turned = b.orientation[i].integrate(w, lead).to_mat3();
+        let pieces = submerged_pieces(water, &b.shape[i], ahead, turned);
         let (volume, submerged) = pieces
             .iter()
             .fold((R::ZERO, R::ZERO), |(v, s), p| (v + p.volume, s + p.submerged));
@@ -105,11 +133,11 @@ fn float_bodies<R: Real>(
             continue;
         }
         let fraction = (submerged / volume).clamp(R::ZERO, R::ONE);
-        let (v, w) = (b.linear_velocity[i], b.angular_velocity[i]);
-        let inertia = q.to_mat3().rotate_inertia(b.inertia[i]);
+        let inertia = b.orientation[i].to_mat3().rotate_inertia(b.inertia[i]);
+        let back = v * -lead;
         for piece in pieces.iter().filter(|p| p.submerged > R::ZERO) {
             let lift = gravity * -(density * piece.submerged);
-            rigid.apply_force(i, lift, Some(piece.centre));
+            rigid.apply_force(i, lift, Some(piece.centre + back));
         }
         let drag = v * -(desc.drag * mass * fraction);
         rigid.apply_force(i, drag, None);
@@ -133,7 +161,7 @@ fn submerged_pieces<R: Real>(
     water: &WaterSystem<R>,
     shape: &Shape<R>,
     position: Vec3<R>,
-    rotation: crate::math::Mat3<R>,
+    rotation: Mat3<R>,
 ) -> Vec<Piece<R>> {
     if let Shape::Sphere { radius } = *shape {
         let volume = R::PI * radius * radius * radius * R::from_ratio(4, 3);
