@@ -303,3 +303,32 @@ fn snapshot_mid_run_continues_with_the_same_checksums() {
     assert!(a.parts.iter().any(|(part, _)| *part == Part::Water));
     assert_eq!(a, restored.checksum());
 }
+
+#[test]
+fn the_pond_floats_its_corks_and_boxes_and_sinks_its_crate() {
+    let scene = fixstep_scenes::builtin_scene::<Fx>("pond").expect("built in");
+    let mut world = scene.build().expect("builds");
+    let mut simulation_ticks = 0;
+    for tick in 0..scene.ticks {
+        let input = scene.script_at(tick).cloned().unwrap_or_default();
+        let report = world.step(&input);
+        assert_eq!(report.saturations, 0, "tick {tick}");
+        assert_eq!(report.ignored_commands, 0, "tick {tick}");
+        simulation_ticks += 1;
+    }
+    assert_eq!(simulation_ticks, 300);
+    let rigid = world.rigid().expect("bodies");
+    let y: Vec<f64> = rigid
+        .handles()
+        .map(|h| rigid.position(h).expect("alive").y.to_f64())
+        .collect();
+    for (k, &height) in y.iter().enumerate().take(5).skip(1) {
+        assert!(height.abs() < 0.3, "body {k} floats near the surface: {height} m");
+    }
+    assert!((y[5] + 0.3).abs() < 0.01, "the crate rests on the floor: {}", y[5]);
+    let particles = world.particles().expect("corks");
+    for h in particles.handles() {
+        let cork = particles.position(h).expect("alive").y.to_f64();
+        assert!(cork.abs() < 0.2, "a cork floats: {cork} m");
+    }
+}
