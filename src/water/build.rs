@@ -26,13 +26,28 @@ impl<R: Real> WaterSystem<R> {
             ));
         }
         let metres = |n: i32| R::from_int(n);
-        SceneError::check_range("cell_size", desc.cell_size, R::from_ratio(1, 1000), metres(1000), "m")?;
-        SceneError::check_range("depth", desc.depth, R::from_ratio(1, 1000), metres(10_000), "m")?;
+        SceneError::check_range(
+            "cell_size",
+            desc.cell_size,
+            R::from_ratio(1, 1000),
+            metres(1000),
+            "m",
+        )?;
+        SceneError::check_range(
+            "depth",
+            desc.depth,
+            R::from_ratio(1, 1000),
+            metres(10_000),
+            "m",
+        )?;
         SceneError::check_range("damping", desc.damping, R::ZERO, metres(1000), "1/s")?;
         SceneError::check_range("density", desc.density, R::ONE, metres(100_000), "kg/m³")?;
         let extent = |n: u32| desc.cell_size * R::from_int(n as i32);
         let far = |o: R, n: u32| (o.abs() + extent(n)) <= metres(100_000);
-        if !far(desc.origin.x, columns) || !far(desc.origin.z, rows) || desc.origin.y.abs() > metres(100_000) {
+        if !far(desc.origin.x, columns)
+            || !far(desc.origin.z, rows)
+            || desc.origin.y.abs() > metres(100_000)
+        {
             return Err(SceneError::new(
                 "origin",
                 "the grid must lie within 100 km of the world's origin",
@@ -40,7 +55,13 @@ impl<R: Real> WaterSystem<R> {
         }
         let wave_speed = match desc.wave_speed {
             Some(c) => {
-                SceneError::check_range("wave_speed", c, R::from_ratio(1, 1000), metres(1000), "m/s")?;
+                SceneError::check_range(
+                    "wave_speed",
+                    c,
+                    R::from_ratio(1, 1000),
+                    metres(1000),
+                    "m/s",
+                )?;
                 c
             }
             None => (gravity.length() * desc.depth).sqrt(),
@@ -119,7 +140,10 @@ impl<R: Real> WaterSystem<R> {
         let s = &self.settings;
         let (n, m) = (s.columns as usize, s.rows as usize);
         if n == 0 || m == 0 || (n as u64) * (m as u64) > MAX_WATER_CELLS {
-            return Err(SceneError::new("settings.columns", "a grid of no or too many cells"));
+            return Err(SceneError::new(
+                "settings.columns",
+                "a grid of no or too many cells",
+            ));
         }
         if self.heights.len() != n * m {
             return Err(SceneError::new("heights", "one height per cell"));
@@ -154,7 +178,13 @@ impl<R: Real> WaterSystem<R> {
 /// A particle group's column: volume and height positive, drag not negative.
 fn check_float<R: Real>(float: &WaterParticleFloat<R>) -> Result<(), SceneError> {
     let big = R::from_int(1000);
-    SceneError::check_range("volume", float.volume, R::from_ratio(1, 1_000_000), big, "m³")?;
+    SceneError::check_range(
+        "volume",
+        float.volume,
+        R::from_ratio(1, 1_000_000),
+        big,
+        "m³",
+    )?;
     SceneError::check_range("height", float.height, R::from_ratio(1, 1000), big, "m")?;
     SceneError::check_range("drag", float.drag, R::ZERO, big, "1/s")
 }

@@ -17,7 +17,10 @@ impl<R: Real> WaterSystem<R> {
         }
         let size = s.cell_size;
         let half = R::from_ratio(1, 2);
-        let (fx, fz) = ((x - s.origin.x) / size - half, (z - s.origin.z) / size - half);
+        let (fx, fz) = (
+            (x - s.origin.x) / size - half,
+            (z - s.origin.z) / size - half,
+        );
         let reach = radius / size + R::ONE;
         let misses = |f: R, n: u32| f + reach < R::ZERO || f - reach > R::from_int(n as i32);
         if misses(fx, s.columns) || misses(fz, s.rows) {

@@ -72,7 +72,11 @@ mod tests {
         let full = sphere_submerged_volume(fx(-2.0), fx(r), fx(0.0)).to_f64();
         let half = sphere_submerged_volume(fx(0.0), fx(r), fx(0.0)).to_f64();
         assert!((full - whole).abs() < 1e-6 * whole, "{full} vs {whole}");
-        assert!((half - whole / 2.0).abs() < 1e-6 * whole, "{half} vs {}", whole / 2.0);
+        assert!(
+            (half - whole / 2.0).abs() < 1e-6 * whole,
+            "{half} vs {}",
+            whole / 2.0
+        );
         assert_eq!(sphere_submerged_volume(fx(2.0), fx(r), fx(0.0)), Fx::ZERO);
     }
 

@@ -41,7 +41,11 @@ impl<R: Real> Subsystem<R> for WaterSystem<R> {
         (0..self.heights.len())
             .find(|&i| {
                 let (column, row) = (i % n, i / n);
-                let q_x = if column + 1 < n { flow(&self.flow_x, column + (n - 1) * row) } else { R::ZERO };
+                let q_x = if column + 1 < n {
+                    flow(&self.flow_x, column + (n - 1) * row)
+                } else {
+                    R::ZERO
+                };
                 at_range_edge(Vec3::new(self.heights[i], q_x, flow(&self.flow_z, i)))
             })
             .map(|i| Handle::new(i as u32, 0))

@@ -69,10 +69,7 @@ impl<R: Real> WaterSystem<R> {
     /// The volume of water above the rest level (negative below it), m³: Σu · s².
     pub fn volume(&self) -> R {
         let s = self.settings.cell_size;
-        self.heights
-            .iter()
-            .fold(R::ZERO, |sum, &u| sum + u)
-            * (s * s)
+        self.heights.iter().fold(R::ZERO, |sum, &u| sum + u) * (s * s)
     }
 
     /// The sum of the heights as exact integers (raw bits), which the wave step keeps
@@ -89,7 +86,10 @@ impl<R: Real> WaterSystem<R> {
     /// outside it, the nearest edge's height). `None` outside the grid's footprint.
     pub fn surface_at(&self, x: R, z: R) -> Option<R> {
         let s = &self.settings;
-        let (fx, fz) = ((x - s.origin.x) / s.cell_size, (z - s.origin.z) / s.cell_size);
+        let (fx, fz) = (
+            (x - s.origin.x) / s.cell_size,
+            (z - s.origin.z) / s.cell_size,
+        );
         let inside = |f: R, n: u32| f >= R::ZERO && f <= R::from_int(n as i32);
         if !inside(fx, s.columns) || !inside(fz, s.rows) {
             return None;

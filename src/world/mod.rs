@@ -7,7 +7,6 @@ pub mod divergence;
 mod fluid_coupling;
 pub mod health;
 mod particle_coupling;
-mod water_coupling;
 mod pipeline;
 mod queries;
 pub mod scene_id;
@@ -16,6 +15,7 @@ pub(crate) mod soft_coupling;
 pub mod stage;
 mod stage_watch;
 pub mod timestep;
+mod water_coupling;
 
 pub use checksum::Checksum;
 pub use difference::{Difference, first_difference};

@@ -22,11 +22,11 @@ use crate::particles::ParticleSystem;
 use crate::rigid::proxies::Proxies;
 use crate::rigid::{Event, RigidSystem};
 use crate::soft::SoftSystem;
-use crate::water::WaterSystem;
 use crate::types::{
     Command, Handle, Metrics, Part, PlayerInput, SceneError, Stage, StepContext, Subsystem, Target,
     TickInput, check_rates,
 };
+use crate::water::WaterSystem;
 
 /// The version of the simulated state. It names the physics as much as the layout: bump it
 /// whenever a change alters any committed checksum, re-record `replays/`

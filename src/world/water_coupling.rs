@@ -79,7 +79,11 @@ fn float_particles<R: Real>(
         .handles()
         .filter_map(|handle| {
             let group = particles.group(handle)?;
-            let float = water.settings().particles.iter().find(|f| f.group == group)?;
+            let float = water
+                .settings()
+                .particles
+                .iter()
+                .find(|f| f.group == group)?;
             let mass = particles.mass(handle).filter(|&m| m > R::ZERO)?;
             let velocity = particles.velocity(handle)?;
             let p = particles.position(handle)?.add_scaled(velocity, lead);
@@ -118,17 +122,16 @@ fn float_bodies<R: Real>(
     let density = water.settings().density;
     for i in 0..rigid.bodies.len() {
         let b = &rigid.bodies;
-        if !b.alive[i] || b.kind[i] != BodyKind::Dynamic || !b.filter[i].interacts(desc.filter)
-        {
+        if !b.alive[i] || b.kind[i] != BodyKind::Dynamic || !b.filter[i].interacts(desc.filter) {
             continue;
         }
         let (v, w, mass) = (b.linear_velocity[i], b.angular_velocity[i], b.mass[i]);
         let ahead = b.position[i].add_scaled(v, lead);
         let turned = b.orientation[i].integrate(w, lead).to_mat3();
         let pieces = submerged_pieces(water, &b.shape[i], ahead, turned);
-        let (volume, submerged) = pieces
-            .iter()
-            .fold((R::ZERO, R::ZERO), |(v, s), p| (v + p.volume, s + p.submerged));
+        let (volume, submerged) = pieces.iter().fold((R::ZERO, R::ZERO), |(v, s), p| {
+            (v + p.volume, s + p.submerged)
+        });
         if submerged == R::ZERO || volume == R::ZERO {
             continue;
         }

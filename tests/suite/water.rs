@@ -144,9 +144,16 @@ fn an_open_border_lets_waves_out() {
         world.step(&TickInput::default());
     }
     let water = world.water().expect("water");
-    let left = water.heights().iter().map(|u| u.to_f64().abs()).fold(0.0, f64::max);
+    let left = water
+        .heights()
+        .iter()
+        .map(|u| u.to_f64().abs())
+        .fold(0.0, f64::max);
     let kept = water.volume().to_f64();
-    assert!(left < 0.03 * peak, "what is left is {left} m, against a peak of {peak} m");
+    assert!(
+        left < 0.03 * peak,
+        "what is left is {left} m, against a peak of {peak} m"
+    );
     assert!(kept.abs() < 0.03 * start, "{kept} m³ of {start} m³ left");
 }
 
@@ -174,11 +181,32 @@ fn a_floating_particle_bobs_at_its_natural_frequency() {
     let (rho, g, area, mass) = (1000.0f64, 9.81, 0.01, 1.0);
     let omega = (rho * g * area / mass).sqrt();
     let mut world = build(BOBBER);
-    let handle = world.particles().expect("particles").handles().next().expect("one");
-    let mut ys = vec![world.particles().unwrap().position(handle).unwrap().y.to_f64()];
+    let handle = world
+        .particles()
+        .expect("particles")
+        .handles()
+        .next()
+        .expect("one");
+    let mut ys = vec![
+        world
+            .particles()
+            .unwrap()
+            .position(handle)
+            .unwrap()
+            .y
+            .to_f64(),
+    ];
     for _ in 0..240 {
         world.step(&TickInput::default());
-        ys.push(world.particles().unwrap().position(handle).unwrap().y.to_f64());
+        ys.push(
+            world
+                .particles()
+                .unwrap()
+                .position(handle)
+                .unwrap()
+                .y
+                .to_f64(),
+        );
     }
     // Downward crossings of the rest height, interpolated.
     let dt = 1.0 / 60.0;
@@ -199,7 +227,10 @@ fn a_floating_particle_bobs_at_its_natural_frequency() {
         100.0 * error
     );
     let top = ys.iter().copied().fold(f64::MIN, f64::max);
-    assert!((top - 0.03).abs() < 0.003, "no drag, so the amplitude stays: {top}");
+    assert!(
+        (top - 0.03).abs() < 0.003,
+        "no drag, so the amplitude stays: {top}"
+    );
 }
 
 #[test]
@@ -232,7 +263,10 @@ fn floating_bodies_settle_where_archimedes_says() {
     let block = rigid.position(handles[1]).expect("box").y.to_f64();
     eprintln!("floating: ball centre {ball:.5} m, box centre {block:.5} m");
     assert!(ball.abs() < 0.005, "the ball's centre is at {ball} m");
-    assert!((block - 0.1).abs() < 0.005, "the box's centre is at {block} m");
+    assert!(
+        (block - 0.1).abs() < 0.005,
+        "the box's centre is at {block} m"
+    );
 }
 
 #[test]
@@ -251,7 +285,10 @@ fn bad_fields_are_named() {
         )
     };
     assert_eq!(field(&with("damping: -1.0")), "water_surface.damping");
-    assert_eq!(field(&with("wave_speed: Some(0.0)")), "water_surface.wave_speed");
+    assert_eq!(
+        field(&with("wave_speed: Some(0.0)")),
+        "water_surface.wave_speed"
+    );
     assert_eq!(field(&with("density: 0.0")), "water_surface.density");
     assert_eq!(
         field(&with("particles: [(group: 0, volume: 0.0, height: 1.0)]")),
@@ -263,7 +300,10 @@ fn bad_fields_are_named() {
         )),
         "water_surface.particles[1].group"
     );
-    assert_eq!(field(&with("bodies: Some((drag: -1.0))")), "water_surface.bodies.drag");
+    assert_eq!(
+        field(&with("bodies: Some((drag: -1.0))")),
+        "water_surface.bodies.drag"
+    );
     let text = with("").replace("cells: (4, 4)", "cells: (0, 4)");
     assert_eq!(field(&text), "water_surface.cells");
     let text = with("wave_speed: Some(900.0)").replace("cell_size: 0.5", "cell_size: 0.01");
@@ -275,7 +315,13 @@ fn a_disturbance_without_water_is_ignored() {
     let mut world = build(r#"(name: "dry")"#);
     let report = world.step(&disturb(0.0, 0.0, 1.0, 1.0));
     assert_eq!(report.ignored_commands, 1);
-    assert!(world.checksum().parts.iter().all(|(part, _)| *part != Part::Water));
+    assert!(
+        world
+            .checksum()
+            .parts
+            .iter()
+            .all(|(part, _)| *part != Part::Water)
+    );
 }
 
 #[test]
@@ -323,9 +369,16 @@ fn the_pond_floats_its_corks_and_boxes_and_sinks_its_crate() {
         .map(|h| rigid.position(h).expect("alive").y.to_f64())
         .collect();
     for (k, &height) in y.iter().enumerate().take(5).skip(1) {
-        assert!(height.abs() < 0.3, "body {k} floats near the surface: {height} m");
+        assert!(
+            height.abs() < 0.3,
+            "body {k} floats near the surface: {height} m"
+        );
     }
-    assert!((y[5] + 0.3).abs() < 0.01, "the crate rests on the floor: {}", y[5]);
+    assert!(
+        (y[5] + 0.3).abs() < 0.01,
+        "the crate rests on the floor: {}",
+        y[5]
+    );
     let particles = world.particles().expect("corks");
     for h in particles.handles() {
         let cork = particles.position(h).expect("alive").y.to_f64();

@@ -106,7 +106,9 @@ pub fn pond_bodies<R: Real>() -> RigidDesc<R> {
     let slab = Shape::Box {
         half_extents: Vec3::new(ratio(3, 10), ratio(3, 20), ratio(1, 5)),
     };
-    let ball = Shape::Sphere { radius: ratio(1, 4) };
+    let ball = Shape::Sphere {
+        radius: ratio(1, 4),
+    };
     let crate_ = Shape::Box {
         half_extents: Vec3::splat(ratio(1, 5)),
     };
@@ -125,7 +127,12 @@ pub fn pond_bodies<R: Real>() -> RigidDesc<R> {
 
 /// Four drops, 10 to 15 cm high and 60 cm across, one a second from tick 30.
 pub fn pond_script<R: Real>() -> Vec<TickInput<R>> {
-    let drops = [(30, 0, 0, 15), (90, -20, 15, 12), (150, 20, -5, 10), (210, -5, -25, 12)];
+    let drops = [
+        (30, 0, 0, 15),
+        (90, -20, 15, 12),
+        (150, 20, -5, 10),
+        (210, -5, -25, 12),
+    ];
     drops
         .iter()
         .map(|&(tick, x, z, height)| TickInput {
