@@ -23,7 +23,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 28] = [
+pub const BUILTIN_SCENES: [(&str, &str); 29] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
