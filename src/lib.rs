@@ -107,6 +107,7 @@ pub mod rigid;
 pub mod scene;
 pub mod soft;
 pub mod types;
+pub mod water;
 pub mod world;
 
 // The engine's unit tests build the built-in scenes from the `fixstep-scenes` crate's own

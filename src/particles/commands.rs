@@ -36,7 +36,8 @@ impl<R: Real> ParticleSystem<R> {
             | Command::SetMotor { .. }
             | Command::SpawnBody { .. }
             | Command::SpawnJoint { .. }
-            | Command::MoveCharacter { .. } => false,
+            | Command::MoveCharacter { .. }
+            | Command::DisturbWater { .. } => false,
         }
     }
 

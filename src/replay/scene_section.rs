@@ -38,7 +38,8 @@
 //! in ascending order, its ties and contacts, never both absent, never naming a body that
 //! does not exist. A fluid that meets rigid bodies adds [`Addition::FluidBodies`] with
 //! their filter, never without a fluid. Kinematic characters add
-//! [`Addition::Characters`], never empty.
+//! [`Addition::Characters`], never empty. A water surface adds [`Addition::Water`] with
+//! its whole description.
 
 use serde::{Deserialize, Serialize};
 
@@ -59,6 +60,7 @@ use crate::soft::{
     AttachmentDesc, BodyAttachmentDesc, BodyContactsDesc, ColliderDesc, SoftBodyDesc, SoftDesc,
     SoftModel, SoftShape, XpbdSettings,
 };
+use crate::water::WaterDesc;
 use crate::world::TickInput;
 
 /// The scene fields format 1 wrote, borrowed for writing.
@@ -159,6 +161,8 @@ enum Addition<R: Real> {
     FluidBodies(CollisionFilter),
     /// The kinematic characters, when there are any.
     Characters(Vec<CharacterDesc<R>>),
+    /// The water surface, when the scene has one.
+    Water(WaterDesc<R>),
 }
 
 /// [`SoftDesc`]'s fields as snapshot format 9 wrote them, with its bodies as
@@ -408,6 +412,7 @@ impl<R: Real> Addition<R> {
             Self::SoftCoupling(_) => 10,
             Self::FluidBodies(_) => 11,
             Self::Characters(_) => 12,
+            Self::Water(_) => 13,
         }
     }
 }
@@ -600,6 +605,9 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     if !scene.characters.is_empty() {
         additions.push(Addition::Characters(scene.characters.clone()));
     }
+    if let Some(water) = &scene.water_surface {
+        additions.push(Addition::Water(water.clone()));
+    }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
     }
@@ -625,6 +633,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
         soft: None,
         joints: None,
         characters: Vec::new(),
+        water_surface: None,
         script: base.script,
     };
     if used == bytes.len() {
@@ -789,6 +798,7 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                 }
                 scene.characters = characters;
             }
+            Addition::Water(water) => scene.water_surface = Some(water),
         }
     }
     Ok(scene)

@@ -104,7 +104,7 @@ impl<R: Real> RigidSystem<R> {
 
     /// Adds force F (N) at world point p (m), or at the centre of mass when `point` is
     /// `None`, for the rest of the tick: F to the force and (p − x) × F to the torque.
-    fn apply_force(&mut self, i: usize, force: Vec3<R>, point: Option<Vec3<R>>) {
+    pub(crate) fn apply_force(&mut self, i: usize, force: Vec3<R>, point: Option<Vec3<R>>) {
         if self.bodies.kind[i] != BodyKind::Dynamic {
             return;
         }

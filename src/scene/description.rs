@@ -12,6 +12,7 @@ use crate::particles::{ParticleSystem, ParticlesDesc};
 use crate::rigid::{JointsDesc, RigidDesc, RigidSystem};
 use crate::soft::{SoftDesc, SoftSystem};
 use crate::types::{SceneError, check_rates};
+use crate::water::{WaterDesc, WaterSystem};
 use crate::world::soft_coupling::SceneBodies;
 use crate::world::{Settings, TickInput, World};
 
@@ -64,6 +65,10 @@ pub struct Scene<R: Real = Fx> {
     /// (index, 0). Left out of a written scene when empty.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub characters: Vec<CharacterDesc<R>>,
+    /// A height-field water surface, and what floats on it. Left out of a written scene
+    /// when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub water_surface: Option<WaterDesc<R>>,
     /// Scripted inputs, fed to the world at their ticks by [`Simulation`](super::Simulation)
     /// (and so by `fixstep run`).
     #[serde(default)]
@@ -103,6 +108,7 @@ impl<R: Real> Scene<R> {
             soft: None,
             joints: None,
             characters: Vec::new(),
+            water_surface: None,
             script: Vec::new(),
         }
     }
@@ -170,6 +176,13 @@ impl<R: Real> Scene<R> {
         }
         if !self.characters.is_empty() {
             world.set_characters(CharacterSystem::from_desc(&self.characters)?);
+        }
+        if let Some(desc) = &self.water_surface {
+            let dt = R::from_ratio(1, i64::from(self.tick_rate) * i64::from(self.substeps));
+            world.set_water(
+                WaterSystem::from_desc(desc, dt, self.gravity)
+                    .map_err(|e| e.within("water_surface"))?,
+            );
         }
         Ok(world)
     }

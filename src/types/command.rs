@@ -147,6 +147,20 @@ pub enum Command<R: Real = Fx> {
         /// Jump now (with the character's `jump_speed`), if grounded.
         jump: bool,
     },
+    /// Drops a disturbance on the water surface: a smooth bump of `height` (m, negative
+    /// for a dip) and `radius` (m) centred at (x, z)
+    /// ([`WaterSystem::disturb`](crate::water::WaterSystem::disturb)). Ignored (counted)
+    /// without a water surface.
+    DisturbWater {
+        /// Centre along x, m.
+        x: R,
+        /// Centre along z, m.
+        z: R,
+        /// Height of the bump at its centre, m.
+        height: R,
+        /// Radius of the bump, m.
+        radius: R,
+    },
 }
 
 /// The commands of one player for one tick.

@@ -19,6 +19,8 @@ pub enum Part {
     Fluid,
     /// The kinematic characters.
     Characters,
+    /// The water surface.
+    Water,
 }
 
 impl Part {
@@ -31,6 +33,7 @@ impl Part {
             Part::Soft => 3,
             Part::Fluid => 4,
             Part::Characters => 5,
+            Part::Water => 6,
         }
     }
 
@@ -43,6 +46,7 @@ impl Part {
             Part::Soft => "soft",
             Part::Fluid => "fluid",
             Part::Characters => "characters",
+            Part::Water => "water",
         }
     }
 }

@@ -15,19 +15,23 @@ pub enum Stage {
     Fluid,
     /// Kinematic characters: move-and-slide against the bodies (once per tick).
     Characters,
+    /// Water surface: the wave steps (once per substep); its float forces are applied
+    /// earlier, right after the inputs.
+    Water,
     /// Advance the tick counter and clear per-tick accumulators.
     EndTick,
 }
 
 impl Stage {
     /// Every stage, in execution order.
-    pub const ALL: [Stage; 7] = [
+    pub const ALL: [Stage; 8] = [
         Stage::ApplyInputs,
         Stage::Particles,
         Stage::Rigid,
         Stage::Soft,
         Stage::Fluid,
         Stage::Characters,
+        Stage::Water,
         Stage::EndTick,
     ];
 
@@ -40,6 +44,7 @@ impl Stage {
             Stage::Soft => "soft",
             Stage::Fluid => "fluid",
             Stage::Characters => "characters",
+            Stage::Water => "water",
             Stage::EndTick => "end_tick",
         }
     }

@@ -15,6 +15,7 @@ pub(crate) mod soft_coupling;
 pub mod stage;
 mod stage_watch;
 pub mod timestep;
+mod water_coupling;
 
 pub use checksum::Checksum;
 pub use difference::{Difference, first_difference};

@@ -11,6 +11,7 @@ use super::particle_coupling::step_colliding_particles;
 use super::soft_coupling::step_rigid_and_soft;
 use super::stage::StageTimings;
 use super::stage_watch::StageWatch;
+use super::water_coupling::apply_float_forces;
 use crate::character::CharacterSystem;
 use crate::fluid::FluidSystem;
 use crate::math::rng::Pcg32;
@@ -26,6 +27,7 @@ use crate::types::{
     Command, Handle, Metrics, Part, PlayerInput, SceneError, Stage, StepContext, Subsystem, Target,
     TickInput, check_rates,
 };
+use crate::water::WaterSystem;
 
 /// The version of the simulated state. It names the physics as much as the layout: bump it
 /// whenever a change alters any committed checksum, re-record `replays/`
@@ -91,6 +93,8 @@ pub struct WorldState<R: Real = Fx> {
     pub fluid: Option<FluidSystem<R>>,
     /// Kinematic characters, when the scene has any.
     pub characters: Option<CharacterSystem<R>>,
+    /// The water surface, when the scene has one.
+    pub water: Option<WaterSystem<R>>,
 }
 
 impl<R: Real> WorldState<R> {
@@ -121,13 +125,14 @@ impl<R: Real> WorldState<R> {
     /// The subsystems, in [`Stage`] order, `None` where the scene has none. With
     /// [`WorldState::split_mut`] and [`WorldState::keep_unsimulated`], the place that lists
     /// the subsystem fields: a new subsystem is added there.
-    pub fn subsystems(&self) -> [Option<&dyn Subsystem<R>>; 5] {
+    pub fn subsystems(&self) -> [Option<&dyn Subsystem<R>>; 6] {
         [
             self.particles.as_ref().map(|s| s as &dyn Subsystem<R>),
             self.rigid.as_ref().map(|s| s as &dyn Subsystem<R>),
             self.soft.as_ref().map(|s| s as &dyn Subsystem<R>),
             self.fluid.as_ref().map(|s| s as &dyn Subsystem<R>),
             self.characters.as_ref().map(|s| s as &dyn Subsystem<R>),
+            self.water.as_ref().map(|s| s as &dyn Subsystem<R>),
         ]
     }
 
@@ -140,6 +145,7 @@ impl<R: Real> WorldState<R> {
             self.soft.as_mut().map(|s| s as &mut dyn Subsystem<R>),
             self.fluid.as_mut().map(|s| s as &mut dyn Subsystem<R>),
             self.characters.as_mut().map(|s| s as &mut dyn Subsystem<R>),
+            self.water.as_mut().map(|s| s as &mut dyn Subsystem<R>),
         ];
         (&self.settings, &mut self.rng, subsystems)
     }
@@ -153,6 +159,7 @@ impl<R: Real> WorldState<R> {
         keep_unsimulated(&mut self.soft, current.soft.take());
         keep_unsimulated(&mut self.fluid, current.fluid.take());
         keep_unsimulated(&mut self.characters, current.characters.take());
+        keep_unsimulated(&mut self.water, current.water.take());
     }
 }
 
@@ -244,7 +251,7 @@ fn keep_unsimulated<R: Real, S: Subsystem<R>>(restored: &mut Option<S>, current:
 }
 
 /// The mutable subsystems of a state in [`Stage`] order, `None` where absent.
-type SubsystemsMut<'a, R> = [Option<&'a mut dyn Subsystem<R>>; 5];
+type SubsystemsMut<'a, R> = [Option<&'a mut dyn Subsystem<R>>; 6];
 
 /// Per-part lists of (object handle, 32-bit state digest), in [`Part`] order.
 pub type ObjectDigests = Vec<(Part, Vec<(Handle, u32)>)>;
@@ -289,7 +296,11 @@ pub struct TickReport {
 ///    each rigid substep before the fluid's ([`fluid_coupling`](super::fluid_coupling)).
 /// 6. [`Stage::Characters`]: once per tick, each kinematic character moves against the
 ///    bodies where they now are ([`character_coupling`](super::character_coupling)).
-/// 7. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
+/// 7. [`Stage::Water`]: per substep, the water surface's wave steps. Its float forces
+///    (buoyancy and drag on the particles and bodies in it) are applied to them right after
+///    the inputs, held for the tick as a command's force is
+///    ([`water_coupling`](super::water_coupling)).
+/// 8. [`Stage::EndTick`]: clear per-tick force accumulators and advance the tick counter.
 ///
 /// A stage whose subsystem is absent from the scene is skipped without a loop or an
 /// allocation.
@@ -323,6 +334,7 @@ impl<R: Real> World<R> {
             soft: None,
             fluid: None,
             characters: None,
+            water: None,
         })
     }
 
@@ -412,6 +424,16 @@ impl<R: Real> World<R> {
     /// The fluid, if the scene has one.
     pub fn fluid(&self) -> Option<&FluidSystem<R>> {
         self.state.fluid.as_ref()
+    }
+
+    /// Adds a water surface (replacing any previous one).
+    pub fn set_water(&mut self, water: WaterSystem<R>) {
+        self.state.water = Some(water);
+    }
+
+    /// The water surface, if the scene has one.
+    pub fn water(&self) -> Option<&WaterSystem<R>> {
+        self.state.water.as_ref()
     }
 
     /// The rigid bodies, if the scene has any.
@@ -519,6 +541,16 @@ impl<R: Real> World<R> {
             let ignored = watch.run(Stage::ApplyInputs, || self.apply_inputs(input));
             let dt = self.substep_dt;
             let state = &mut self.state;
+            if let Some(water) = &state.water {
+                watch.run(Stage::Water, || {
+                    apply_float_forces(
+                        water,
+                        state.particles.as_mut(),
+                        state.rigid.as_mut(),
+                        &state.settings,
+                    );
+                });
+            }
             if !state.step_coupled_particles(&mut watch, dt) {
                 state.step_alone(Stage::Particles, &mut watch, dt);
             }
@@ -541,6 +573,7 @@ impl<R: Real> World<R> {
                     step_characters(characters, state.rigid.as_mut(), tick_dt, gravity);
                 });
             }
+            state.step_alone(Stage::Water, &mut watch, dt);
             watch.run(Stage::EndTick, || self.end_tick());
             ignored
         });
@@ -610,6 +643,18 @@ impl<R: Real> World<R> {
                 if let Some(rigid) = &mut self.state.rigid {
                     rigid.wake_all();
                 }
+                true
+            }
+            Command::DisturbWater {
+                x,
+                z,
+                height,
+                radius,
+            } => {
+                let Some(water) = &mut self.state.water else {
+                    return false;
+                };
+                water.disturb(x, z, height, radius);
                 true
             }
             Command::Payload(value) => {

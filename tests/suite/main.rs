@@ -57,5 +57,6 @@ mod scene_simulation;
 mod soft_bodies;
 mod soft_coupling;
 mod soft_snapshot;
+mod water;
 mod world_core;
 mod world_health;

@@ -73,6 +73,7 @@ sync_tests!(
     // 2.5 cm water and seven bodies at the fluid's substep rate, ~15 ms a step in release:
     // half a second (the crate sinking, the paddle's first stroke), re-simulated 8 times.
     harbour: 30,
+    pond,
     // 4096 colliding balls: 300 frames × 8 simulations are 2400 steps of ~13 ms in release
     // (about a minute), several times that in the test profile. The release test run checks
     // it; the debug run skips it to keep the whole test command within its time budget.

@@ -105,6 +105,7 @@ fn object_noun(part: Part) -> &'static str {
         Part::Soft => "soft-body vertex",
         Part::Fluid => "fluid particle",
         Part::Characters => "character",
+        Part::Water => "water cell",
         Part::Core => "object",
     }
 }

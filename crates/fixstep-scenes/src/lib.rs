@@ -13,6 +13,7 @@ pub mod harbour;
 pub mod joints;
 pub mod parkour;
 pub mod particles;
+pub mod pond;
 pub mod rigid;
 pub mod soft;
 pub mod terrain;
@@ -22,7 +23,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 28] = [
+pub const BUILTIN_SCENES: [(&str, &str); 29] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -67,6 +68,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 28] = [
     (
         "harbour",
         "a turning paddle makes waves in a water tank: boxes and balls float and bob, a heavy crate sinks; the water pushes and is pushed by rigid bodies",
+    ),
+    (
+        "pond",
+        "height-field water: drops make rings that spread and bounce off the banks; corks, boxes and balls float and bob on them, a crate sinks",
     ),
     (
         "balls",
@@ -199,6 +204,13 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.rigid = Some(harbour::harbour_bodies());
             scene.fluid = Some(harbour::harbour_water());
             scene.ticks = 180;
+        }
+        "pond" => {
+            scene.water_surface = Some(pond::pond_water());
+            scene.particles = Some(pond::pond_corks());
+            scene.rigid = Some(pond::pond_bodies());
+            scene.script = pond::pond_script();
+            scene.ticks = 300;
         }
         "balls" => {
             scene.rigid = Some(rigid::balls(16));

@@ -15,6 +15,9 @@ pub const STATIC: [u8; 3] = [150, 156, 166];
 /// Rods, ropes and springs between their anchors: dark slate.
 pub const JOINT: [u8; 3] = [60, 66, 78];
 
+/// A water surface's wire mesh: lake blue.
+pub const WATER: [u8; 3] = [72, 139, 194];
+
 /// Moving bodies take these in turn by slot, so neighbours differ.
 const BODY_PALETTE: [[u8; 3]; 8] = [
     [231, 111, 81],

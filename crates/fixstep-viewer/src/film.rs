@@ -8,6 +8,7 @@ use super::draw_particles::draw_particles;
 use super::draw_rigid::{BodyColours, draw_rigid};
 use super::draw_soft::draw_soft;
 use super::draw_trails::Trails;
+use super::draw_water::draw_water;
 use fixstep::math::{Fx, Real};
 use fixstep::replay::InputFeed;
 use fixstep::world::{Health, TickInput, World};
@@ -57,6 +58,9 @@ pub fn capture<R: Real>(world: &World<R>, colours: BodyColours) -> Frame {
     }
     if let Some(fluid) = world.fluid() {
         draw_fluid(fluid, &mut primitives);
+    }
+    if let Some(water) = world.water() {
+        draw_water(water, &mut primitives);
     }
     Frame {
         tick: world.tick(),

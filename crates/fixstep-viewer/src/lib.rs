@@ -28,6 +28,7 @@ pub mod draw_particles;
 pub mod draw_rigid;
 pub mod draw_soft;
 pub mod draw_trails;
+pub mod draw_water;
 pub mod film;
 pub mod geometry;
 pub mod gif;
