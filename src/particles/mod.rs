@@ -1,4 +1,4 @@
-//! Particles: point masses with emitters, force generators and six integrators, in
+//! Particles: point masses with emitters, force generators and seven integrators, in
 //! deterministic fixed point.
 //!
 //! A [`ParticleSystem`] is built from a scene's [`ParticlesDesc`] and owned by the world.
@@ -32,7 +32,7 @@
 //!
 //! [`desc`] scene types · `build` validation and compilation · `storage` slots and recycling ·
 //! [`emitter`] emission and its random draws · `forces` force generators and a(x, v) ·
-//! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the six schemes ·
+//! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the seven schemes ·
 //! `fused_euler` their one-pass semi-implicit Euler for linear fields ·
 //! [`collisions`] bouncing off the rigid bodies · `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
 //! order.
@@ -45,6 +45,7 @@ pub mod desc;
 pub mod emitter;
 pub(crate) mod forces;
 mod fused_euler;
+mod implicit_euler;
 mod groups;
 pub mod hashing;
 pub mod integrators;

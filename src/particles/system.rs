@@ -15,7 +15,7 @@ use crate::types::Handle;
 use crate::types::SceneError;
 
 /// A deterministic particle system: point masses in structure-of-arrays storage, emitters,
-/// force generators and one of six integrators.
+/// force generators and one of seven integrators.
 ///
 /// Build it with [`ParticleSystem::from_desc`]; see the [module documentation](super) for the
 /// order in which the world must call [`step`](Self::step), [`end_tick`](Self::end_tick)

@@ -31,6 +31,7 @@ mod particles_collisions;
 mod particles_commands;
 mod particles_emitters;
 mod particles_forces;
+mod particles_implicit_euler;
 mod particles_integrators;
 mod particles_kepler;
 mod particles_scene;
