@@ -13,8 +13,8 @@ use super::forces::ForceField;
 use super::fused_euler;
 use super::implicit_euler;
 use super::storage::{Attributes, Kinematics};
-pub use crate::math::integration::Integrator;
 use crate::math::implicit_springs::ImplicitSprings;
+pub use crate::math::integration::Integrator;
 use crate::math::integration::kick_then_drift;
 use crate::math::{Fraction, Real, Vec3};
 

@@ -34,6 +34,7 @@ mod particles_forces;
 mod particles_implicit_euler;
 mod particles_integrators;
 mod particles_kepler;
+mod particles_links;
 mod particles_scene;
 mod queries;
 mod readme_limits;

@@ -54,12 +54,9 @@ fn energy<R: Real>(system: &ParticleSystem<R>, stiffness: f64) -> f64 {
 fn energy_decay<R: Real>() {
     for theta in [0.1, 0.5, 1.0, 10.0] {
         let h = R::from_f64(theta);
-        let mut system = ParticleSystem::from_desc(&oscillator(
-            Integrator::ImplicitEuler,
-            R::ONE,
-            R::ONE,
-        ))
-        .unwrap();
+        let mut system =
+            ParticleSystem::from_desc(&oscillator(Integrator::ImplicitEuler, R::ONE, R::ONE))
+                .unwrap();
         let mut rng = Pcg32::new(1, 1);
         let expected = 1.0 / (1.0 + theta * theta);
         // Steps until the energy is down to about 1%, at least one.
@@ -129,7 +126,10 @@ fn stable_at_k_dt2_over_m_of_100_where_semi_implicit_euler_diverges() {
         let tick = implicit.tick();
         implicit.step(&idle(tick));
         let e = energy(implicit.particles().unwrap(), 360_000.0);
-        assert!(e <= previous * (1.0 + 1e-6) + 1e-6, "tick {tick}: energy {e} > {previous}");
+        assert!(
+            e <= previous * (1.0 + 1e-6) + 1e-6,
+            "tick {tick}: energy {e} > {previous}"
+        );
         previous = e;
     }
     assert_eq!(implicit.divergence(), None);
@@ -149,7 +149,11 @@ fn networks_solved_by_conjugate_gradients_match_f64() {
             .map(|i| ParticleDesc {
                 position: Vec3::new(R::ZERO, -R::from_ratio(i64::from(i), 4), R::ZERO),
                 velocity: Vec3::ZERO,
-                mass: if i == 0 { R::ZERO } else { R::from_ratio(1, 10) },
+                mass: if i == 0 {
+                    R::ZERO
+                } else {
+                    R::from_ratio(1, 10)
+                },
                 group: 0,
                 lifetime: R::ZERO,
             })
