@@ -193,10 +193,11 @@ impl<R: Real> ImplicitSprings<R> {
             buffer.resize(n, Vec3::ZERO);
         }
         let heaviest = masses.iter().fold(R::ZERO, |m, &x| m.max(x));
-        let scale = heaviest.recip();
-        if scale == R::ZERO {
+        if heaviest == R::ZERO {
+            // Nothing moves (no particle, or all pinned).
             return (&self.delta_v, SolveReport::default());
         }
+        let scale = heaviest.recip();
         for row in &mut self.rows {
             row.along *= scale;
             row.across *= scale;

@@ -255,7 +255,8 @@ impl<R: Real> ParticleContacts<R> {
         Ok(())
     }
 
-    /// Keeps the velocities at the start of a step, v₀ (m/s).
+    /// Keeps the velocities at the start of a step, v₀ (m/s), from which
+    /// [`resolve`](Self::resolve) takes what the step's forces added.
     pub fn remember(&mut self, velocities: &[Vec3<R>]) {
         self.scratch.start_velocities.clear();
         self.scratch.start_velocities.extend_from_slice(velocities);
@@ -274,7 +275,13 @@ impl<R: Real> ParticleContacts<R> {
         if contacts.is_empty() {
             return false;
         }
-        let start = &self.scratch.start_velocities;
+        // The velocity each particle's forces gave it this step, Δv = v₁ − v₀, taken before
+        // any contact changes v₁.
+        let kicks = &mut self.scratch.start_velocities;
+        for (kick, &v1) in kicks.iter_mut().zip(&kinematics.velocities) {
+            *kick = v1 - *kick;
+        }
+        let kicks = &*kicks;
         let w = &attributes.inv_masses;
         let x = &mut kinematics.positions;
         let v = &mut kinematics.velocities;
@@ -286,11 +293,11 @@ impl<R: Real> ParticleContacts<R> {
                 v[i as usize]
             }
         };
-        let kick = |v: &[Vec3<R>], i: u32| {
-            if i == PLANE || i as usize >= start.len() {
+        let kick = |i: u32| {
+            if i == PLANE {
                 Vec3::ZERO
             } else {
-                v[i as usize] - start[i as usize]
+                kicks.get(i as usize).copied().unwrap_or(Vec3::ZERO)
             }
         };
         let weight = |i: u32| if i == PLANE { R::ZERO } else { w[i as usize] };
@@ -318,7 +325,7 @@ impl<R: Real> ParticleContacts<R> {
             let (share_a, share_b) = (wa / total, wb / total);
             if lowest < R::ZERO {
                 let closing = -lowest;
-                let into = -(kick(v, c.a) - kick(v, c.b)).dot(c.normal) * inv_dt;
+                let into = -(kick(c.a) - kick(c.b)).dot(c.normal) * inv_dt;
                 let impact = if into > R::ZERO && c.penetration > R::ZERO {
                     (closing * closing - R::TWO * into * c.penetration)
                         .max(R::ZERO)

@@ -65,7 +65,7 @@ pub fn bridge_particles<R: Real>() -> ParticlesDesc<R> {
         links.push(LinkDesc::Rod {
             a: i,
             b: i + RAIL_PARTICLES,
-            length: half_width + half_width,
+            length: R::from_ratio(4, 5),
         });
     }
     ParticlesDesc {
