@@ -33,10 +33,10 @@
 //!    order the group (`u32`), restitution, friction, push flag, the filter's layers and
 //!    mask (`u32`);
 //! 10. only when the system has contacts (so that a system without them hashes as before
-//!    they existed): the contact radius, the particle–particle restitution, the planes
-//!    (count, then each one's unit normal, offset, restitution) and the links (count, then
-//!    each one's kind (`u32` 0 = rod, 1 = cable), its two handles (index, generation as
-//!    `u32`), length and restitution), then the resolutions per step (`u32`).
+//!     they existed): the contact radius, the particle–particle restitution, the planes
+//!     (count, then each one's unit normal, offset, restitution) and the links (count, then
+//!     each one's kind (`u32` 0 = rod, 1 = cable), its two handles (index, generation as
+//!     `u32`), length and restitution), then the resolutions per step (`u32`).
 //!
 //! Not hashed, because they do not influence the future: the lowest-free-slot cache and the
 //! live count (functions of the alive flags), the dampings' cached d^Δt (a function of d and
