@@ -19,7 +19,7 @@
 //! [`Stage`](types::Stage)s in order:
 //!
 //! 1. `ApplyInputs`: the commands, players in ascending index;
-//! 2. `Particles` ([`particles`]): emitters, forces and six integrators;
+//! 2. `Particles` ([`particles`]): emitters, forces and seven integrators;
 //! 3. `Rigid` ([`rigid`]): broadphase, narrowphase, the soft-step contact and joint solver,
 //!    islands and sleep;
 //! 4. `Soft` ([`soft`]): XPBD cloth, rope and lattices, and spring-mass networks;

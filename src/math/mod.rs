@@ -6,6 +6,7 @@ pub mod exp;
 pub mod fixed_scalar;
 pub mod float_scalar;
 pub mod guarded;
+pub mod implicit_springs;
 pub mod integration;
 pub mod mat3;
 pub mod over_real;

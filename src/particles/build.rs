@@ -5,6 +5,7 @@
 //! scene prefixes `particles.`.
 
 use super::collisions::check_collision;
+use super::contacts::ParticleContacts;
 use super::damping::Damping;
 use super::desc::{
     EmitterDesc, ForceDesc, Interval, MAX_CAPACITY, MAX_EMISSION_RATE, ParticlesDesc, Spread,
@@ -150,6 +151,14 @@ impl<R: Real> ParticleSystem<R> {
         }
         let mut collisions = desc.collisions.clone();
         collisions.sort_by_key(|c| c.group);
+        let contacts = desc
+            .contacts
+            .as_ref()
+            .map(|contacts| {
+                ParticleContacts::from_desc(contacts, desc.particles.len())
+                    .map_err(|e| e.within("contacts"))
+            })
+            .transpose()?;
 
         Ok(Self {
             integrator: desc.integrator,
@@ -158,6 +167,7 @@ impl<R: Real> ParticleSystem<R> {
             emitters,
             forces,
             collisions,
+            contacts,
             accelerations_current: false,
             last_gravity: Vec3::ZERO,
             external_forces_pending: false,

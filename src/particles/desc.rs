@@ -23,6 +23,7 @@
 
 use serde::{Deserialize, Serialize};
 
+pub use super::contact_desc::{ContactPlaneDesc, ContactsDesc, LinkDesc};
 pub use crate::math::integration::Integrator;
 pub use crate::math::spring::SpringDesc;
 use crate::math::{Fx, Real, Vec3};
@@ -65,6 +66,10 @@ pub struct ParticlesDesc<R: Real = Fx> {
     /// group. Default none: particles pass through everything.
     #[serde(default)]
     pub collisions: Vec<CollisionDesc<R>>,
+    /// Contacts between the particles and with planes, and rods and cables between them
+    /// (the mass-aggregate engine). Default none.
+    #[serde(default)]
+    pub contacts: Option<ContactsDesc<R>>,
 }
 
 impl<R: Real> Default for ParticlesDesc<R> {
@@ -78,6 +83,7 @@ impl<R: Real> Default for ParticlesDesc<R> {
             emitters: Vec::new(),
             forces: Vec::new(),
             collisions: Vec::new(),
+            contacts: None,
         }
     }
 }

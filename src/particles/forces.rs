@@ -193,6 +193,11 @@ impl<'a, R: Real> ForceField<'a, R> {
         }
     }
 
+    /// The compiled force list the field evaluates.
+    pub fn force_set(&self) -> &'a ForceSet<R> {
+        self.forces
+    }
+
     /// The field as a [`LinearField`], when it is one: no field depends on the particle and
     /// the generators are at most [`MAX_LINEAR_DRAGS`] linear drags with 0 ≤ k < 0.5 kg/s.
     pub fn linear(&self) -> Option<LinearField<R>> {

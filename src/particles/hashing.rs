@@ -31,13 +31,19 @@
 //! 9. only when some group collides with the rigid bodies (so that a system without
 //!    collisions hashes as before they existed): their count, then per group in ascending
 //!    order the group (`u32`), restitution, friction, push flag, the filter's layers and
-//!    mask (`u32`).
+//!    mask (`u32`);
+//! 10. only when the system has contacts (so that a system without them hashes as before
+//!     they existed): the contact radius, the particle–particle restitution, the planes
+//!     (count, then each one's unit normal, offset, restitution) and the links (count, then
+//!     each one's kind (`u32` 0 = rod, 1 = cable), its two handles (index, generation as
+//!     `u32`), length and restitution), then the resolutions per step (`u32`).
 //!
 //! Not hashed, because they do not influence the future: the lowest-free-slot cache and the
 //! live count (functions of the alive flags), the dampings' cached d^Δt (a function of d and
 //! Δt), the integrators' scratch arrays, the user-force registry (code, not state), and the
 //! scene index of user forces (error messages only).
 
+use super::contacts::LinkKind;
 use super::desc::{Interval, SpringDesc};
 use super::emitter::EmissionShape;
 use super::forces::{AccelerationField, ForceGenerator};
@@ -249,6 +255,31 @@ impl<R: Real> ParticleSystem<R> {
                 h.write_u32(c.filter.layers);
                 h.write_u32(c.filter.mask);
             }
+        }
+
+        if let Some(contacts) = &self.contacts {
+            h.write_real(contacts.radius);
+            h.write_real(contacts.restitution);
+            h.write_len(contacts.planes.len());
+            for plane in &contacts.planes {
+                h.write_vec3(plane.normal);
+                h.write_real(plane.offset);
+                h.write_real(plane.restitution);
+            }
+            h.write_len(contacts.links.len());
+            for link in &contacts.links {
+                h.write_u32(match link.kind {
+                    LinkKind::Rod => 0,
+                    LinkKind::Cable => 1,
+                });
+                for end in [link.a, link.b] {
+                    h.write_u32(end.index);
+                    h.write_u32(end.generation);
+                }
+                h.write_real(link.length);
+                h.write_real(link.restitution);
+            }
+            h.write_u32(contacts.iterations);
         }
     }
 

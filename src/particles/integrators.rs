@@ -1,4 +1,4 @@
-//! The six integration schemes, one step of length h each.
+//! The seven integration schemes, one step of length h each.
 //!
 //! Notation: x position (m), v velocity (m/s), a(x, v) acceleration (m/s², see
 //! `ForceField::accelerations` in `forces.rs`), h the step (s), n the step index. Every loop
@@ -11,7 +11,9 @@ use core::fmt;
 
 use super::forces::ForceField;
 use super::fused_euler;
+use super::implicit_euler;
 use super::storage::{Attributes, Kinematics};
+use crate::math::implicit_springs::ImplicitSprings;
 pub use crate::math::integration::Integrator;
 use crate::math::integration::kick_then_drift;
 use crate::math::{Fraction, Real, Vec3};
@@ -26,6 +28,7 @@ pub(crate) struct Scratch<R: Real> {
     stage_velocities: Vec<Vec3<R>>,
     position_sum: Vec<Vec3<R>>,
     velocity_sum: Vec<Vec3<R>>,
+    implicit: ImplicitSprings<R>,
 }
 
 impl<R: Real> Scratch<R> {
@@ -112,6 +115,14 @@ pub(crate) fn advance<R: Real>(integrator: Integrator, dt: R, context: StepConte
         Integrator::VelocityVerlet => velocity_verlet(&lengths, context),
         Integrator::Leapfrog => leapfrog(&lengths, context),
         Integrator::Rk4 => rk4(&lengths, context),
+        Integrator::ImplicitEuler => implicit_euler::step(
+            dt,
+            context.kinematics,
+            context.attributes,
+            context.field,
+            &mut context.scratch.acceleration,
+            &mut context.scratch.implicit,
+        ),
     }
 }
 
@@ -236,6 +247,7 @@ fn rk4<R: Real>(l: &StepLengths<R>, c: StepContext<'_, '_, R>) {
         stage_velocities,
         position_sum,
         velocity_sum,
+        ..
     } = c.scratch;
     // Pinned particles keep their place in every stage (springs read them).
     stage_positions.copy_from_slice(&k.positions);

@@ -1,4 +1,4 @@
-//! Particles: point masses with emitters, force generators and six integrators, in
+//! Particles: point masses with emitters, force generators and seven integrators, in
 //! deterministic fixed point.
 //!
 //! A [`ParticleSystem`] is built from a scene's [`ParticlesDesc`] and owned by the world.
@@ -32,14 +32,18 @@
 //!
 //! [`desc`] scene types · `build` validation and compilation · `storage` slots and recycling ·
 //! [`emitter`] emission and its random draws · `forces` force generators and a(x, v) ·
-//! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the six schemes ·
+//! `damping` v ← v·d^Δt · [`user_force`] user generators · [`integrators`] the seven schemes ·
 //! `fused_euler` their one-pass semi-implicit Euler for linear fields ·
-//! [`collisions`] bouncing off the rigid bodies · `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
+//! [`collisions`] bouncing off the rigid bodies · [`contact_desc`] and [`contacts`] particle
+//! contacts, rods and cables (the mass-aggregate engine) · `implicit_euler` the implicit
+//! step · `commands` command methods · `metrics` energies and momenta · `validate` invariants of a decoded state · [`hashing`] canonical hash
 //! order.
 
 mod build;
 pub(crate) mod collisions;
 mod commands;
+pub mod contact_desc;
+pub mod contacts;
 mod damping;
 pub mod desc;
 pub mod emitter;
@@ -47,6 +51,7 @@ pub(crate) mod forces;
 mod fused_euler;
 mod groups;
 pub mod hashing;
+mod implicit_euler;
 pub mod integrators;
 mod metrics;
 mod storage;
@@ -57,8 +62,9 @@ pub mod user_force;
 mod validate;
 
 pub use desc::{
-    CollisionDesc, DEFAULT_CAPACITY, EmitterDesc, ForceDesc, Interval, MAX_CAPACITY,
-    MAX_EMISSION_RATE, ParticleDesc, ParticleTemplate, ParticlesDesc, Spread, SpringDesc,
+    CollisionDesc, ContactPlaneDesc, ContactsDesc, DEFAULT_CAPACITY, EmitterDesc, ForceDesc,
+    Interval, LinkDesc, MAX_CAPACITY, MAX_EMISSION_RATE, ParticleDesc, ParticleTemplate,
+    ParticlesDesc, Spread, SpringDesc,
 };
 pub use integrators::Integrator;
 pub use system::{ParticleSystem, StepReport};

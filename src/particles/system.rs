@@ -2,6 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::contacts::ParticleContacts;
 use super::desc::CollisionDesc;
 use super::emitter::Emitter;
 use super::forces::{ForceField, ForceGenerator, ForceSet};
@@ -15,7 +16,7 @@ use crate::types::Handle;
 use crate::types::SceneError;
 
 /// A deterministic particle system: point masses in structure-of-arrays storage, emitters,
-/// force generators and one of six integrators.
+/// force generators and one of seven integrators.
 ///
 /// Build it with [`ParticleSystem::from_desc`]; see the [module documentation](super) for the
 /// order in which the world must call [`step`](Self::step), [`end_tick`](Self::end_tick)
@@ -35,6 +36,8 @@ pub struct ParticleSystem<R: Real = Fx> {
     pub(super) forces: ForceSet<R>,
     /// The groups that collide with the rigid bodies, ascending by group.
     pub(super) collisions: Vec<CollisionDesc<R>>,
+    /// Particle contacts, planes, rods and cables, when the scene has them.
+    pub(super) contacts: Option<ParticleContacts<R>>,
     /// Whether `storage.kinematics.accelerations` holds a(x, v) of the current state, so
     /// that velocity Verlet can reuse it.
     pub(super) accelerations_current: bool,
@@ -89,6 +92,9 @@ impl<R: Real> ParticleSystem<R> {
             self.accelerations_current = false;
         }
 
+        if let Some(contacts) = &mut self.contacts {
+            contacts.remember(&self.storage.kinematics.velocities);
+        }
         let field = ForceField::new(
             &self.forces,
             &self.user_forces,
@@ -108,6 +114,11 @@ impl<R: Real> ParticleSystem<R> {
         );
         for damping in &mut self.forces.dampings {
             damping.apply(dt, &mut self.storage.kinematics, &self.storage.attributes);
+        }
+        if let Some(contacts) = &mut self.contacts
+            && contacts.resolve(dt, &mut self.storage.kinematics, &self.storage.attributes)
+        {
+            self.accelerations_current = false;
         }
         report
     }
@@ -269,6 +280,14 @@ impl<R: Real> ParticleSystem<R> {
                 }
                 _ => None,
             })
+    }
+
+    /// The two ends of every rod and cable whose particles are alive, in scene order, m,
+    /// with `true` for a rod. For drawing.
+    pub fn link_ends(&self) -> impl Iterator<Item = (Vec3<R>, Vec3<R>, bool)> + '_ {
+        self.contacts.iter().flat_map(|contacts| {
+            contacts.link_ends(&self.storage.kinematics.positions, &self.storage.attributes)
+        })
     }
 
     /// Number of emitters.

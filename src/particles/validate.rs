@@ -31,6 +31,9 @@ impl<R: Real> ParticleSystem<R> {
             }
             check_collision(collision).map_err(|e| e.within(&at))?;
         }
+        if let Some(contacts) = &self.contacts {
+            contacts.validate().map_err(|e| e.within("contacts"))?;
+        }
         let max_rate = R::from_int(MAX_EMISSION_RATE);
         for (i, emitter) in self.emitters.iter().enumerate() {
             let at = format!("emitters[{i}]");

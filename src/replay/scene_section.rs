@@ -39,7 +39,8 @@
 //! does not exist. A fluid that meets rigid bodies adds [`Addition::FluidBodies`] with
 //! their filter, never without a fluid. Kinematic characters add
 //! [`Addition::Characters`], never empty. A water surface adds [`Addition::Water`] with
-//! its whole description.
+//! its whole description. Particles with contacts,
+//! planes, rods or cables add [`Addition::ParticleContacts`], never without particles.
 
 use serde::{Deserialize, Serialize};
 
@@ -48,8 +49,8 @@ use crate::codec::{self, CodecError};
 use crate::fluid::{FluidBlock, FluidBodiesDesc, FluidBox, FluidDesc, FluidEmitter, FluidSolver};
 use crate::math::{Fx, Real, Vec3};
 use crate::particles::{
-    CollisionDesc, EmitterDesc, ForceDesc, Integrator, ParticleDesc, ParticleTemplate,
-    ParticlesDesc,
+    CollisionDesc, ContactsDesc, EmitterDesc, ForceDesc, Integrator, ParticleDesc,
+    ParticleTemplate, ParticlesDesc,
 };
 use crate::rigid::{
     BodyDesc, BodyKind, BodyTemplate, CollisionFilter, Grid, JointTemplate, JointsDesc, Material,
@@ -129,6 +130,7 @@ impl<R: Real> ParticlesFields<R> {
             emitters: self.emitters,
             forces: self.forces,
             collisions: Vec::new(),
+            contacts: None,
         }
     }
 }
@@ -163,6 +165,8 @@ enum Addition<R: Real> {
     Characters(Vec<CharacterDesc<R>>),
     /// The water surface, when the scene has one.
     Water(WaterDesc<R>),
+    /// The particles' contacts, planes, rods and cables, when the scene has them.
+    ParticleContacts(ContactsDesc<R>),
 }
 
 /// [`SoftDesc`]'s fields as snapshot format 9 wrote them, with its bodies as
@@ -413,6 +417,7 @@ impl<R: Real> Addition<R> {
             Self::FluidBodies(_) => 11,
             Self::Characters(_) => 12,
             Self::Water(_) => 13,
+            Self::ParticleContacts(_) => 14,
         }
     }
 }
@@ -607,6 +612,8 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     }
     if let Some(water) = &scene.water_surface {
         additions.push(Addition::Water(water.clone()));
+    if let Some(contacts) = scene.particles.as_ref().and_then(|p| p.contacts.as_ref()) {
+        additions.push(Addition::ParticleContacts(contacts.clone()));
     }
     if !additions.is_empty() {
         bytes.extend(codec::encode(&additions)?);
@@ -799,6 +806,15 @@ pub fn decode_scene(bytes: &[u8]) -> Result<Scene<Fx>, (usize, SceneSectionError
                 scene.characters = characters;
             }
             Addition::Water(water) => scene.water_surface = Some(water),
+            Addition::ParticleContacts(contacts) => {
+                let Some(particles) = &mut scene.particles else {
+                    return Err((
+                        used,
+                        SceneSectionError::NotCanonical("particle contacts without particles"),
+                    ));
+                };
+                particles.contacts = Some(contacts);
+            }
         }
     }
     Ok(scene)

@@ -253,7 +253,7 @@ impl<R: Real> SoftSystem<R> {
                     return Err(SceneError::new(
                         "model.SpringMass.integrator",
                         format!(
-                            "{integrator} keeps state between steps; a spring-mass body takes ExplicitEuler, SemiImplicitEuler or Leapfrog"
+                            "{integrator} keeps state between steps; a spring-mass body takes ExplicitEuler, SemiImplicitEuler, Leapfrog or ImplicitEuler"
                         ),
                     ));
                 }
@@ -489,6 +489,7 @@ impl<R: Real> SoftSystem<R> {
             dt,
         );
         match integrator {
+            Integrator::ImplicitEuler => None,
             Integrator::ExplicitEuler => Some(
                 "explicit Euler adds energy to every spring mode at any step; the network will diverge (use SemiImplicitEuler)".to_owned(),
             ),

@@ -15,7 +15,7 @@
 //! [`desc`] scene types · `topology` the cloth, rope and lattice builders · `build` checks
 //! and compilation · `system` storage and the step · `constraints` the XPBD rows
 //! (distance, bending, volume, attachment) · [`xpbd`] the substep loop ·
-//! [`spring_mass`] Hooke springs and the stability bound · `collide` static colliders
+//! [`spring_mass`] Hooke springs and the stability bound · `spring_mass_implicit` their implicit Euler step · `collide` static colliders
 //! with friction · `body_coupling` contacts with and ties to rigid bodies, two-way, seen
 //! through the traits of `rigid_bodies` · `commands` inputs · [`hashing`] canonical state · `metrics` reporting.
 //!
@@ -31,6 +31,7 @@ pub mod hashing;
 mod metrics;
 pub(crate) mod rigid_bodies;
 pub mod spring_mass;
+mod spring_mass_implicit;
 mod subsystem;
 mod system;
 mod topology;

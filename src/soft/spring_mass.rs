@@ -47,7 +47,10 @@ pub(crate) struct Springs<R: Real> {
 pub(crate) fn supports(integrator: Integrator) -> bool {
     matches!(
         integrator,
-        Integrator::ExplicitEuler | Integrator::SemiImplicitEuler | Integrator::Leapfrog
+        Integrator::ExplicitEuler
+            | Integrator::SemiImplicitEuler
+            | Integrator::Leapfrog
+            | Integrator::ImplicitEuler
     )
 }
 
@@ -98,6 +101,10 @@ impl<R: Real> SoftSystem<R> {
                         v[i] = v[i].add_scaled(self.scratch.acceleration[i], dt);
                     }
                 }
+            }
+            Integrator::ImplicitEuler => {
+                self.spring_accelerations(b, gravity);
+                self.implicit_spring_mass_step(b, dt);
             }
             Integrator::Leapfrog => {
                 self.drift(range.clone(), half);

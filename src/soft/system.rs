@@ -141,6 +141,10 @@ pub(crate) struct Scratch<R: Real> {
     pub displacement: Vec<Vec3<R>>,
     /// a, m/s², of the spring-mass vertices.
     pub acceleration: Vec<Vec3<R>>,
+    /// The implicit Euler system of a spring-mass body.
+    pub implicit: crate::math::implicit_springs::ImplicitSprings<R>,
+    /// Its vertices' masses, kg, 0 for pinned ones.
+    pub implicit_masses: Vec<R>,
     /// The rigid bodies in view during a coupled step.
     pub coupling: CouplingScratch<R>,
 }

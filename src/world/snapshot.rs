@@ -6,7 +6,7 @@
 //! | offset | size | content |
 //! |---|---|---|
 //! | 0 | 8 | magic: the ASCII bytes `FXSTEPSN` |
-//! | 8 | 4 | format version, `u32` = 14 ([`SNAPSHOT_FORMAT_VERSION`]) |
+//! | 8 | 4 | format version, `u32` = 15 ([`SNAPSHOT_FORMAT_VERSION`]) |
 //! | 12 | 4 | state version, `u32` ([`STATE_VERSION`] when written) |
 //! | 16 | 8 + n | scalar format name: `u64` length n, then its ASCII bytes (`"I32F32"`) |
 //! | 24 + n | 16 + m | the scene it was taken in: codec-encoded [`SceneId`] (`u64` name length m, the name's UTF-8 bytes, the `u64` scene hash) |
@@ -43,8 +43,9 @@ pub const SNAPSHOT_MAGIC: [u8; 8] = *b"FXSTEPSN";
 /// collisions, version 10 the soft bodies' ties to and contacts with rigid bodies, version
 /// 11 the layers of the rigid bodies a fluid meets, version 12 the scene the snapshot was
 /// taken in ([`SceneId`]), version 13 the kinematic characters, version 14 the water
-/// surface; older files are refused with a message naming both versions.
-pub const SNAPSHOT_FORMAT_VERSION: u32 = 14;
+/// surface, version 15 the particles' contacts, rods and cables; older files are refused
+/// with a message naming both versions.
+pub const SNAPSHOT_FORMAT_VERSION: u32 = 15;
 
 /// The largest snapshot written or read: [`MAX_INPUT_FILE_LEN`], as every input file.
 pub const MAX_SNAPSHOT_LEN: u64 = MAX_INPUT_FILE_LEN;

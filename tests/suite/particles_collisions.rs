@@ -61,6 +61,7 @@ fn drop_scene(h: f64, e: f64, mesh: bool, integrator: Integrator) -> Scene<Fx> {
             group: None,
         }],
         collisions: vec![collision],
+        contacts: None,
         ..ParticlesDesc::default()
     });
     scene.rigid = Some(RigidDesc {
@@ -160,6 +161,7 @@ fn stream_scene(push: bool) -> Scene<Fx> {
     scene.particles = Some(ParticlesDesc {
         particles,
         collisions: vec![collision],
+        contacts: None,
         ..ParticlesDesc::default()
     });
     let mut target = BodyDesc::new(
@@ -261,6 +263,7 @@ fn a_moving_kinematic_wall_bats_a_particle_away_at_one_plus_e_times_its_speed() 
             lifetime: Fx::ZERO,
         }],
         collisions: vec![collision],
+        contacts: None,
         ..ParticlesDesc::default()
     });
     let mut wall = BodyDesc::new(

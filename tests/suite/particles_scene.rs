@@ -70,6 +70,7 @@ fn valid() -> ParticlesDesc<Fx> {
             },
         ],
         collisions: Vec::new(),
+        contacts: None,
     }
 }
 

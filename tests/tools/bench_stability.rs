@@ -3,13 +3,13 @@
 //!
 //! Theory values: `harmonic_oscillator_discrete_amplification.csv` (undamped: ωh < 2 for
 //! semi-implicit Euler, Störmer–Verlet, velocity Verlet and leapfrog, ωh < 2√2 for RK4,
-//! explicit Euler never stable) and `damped_spring_stability_limits.csv` (ζ = 0.1:
+//! explicit Euler never stable; implicit Euler, A-stable, at every ωh, derived) and `damped_spring_stability_limits.csv` (ζ = 0.1:
 //! `sympEuler_analytic` 1.80997512422418, `fwdEuler_analytic` 0.2), both computed with
 //! mpmath in the project's reference folder.
 
 use crate::replay_support::{TempPath, fixstep};
 use fixstep::particles::Integrator;
-use fixstep_bench::stability::is_stable_in;
+use fixstep_bench::stability::{HIGHEST, is_stable_in};
 use fixstep_bench::{Measured, NumberFormat, StabilityConfig, StabilityRow, run_stability};
 
 /// The measured limit of the only row of `rows` for `integrator` in `format`.
@@ -51,6 +51,9 @@ fn undamped_limits_match_theory() {
                     assert_eq!(measured, Measured::NeverStable, "{what}");
                 }
                 Integrator::Rk4 => assert_limit(measured, 2.0 * core::f64::consts::SQRT_2, &what),
+                Integrator::ImplicitEuler => {
+                    assert_eq!(measured, Measured::AtLeast(HIGHEST), "{what}");
+                }
                 _ => assert_limit(measured, 2.0, &what),
             }
         }

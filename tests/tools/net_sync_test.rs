@@ -93,6 +93,7 @@ sync_tests!(
     cloth,
     curtain,
     rope,
+    bridge_particles,
     jelly,
 );
 

@@ -11,7 +11,8 @@
 //! [`format`](mod@format) the number formats · [`exact`] closed-form solutions ·
 //! [`kepler_equation`] the Kepler reference · [`elliptic`] the pendulum period ·
 //! [`pendulum_force`] the pendulum as a user force · [`problems`] the five problems ·
-//! [`sweep`] the timed accuracy sweep · [`order`] measured orders of convergence · `plot`
+//! [`sweep`] the timed accuracy sweep · [`cloth`] implicit against semi-implicit Euler on a
+//! stiff cloth · [`order`] measured orders of convergence · `plot`
 //! the work-precision SVG · [`stability`] stability limits · `report` CSV files and printed
 //! tables.
 
@@ -20,6 +21,7 @@
 // `cargo doc --document-private-items`, as the test command builds it).
 #![allow(rustdoc::private_intra_doc_links)]
 
+pub mod cloth;
 pub mod elliptic;
 pub mod exact;
 pub mod format;
@@ -32,6 +34,7 @@ mod report;
 pub mod stability;
 pub mod sweep;
 
+pub use cloth::{ClothRow, cloth_table, run_cloth};
 pub use format::NumberFormat;
 pub use order::{Distrust, MeasuredOrder, OrderRow, measured_orders};
 pub use plot::work_precision_svg;

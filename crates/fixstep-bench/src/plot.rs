@@ -15,13 +15,14 @@ use fixstep::particles::Integrator;
 const SIZE: (u32, u32) = (1500, 1000);
 
 /// One colour per integrator, in [`Integrator::ALL`] order.
-const COLOURS: [RGBColor; 6] = [
+const COLOURS: [RGBColor; Integrator::ALL.len()] = [
     RGBColor(214, 39, 40),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
     RGBColor(31, 119, 180),
     RGBColor(148, 103, 189),
     RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
 ];
 
 /// The SVG document of the work–precision diagram of `rows`. Points with an infinite or

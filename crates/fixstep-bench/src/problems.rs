@@ -15,7 +15,7 @@
 //!
 //! The pendulum needs a constraint the particle system does not have, so its 1-D equation
 //! θ'' = −(g/L) sin θ (g/L = 1/s²) is integrated by the particle system with θ as the x
-//! coordinate and [`PendulumForce`] as a registered user force: the same six integrators
+//! coordinate and [`PendulumForce`] as a registered user force: the same seven integrators
 //! and the format's own `sin`, and no integrator code outside the engine. Its period is
 //! measured between the first and third zero crossings of θ (at T/4 and 5T/4), each located
 //! within its step by cubic Hermite interpolation of (θ, θ'), which is accurate to O(h⁴)

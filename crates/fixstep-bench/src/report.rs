@@ -187,6 +187,7 @@ fn theory_text(theory: Theory) -> String {
     match theory {
         Theory::Limit(limit) => format!("{limit:.3}"),
         Theory::NeverStable => "none".to_owned(),
+        Theory::AlwaysStable => "any".to_owned(),
         Theory::Unknown => String::new(),
     }
 }

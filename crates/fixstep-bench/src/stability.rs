@@ -25,6 +25,10 @@
 //! computed with mpmath): semi-implicit Euler, Störmer–Verlet, velocity Verlet and leapfrog
 //! are stable up to ωh = 2, RK4 up to 2√2 ≈ 2.828, explicit Euler never.
 //!
+//! Implicit Euler is A-stable: its amplification 1/(1 − hλ) has modulus below 1 for every
+//! eigenvalue λ of a damped or undamped spring (Re λ ≤ 0), so it has no limit at any ζ
+//! (derived).
+//!
 //! Damped (from `damped_spring_stability_limits.csv`, forces evaluated at the start of the
 //! step, mpmath): semi-implicit Euler up to 2(√(1 + ζ²) − ζ), explicit Euler up to 2ζ
 //! (ζ ≤ 1). The file gives no limits for the other schemes with damping.
@@ -71,6 +75,8 @@ pub enum Theory {
     Limit(f64),
     /// Unstable at every ωh > 0.
     NeverStable,
+    /// Stable at every ωh > 0 (A-stable: implicit Euler).
+    AlwaysStable,
     /// No reference value.
     Unknown,
 }
@@ -163,6 +169,9 @@ pub fn run_stability_with_progress(
 /// The theoretical limit of `integrator` on the spring with damping ratio ζ (see the
 /// module documentation for the sources).
 pub fn theory(integrator: Integrator, damping_ratio: f64) -> Theory {
+    if integrator == Integrator::ImplicitEuler {
+        return Theory::AlwaysStable;
+    }
     if damping_ratio == 0.0 {
         return match integrator {
             Integrator::ExplicitEuler => Theory::NeverStable,

@@ -78,7 +78,7 @@ pub enum Command {
 /// The benchmarks of `fixstep bench`.
 #[derive(Debug, Subcommand)]
 pub enum BenchCommand {
-    /// Error and time of five problems × six integrators × four formats × a step sweep:
+    /// Error and time of five problems × seven integrators × four formats × a step sweep:
     /// writes DIR/accuracy.csv and DIR/work-precision.svg, prints the measured orders.
     Accuracy {
         /// Output directory (created if missing).
@@ -95,6 +95,9 @@ pub enum BenchCommand {
         #[arg(long, value_name = "DIR", default_value = "bench-out")]
         out: PathBuf,
     },
+    /// Implicit against semi-implicit Euler on a stiff 64×64 spring-mass cloth, each at the
+    /// largest stable step it takes: prints the steps and the time per simulated second.
+    Cloth,
 }
 
 /// Arguments of `fixstep run`.

@@ -1,5 +1,5 @@
 // ok-det: benchmark command; wall-clock timing and f64 results are reported, never simulated.
-//! `fixstep bench accuracy` and `fixstep bench stability`: run a benchmark, write its files
+//! `fixstep bench accuracy`, `stability` and `cloth`: run a benchmark, write its files
 //! into the output directory atomically, print its tables.
 
 use std::io::Write;
@@ -11,6 +11,7 @@ use super::output::{print_line, write_error};
 use super::output_file::OutputFile;
 use super::progress::Progress;
 use super::status::Status;
+use fixstep::particles::Integrator;
 use fixstep_bench::{
     AccuracyConfig, StabilityConfig, accuracy_csv, floors_table, measured_orders, orders_table,
     run_accuracy_with_progress, run_stability_with_progress, stability_csv, stability_table,
@@ -22,6 +23,7 @@ pub fn bench(command: &BenchCommand) -> Result<Status, String> {
     match command {
         BenchCommand::Accuracy { out, quick } => accuracy(out, *quick),
         BenchCommand::Stability { out } => stability(out),
+        BenchCommand::Cloth => cloth(),
     }
 }
 
@@ -81,6 +83,16 @@ fn stability(out: &Path) -> Result<Status, String> {
         rows.len(),
         out.join("stability.csv").display()
     ))?;
+    Ok(Status::Ok)
+}
+
+/// The cloth trade: implicit against semi-implicit Euler at their largest stable steps.
+fn cloth() -> Result<Status, String> {
+    let rows =
+        fixstep_bench::run_cloth(&[Integrator::SemiImplicitEuler, Integrator::ImplicitEuler]);
+    for line in fixstep_bench::cloth_table(&rows) {
+        print_line(&line)?;
+    }
     Ok(Status::Ok)
 }
 

@@ -68,6 +68,7 @@ pub fn debris_pellets<R: Real>() -> ParticlesDesc<R> {
             group: None,
         }],
         collisions: vec![collision],
+        contacts: None,
         ..ParticlesDesc::default()
     }
 }

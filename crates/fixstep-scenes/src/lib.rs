@@ -4,6 +4,7 @@
 //! [`builtin_scene`] builds one by name; [`BUILTIN_SCENES`] lists them. The modules hold the
 //! pieces the scenes are made of, per subsystem, for tests and benchmarks to reuse.
 
+pub mod bridge_particles;
 pub mod bullets;
 pub mod debris;
 pub mod flag;
@@ -23,7 +24,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 29] = [
+pub const BUILTIN_SCENES: [(&str, &str); 30] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -130,6 +131,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 29] = [
         "a 32x32 cloth blown by wind, its top edge slid to and fro on a rail by inputs",
     ),
     ("rope", "a 20-link XPBD rope pendulum released horizontal"),
+    (
+        "bridge_particles",
+        "a mass-aggregate rope bridge: rails of particles joined by cables, planks of rods, walked across by a heavy particle resting on it through particle contacts",
+    ),
     (
         "jelly",
         "a 6x6x6 spring-mass cube dropped on the ground, wobbling",
@@ -238,6 +243,11 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             let (bodies, chain) = joints::chain(20, R::from_int(22));
             (scene.rigid, scene.joints) = (Some(bodies), Some(chain));
             scene.ticks = 600;
+        }
+        "bridge_particles" => {
+            scene.particles = Some(bridge_particles::bridge_particles());
+            scene.script = bridge_particles::bridge_particles_script();
+            scene.ticks = 360;
         }
         "bridge" => {
             let (bodies, bridge) = joints::bridge(20);

@@ -62,6 +62,7 @@ pub fn fountain<R: Real>() -> ParticlesDesc<R> {
             },
         ],
         collisions: Vec::new(),
+        contacts: None,
     }
 }
 
@@ -126,6 +127,7 @@ pub fn orbits<R: Real>() -> ParticlesDesc<R> {
             group: None,
         }],
         collisions: Vec::new(),
+        contacts: None,
     }
 }
 
@@ -229,5 +231,6 @@ pub fn showcase_particles<R: Real>() -> ParticlesDesc<R> {
             },
         ],
         collisions: Vec::new(),
+        contacts: None,
     }
 }

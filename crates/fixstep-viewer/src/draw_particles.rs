@@ -1,4 +1,4 @@
-//! Particles as dots coloured by speed, springs as lines.
+//! Particles as dots coloured by speed, springs, rods and cables as lines.
 
 use super::draw_list::{Figure, Layer, Paint, Primitive};
 use fixstep::math::Real;
@@ -6,9 +6,13 @@ use fixstep::particles::ParticleSystem;
 
 /// Colour of spring lines, sRGB.
 const SPRING: [u8; 3] = [90, 96, 110];
+/// Colour of rods, sRGB.
+const ROD: [u8; 3] = [150, 110, 60];
+/// Colour of cables, sRGB.
+const CABLE: [u8; 3] = [60, 60, 60];
 
-/// Appends a line per spring (scene order), then a dot per live particle (slot order)
-/// painted with its speed |v| (m/s).
+/// Appends a line per spring (scene order), then per rod and cable (scene order), then a
+/// dot per live particle (slot order) painted with its speed |v| (m/s).
 pub fn draw_particles<R: Real>(particles: &ParticleSystem<R>, out: &mut Vec<Primitive>) {
     for (a, b) in particles.spring_ends() {
         out.push(Primitive {
@@ -17,6 +21,16 @@ pub fn draw_particles<R: Real>(particles: &ParticleSystem<R>, out: &mut Vec<Prim
                 b: b.to_f64(),
             },
             paint: Paint::Rgb(SPRING),
+            layer: Layer::Moving,
+        });
+    }
+    for (a, b, rod) in particles.link_ends() {
+        out.push(Primitive {
+            figure: Figure::Line {
+                a: a.to_f64(),
+                b: b.to_f64(),
+            },
+            paint: Paint::Rgb(if rod { ROD } else { CABLE }),
             layer: Layer::Moving,
         });
     }
