@@ -67,7 +67,10 @@ fn helpers_give_the_plain_loops_result_at_any_thread_count() {
                         .enumerate()
                         .all(|(c, &(start, _))| start == c * 64)
                 );
-                assert_eq!(sums.iter().map(|s| s.1).sum::<u64>(), (1..=n as u64).sum::<u64>());
+                assert_eq!(
+                    sums.iter().map(|s| s.1).sum::<u64>(),
+                    (1..=n as u64).sum::<u64>()
+                );
                 (mapped, folded, written)
             })
         });

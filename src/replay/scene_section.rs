@@ -612,6 +612,7 @@ pub fn encode_scene(scene: &Scene<Fx>) -> Result<Vec<u8>, CodecError> {
     }
     if let Some(water) = &scene.water_surface {
         additions.push(Addition::Water(water.clone()));
+    }
     if let Some(contacts) = scene.particles.as_ref().and_then(|p| p.contacts.as_ref()) {
         additions.push(Addition::ParticleContacts(contacts.clone()));
     }
