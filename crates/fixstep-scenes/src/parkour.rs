@@ -133,7 +133,7 @@ const CUES: [Cue; 10] = [
     (360, None, [-15, 0, 0], false),
 ];
 
-/// The script of [`CUES`], one input per tick that has cues.
+/// The script of the cues (`CUES`), one input per tick that has cues.
 pub fn parkour_script<R: Real>() -> Vec<TickInput<R>> {
     let mut script: Vec<TickInput<R>> = Vec::new();
     for &(tick, who, [x, y, z], jump) in &CUES {
