@@ -56,9 +56,9 @@ fn scene_with(rigid: RigidDesc<Fx>, gravity: Vec3<Fx>) -> Scene<Fx> {
 
 /// Two balls of radius ½ m meet head on in zero gravity: ball A of density ρ at 3 m/s, ball
 /// B of density ρ·`ratio` at −1 m/s, both with restitution `e`. After the collision the
-/// separating speed must be e times the approach speed (4 m/s) within 0.02 of e, and the
-/// momentum must be kept to 1e-4 of its magnitude.
-fn head_on(e: f64, ratio: i32) {
+/// separating speed must be e times the approach speed (4 m/s) within `tolerance` of e, and
+/// the momentum must be kept to 1e-4 of its magnitude.
+fn head_on(e: f64, ratio: i32, tolerance: f64) {
     let ball = |x: i32, v: i32, density: Fx| {
         let mut b = BodyDesc::new(
             Shape::Sphere { radius: Fx::HALF },
@@ -97,7 +97,7 @@ fn head_on(e: f64, ratio: i32) {
     let measured = (vb - va) / 4.0;
     eprintln!("head-on: e = {e}, mass ratio {ratio}: measured {measured:.5}");
     assert!(
-        (measured - e).abs() <= 0.02,
+        (measured - e).abs() <= tolerance,
         "e = {e}, mass ratio {ratio}: measured restitution {measured} (va {va}, vb {vb})"
     );
     let drift = (momentum(&world) - p0).abs() / p0.abs().max(1.0);
@@ -111,7 +111,18 @@ fn head_on(e: f64, ratio: i32) {
 fn head_on_restitution_matches_the_target() {
     for e in [0.0, 0.5, 1.0] {
         for ratio in [1, 10, 100] {
-            head_on(e, ratio);
+            head_on(e, ratio, 0.02);
+        }
+    }
+}
+
+/// Issue [seed-rows]: at e = 0.5 and 0.9 and mass ratios 1 to 100, the balls part at e
+/// times their approach speed within 1 % of e.
+#[test]
+fn head_on_restitution_within_one_percent() {
+    for e in [0.5, 0.9] {
+        for ratio in [1, 10, 30, 100] {
+            head_on(e, ratio, 0.01 * e);
         }
     }
 }
