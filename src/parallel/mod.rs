@@ -199,8 +199,10 @@ pub fn for_each_mut<T: Send>(items: &mut [T], chunk_len: usize, f: impl Fn(usize
 }
 
 /// `f(start, chunk)` for consecutive chunks of `chunk_len` items (the last may be shorter),
-/// each chunk starting at item `start` (the loop splits only when [`splits`]). Each call may
-/// write only its chunk. For loops whose body wants a slice (a vector kernel).
+/// each chunk starting at item `start`, when the loop splits ([`splits`]); otherwise one
+/// call `f(0, items)` over the whole slice. Each call may write only its chunk, and an
+/// item's result may not depend on where its chunk starts. For loops whose body wants a
+/// slice (a vector kernel).
 pub fn for_each_chunk_mut<T: Send>(
     items: &mut [T],
     chunk_len: usize,

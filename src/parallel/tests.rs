@@ -47,8 +47,10 @@ fn helpers_give_the_plain_loops_result_at_any_thread_count() {
                 let mut written = vec![0u64; n];
                 for_each_mut(&mut written, 8, |i, x| *x = (i as u64) * (i as u64) + 7);
                 for_each_chunk_mut(&mut written, 50, |start, chunk| {
-                    assert!(chunk.len() <= 50);
-                    assert_eq!(chunk[0], (start as u64) * (start as u64) + 7);
+                    for (k, &x) in chunk.iter().enumerate() {
+                        let i = (start + k) as u64;
+                        assert_eq!(x, i * i + 7);
+                    }
                 });
                 let mut left = vec![0u64; n];
                 let mut right = vec![0u64; n];
