@@ -68,7 +68,7 @@ mod tests {
     #[test]
     fn a_sphere_cap_gives_half_and_whole_volumes() {
         let r = 0.5;
-        let whole = 4.0 / 3.0 * std::f64::consts::PI * r * r * r;
+        let whole = 4.0 / 3.0 * std::f64::consts::PI * r * r * r; // ok-det: test reference
         let full = sphere_submerged_volume(fx(-2.0), fx(r), fx(0.0)).to_f64();
         let half = sphere_submerged_volume(fx(0.0), fx(r), fx(0.0)).to_f64();
         assert!((full - whole).abs() < 1e-6 * whole, "{full} vs {whole}");
