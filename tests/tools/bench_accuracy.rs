@@ -279,7 +279,7 @@ fn command_writes_the_csv_and_the_svg_and_prints_the_orders() {
     let rows: Vec<Vec<&str>> = lines.map(|line| line.split(',').collect()).collect();
     let halvings = AccuracyConfig::quick().halvings as usize;
     assert!(halvings >= 6);
-    assert_eq!(rows.len(), 5 * 6 * 4 * (halvings + 1));
+    assert_eq!(rows.len(), 5 * 7 * 4 * (halvings + 1));
     for row in &rows {
         assert_eq!(row.len(), 7, "{row:?}");
         let dt: f64 = row[3].parse().expect("dt");

@@ -530,7 +530,7 @@ fn a_part_index_out_of_range_in_the_checksums_reads_as_words() {
     bytes[part_at..part_at + 4].copy_from_slice(&1200u32.to_le_bytes());
     let expected = format!(
         "checksums section at byte offset {}: does not decode: invalid variant index 1200 \
-         (expected 0 to 4)",
+         (expected 0 to 6)",
         layout.checksums
     );
     assert_rejected(&bytes, &[&expected]);
