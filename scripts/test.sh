@@ -22,6 +22,9 @@ trap 'rm -f "$log"' EXIT
 # builds and runs the replay verifier.
 cargo test --workspace --locked --lib --bins --tests 2>&1 | tee "$log"
 cargo test --workspace --locked --doc 2>&1 | tee -a "$log"
+# The bounded-memory runs alone: a child's peak memory counts the spawning test process's
+# own, which the other tests running beside it raise (tests/tools/cli_bounded_memory.rs).
+cargo test -p fixstep-cli --locked --test tools -- --ignored cli_bounded_memory 2>&1 | tee -a "$log"
 # Release arithmetic (wrapping where the checked operators would not catch it) matters to
 # the engine, whose every tick the tools only call: its integration tests again, which
 # re-simulate every committed replay and hold the heavy release-only cases. (Its unit tests

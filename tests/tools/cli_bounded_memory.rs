@@ -86,7 +86,7 @@ fn growth_kib(extra: &[&str]) -> (i64, i64) {
 }
 
 #[test]
-#[ignore = "ru_maxrss of a child spawned with CLONE_VM counts the test process's own resident memory at the spawn, which other tests running beside it raise (131 MB measured); run alone with --ignored"]
+#[ignore = "ru_maxrss of a child spawned with CLONE_VM counts the test process's own resident memory at the spawn, which other tests running beside it raise (131 MB measured); scripts/test.sh runs them alone with --ignored"]
 fn a_long_run_peaks_where_a_short_one_does() {
     let (growth, peak) = growth_kib(&[]);
     assert!(growth < MAX_GROWTH_KIB, "grew by {growth} KiB");
@@ -94,7 +94,7 @@ fn a_long_run_peaks_where_a_short_one_does() {
 }
 
 #[test]
-#[ignore = "ru_maxrss of a child spawned with CLONE_VM counts the test process's own resident memory at the spawn, which other tests running beside it raise (131 MB measured); run alone with --ignored"]
+#[ignore = "ru_maxrss of a child spawned with CLONE_VM counts the test process's own resident memory at the spawn, which other tests running beside it raise (131 MB measured); scripts/test.sh runs them alone with --ignored"]
 fn a_long_recorded_run_peaks_where_a_short_one_does() {
     let replay = TempPath::new("pins.replay");
     let (growth, peak) = growth_kib(&["--record", replay.str()]);
