@@ -17,6 +17,7 @@
 //! [`surroundings`] what a character sees of the world · [`movement`] one tick of one
 //! character · [`hashing`] the canonical hash · [`subsystem`] the world's contract.
 
+mod crowd;
 pub mod desc;
 mod hashing;
 pub mod movement;

@@ -35,6 +35,7 @@
 //! Every cast keeps the `skin`, so a character never ends inside the bodies it collides
 //! with, whatever its speed (each cast sweeps the whole path).
 
+use super::crowd::{Crowd, CrowdHit};
 use super::desc::CharacterSettings;
 use super::surroundings::Surroundings;
 use super::system::{Character, CharacterEvent};
@@ -83,12 +84,39 @@ fn horizontal<R: Real>(v: Vec3<R>) -> Vec3<R> {
     Vec3::new(v.x, R::ZERO, v.z)
 }
 
-/// A body touched during a move.
+/// What a cast met: a body, or another character.
 #[derive(Clone, Copy, Debug)]
-struct Touch<R: Real> {
-    body: Handle,
-    normal: Vec3<R>,
+struct Hit<R: Real> {
+    /// The body met; `None` for another character.
+    body: Option<Handle>,
+    /// Travel along the unit direction at impact, m.
+    distance: R,
+    /// The contact point, m.
     point: Vec3<R>,
+    /// Unit normal from what was met towards the character.
+    normal: Vec3<R>,
+}
+
+impl<R: Real> From<RayHit<R>> for Hit<R> {
+    fn from(h: RayHit<R>) -> Self {
+        Self {
+            body: Some(h.body),
+            distance: h.distance,
+            point: h.point,
+            normal: h.normal,
+        }
+    }
+}
+
+impl<R: Real> From<CrowdHit<R>> for Hit<R> {
+    fn from(h: CrowdHit<R>) -> Self {
+        Self {
+            body: None,
+            distance: h.distance,
+            point: h.point,
+            normal: h.normal,
+        }
+    }
 }
 
 /// One character's shape and settings, moving among its surroundings.
@@ -98,6 +126,10 @@ struct Mover<'a, R: Real> {
     /// cos `max_slope`: the least normal y of a surface it stands on.
     min_ground_y: R,
     surroundings: &'a mut dyn Surroundings<R>,
+    /// The other characters.
+    crowd: &'a Crowd<R>,
+    /// This character's index.
+    me: usize,
 }
 
 impl<R: Real> Mover<'_, R> {
@@ -107,24 +139,41 @@ impl<R: Real> Mover<'_, R> {
     }
 
     /// How far (m, 0 to |motion|) the shape at `p` moves along `motion` before it is
-    /// `skin` from a body, and the hit. A body touched at the start that the motion leaves
+    /// `skin` from a body or another character, and the hit (a body before a character at
+    /// the same distance). A body or character touched at the start that the motion leaves
     /// (n · motion ≥ 0) does not stop it.
-    fn cast(&self, p: Vec3<R>, motion: Vec3<R>, filter: &QueryFilter) -> (R, Option<RayHit<R>>) {
+    fn cast(&self, p: Vec3<R>, motion: Vec3<R>, filter: &QueryFilter) -> (R, Option<Hit<R>>) {
         let len = motion.length();
         if len <= tiny() {
             return (R::ZERO, None);
         }
         let skin = self.settings.skin;
+        let reach = len + skin;
+        let leaves = |distance: R, normal: Vec3<R>| distance <= tiny() && normal.dot(motion) >= R::ZERO;
         let s = &*self.surroundings;
-        let mut hit = s.cast(&self.shape, p, motion, len + skin, filter);
-        if let Some(h) = hit
-            && h.distance <= tiny()
-            && h.normal.dot(motion) >= R::ZERO
+        let mut body = s.cast(&self.shape, p, motion, reach, filter);
+        if let Some(h) = body
+            && leaves(h.distance, h.normal)
         {
             let mut past = filter.clone();
             past.exclude.push(h.body);
-            hit = s.cast(&self.shape, p, motion, len + skin, &past);
+            body = s.cast(&self.shape, p, motion, reach, &past);
         }
+        let crowd = |exclude: &[usize]| {
+            let f = self.settings.filter;
+            self.crowd.cast(self.me, &self.shape, p, motion, reach, f, exclude)
+        };
+        let mut other = crowd(&[]);
+        if let Some(h) = other
+            && leaves(h.distance, h.normal)
+        {
+            other = crowd(&[h.index]);
+        }
+        let hit = match (body, other) {
+            (Some(b), Some(o)) if o.distance < b.distance => Some(Hit::from(o)),
+            (Some(b), _) => Some(Hit::from(b)),
+            (None, o) => o.map(Hit::from),
+        };
         match hit {
             None => (len, None),
             Some(h) => ((h.distance - skin).clamp(R::ZERO, len), Some(h)),
@@ -160,7 +209,7 @@ impl<R: Real> Mover<'_, R> {
         motion: Vec3<R>,
         can_step: bool,
         filter: &QueryFilter,
-        touches: &mut Vec<Touch<R>>,
+        touches: &mut Vec<Hit<R>>,
     ) -> Vec3<R> {
         let mut remaining = motion;
         for _ in 0..MAX_SLIDES {
@@ -173,11 +222,7 @@ impl<R: Real> Mover<'_, R> {
             let Some(hit) = hit else {
                 break;
             };
-            touches.push(Touch {
-                body: hit.body,
-                normal: hit.normal,
-                point: hit.point,
-            });
+            touches.push(hit);
             remaining = if travel >= len {
                 Vec3::ZERO
             } else {
@@ -243,7 +288,7 @@ impl<R: Real> Mover<'_, R> {
         p: Vec3<R>,
         reach: R,
         filter: &QueryFilter,
-    ) -> Option<(Vec3<R>, RayHit<R>)> {
+    ) -> Option<(Vec3<R>, Hit<R>)> {
         let down = Vec3::new(R::ZERO, -reach, R::ZERO);
         let (travel, hit) = self.cast(p, down, filter);
         let hit = hit?;
@@ -254,33 +299,38 @@ impl<R: Real> Mover<'_, R> {
             + reach.max(self.settings.step_height)
             + self.settings.skin * R::TWO;
         let below = self.surroundings.cast_ray(p, -Vec3::Y, depth, filter)?;
-        self.walkable(below.normal).then_some((p, below))
+        self.walkable(below.normal).then_some((p, below.into()))
     }
 }
 
 /// One tick of `character` (handle `handle`) of `dt` seconds under the vertical gravity
-/// `gravity_y` (m/s²) among `surroundings` (see the [module](self)); its landing and new
-/// hits go to `events`.
+/// `gravity_y` (m/s²) among `surroundings` and the other characters of `crowd` (see the
+/// [module](self)); its landing and new hits go to `events`.
 pub fn move_character<R: Real>(
     character: &mut Character<R>,
     handle: Handle,
     dt: R,
     gravity_y: R,
     surroundings: &mut dyn Surroundings<R>,
+    crowd: &Crowd<R>,
     events: &mut Vec<CharacterEvent>,
 ) {
     let c = character;
     let settings = c.settings;
+    let filter = QueryFilter {
+        filter: settings.filter,
+        exclude: Vec::new(),
+        sensors: false,
+    };
+    // 0. Knock off the dynamic bodies the rigid stage moved into it.
+    let knocked = surroundings.knock_off(&c.shape, c.position, c.velocity, dt, &filter);
     let mut mover = Mover {
         shape: c.shape.clone(),
         settings,
         min_ground_y: settings.max_slope.cos(),
         surroundings,
-    };
-    let filter = QueryFilter {
-        filter: settings.filter,
-        exclude: Vec::new(),
-        sensors: false,
+        crowd,
+        me: handle.index as usize,
     };
     let was_grounded = c.grounded;
 
@@ -354,7 +404,7 @@ pub fn move_character<R: Real>(
             c.position = p;
             c.grounded = true;
             c.ground_normal = hit.normal;
-            c.ground_body = Some(hit.body);
+            c.ground_body = hit.body;
             vy = R::ZERO;
         }
         None => {
@@ -377,13 +427,16 @@ pub fn move_character<R: Real>(
     // 6. Push the dynamic bodies hit (each once, at its first contact), raise the new hits.
     let velocity = Vec3::new(c.desired_velocity.x, vy, c.desired_velocity.z);
     let own = motion / dt;
-    let mut hit_bodies: Vec<Handle> = Vec::with_capacity(touches.len());
+    let mut hit_bodies = knocked;
     for touch in &touches {
-        if hit_bodies.contains(&touch.body) {
+        let Some(body) = touch.body else {
+            continue;
+        };
+        if hit_bodies.contains(&body) {
             continue;
         }
-        hit_bodies.push(touch.body);
-        push_body(&mut mover, settings.push_mass, own, touch);
+        hit_bodies.push(body);
+        push_body(&mut mover, settings.push_mass, own, body, touch);
     }
     hit_bodies.sort_unstable();
     for &body in &hit_bodies {
@@ -402,11 +455,17 @@ pub fn move_character<R: Real>(
 
 /// The push of a character moving at `own` (m/s) with mass `push_mass` (kg) on the body
 /// it touched (see the [module](self), step 6).
-fn push_body<R: Real>(mover: &mut Mover<'_, R>, push_mass: R, own: Vec3<R>, touch: &Touch<R>) {
+fn push_body<R: Real>(
+    mover: &mut Mover<'_, R>,
+    push_mass: R,
+    own: Vec3<R>,
+    handle: Handle,
+    touch: &Hit<R>,
+) {
     if push_mass <= R::ZERO {
         return;
     }
-    let Some(body) = mover.surroundings.motion(touch.body) else {
+    let Some(body) = mover.surroundings.motion(handle) else {
         return;
     };
     if body.kind != BodyKind::Dynamic {
@@ -419,5 +478,5 @@ fn push_body<R: Real>(mover: &mut Mover<'_, R>, push_mass: R, own: Vec3<R>, touc
     let impulse = closing / (R::ONE / push_mass + body.inverse_mass);
     mover
         .surroundings
-        .push(touch.body, -touch.normal * impulse, touch.point);
+        .push(handle, -touch.normal * impulse, touch.point);
 }

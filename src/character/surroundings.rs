@@ -59,6 +59,20 @@ pub trait Surroundings<R: Real> {
 
     /// Adds `impulse` (N·s) to the dynamic `body` at the world point `point` (m).
     fn push(&mut self, body: Handle, impulse: Vec3<R>, point: Vec3<R>);
+
+    /// The character `shape` at `position` (m), moving at `velocity` (m/s), as an
+    /// immovable obstacle to the dynamic bodies `filter` accepts that the last `dt` seconds
+    /// moved into it: each is put back where it touches it and loses its approach, as
+    /// [`RigidSystem::knock_off_obstacle`](crate::rigid::RigidSystem) does. The bodies
+    /// knocked, ascending.
+    fn knock_off(
+        &mut self,
+        shape: &Shape<R>,
+        position: Vec3<R>,
+        velocity: Vec3<R>,
+        dt: R,
+        filter: &QueryFilter,
+    ) -> Vec<Handle>;
 }
 
 /// A world with no bodies: casts hit nothing.
@@ -86,4 +100,8 @@ impl<R: Real> Surroundings<R> for NoSurroundings {
     }
 
     fn push(&mut self, _: Handle, _: Vec3<R>, _: Vec3<R>) {}
+
+    fn knock_off(&mut self, _: &Shape<R>, _: Vec3<R>, _: Vec3<R>, _: R, _: &QueryFilter) -> Vec<Handle> {
+        Vec::new()
+    }
 }

@@ -3,6 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::crowd::Crowd;
 use super::desc::{CharacterDesc, CharacterSettings};
 use super::movement::move_character;
 use super::surroundings::Surroundings;
@@ -128,8 +129,9 @@ impl<R: Real> CharacterSystem<R> {
     }
 
     /// Moves every character, in index order, by one tick of `dt` seconds under `gravity`
-    /// (m/s²; its y component) among `surroundings` ([`move_character`]); the tick's
-    /// events, in character order.
+    /// (m/s²; its y component) among `surroundings` and the other characters
+    /// ([`move_character`]: those before it in index order where they moved to this tick,
+    /// the others where they were); the tick's events, in character order.
     pub fn step_tick(
         &mut self,
         dt: R,
@@ -137,8 +139,11 @@ impl<R: Real> CharacterSystem<R> {
         surroundings: &mut dyn Surroundings<R>,
     ) -> Vec<CharacterEvent> {
         let mut events = Vec::new();
+        let mut crowd = Crowd::new(&self.characters);
         for (i, c) in self.characters.iter_mut().enumerate() {
-            move_character(c, Self::handle(i), dt, gravity.y, surroundings, &mut events);
+            let handle = Self::handle(i);
+            move_character(c, handle, dt, gravity.y, surroundings, &crowd, &mut events);
+            crowd.moved(i, c.position);
         }
         events
     }

@@ -51,6 +51,7 @@ pub mod mass;
 pub mod material;
 pub mod mesh;
 mod metrics;
+mod obstacle;
 pub mod narrowphase;
 pub(crate) mod proxies;
 pub mod query;

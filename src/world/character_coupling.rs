@@ -65,6 +65,18 @@ impl<R: Real> Surroundings<R> for Bodies<'_, R> {
             point: Some(point),
         });
     }
+
+    fn knock_off(
+        &mut self,
+        shape: &Shape<R>,
+        position: Vec3<R>,
+        velocity: Vec3<R>,
+        dt: R,
+        filter: &QueryFilter,
+    ) -> Vec<Handle> {
+        self.rigid
+            .knock_off_obstacle(shape, position, velocity, dt, filter)
+    }
 }
 
 /// One tick (`dt` seconds, under `gravity`, m/s²) of every character, among `rigid`'s bodies

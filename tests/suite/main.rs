@@ -7,6 +7,7 @@
 mod mesh_obj;
 mod property_cases;
 
+mod character_contacts;
 mod character_determinism;
 mod character_moves;
 mod character_support;

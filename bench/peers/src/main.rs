@@ -32,9 +32,13 @@
 //! their answers agree. Filters (`filters`): fixstep's `balls` with every body on layer 1
 //! (so the collide stage filters pairs) beside the default filter.
 //!
+//! Characters (`characters`, [`characters`]): 1000 kinematic characters among 10,000 static
+//! boxes, fixstep's beside Rapier's `KinematicCharacterController`, ms per tick.
+//!
 //! Usage: `fixstep-peers [ROUNDS] [SCENE …]`, SCENE one of pyramid, balls, falling, water,
-//! dam_break, queries, filters; none means every one.
+//! dam_break, queries, filters, characters; none means every one.
 
+mod characters;
 mod fixstep_side;
 mod quality;
 mod queries;
@@ -60,7 +64,7 @@ pub fn time_steps(steps: u32, mut step: impl FnMut()) -> f64 {
     start.elapsed().as_secs_f64() * 1e3 / f64::from(steps)
 }
 
-fn median(values: &mut [f64]) -> f64 {
+pub fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     values[values.len() / 2]
 }
@@ -112,7 +116,7 @@ fn main() {
             && !OTHER_BENCHES.contains(&w.as_str())
     }) {
         eprintln!(
-            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, hills, hills_mesh, water, dam_break, queries, filters"
+            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, hills, hills_mesh, water, dam_break, queries, filters, characters"
         );
         std::process::exit(2);
     }
@@ -174,13 +178,16 @@ fn main() {
     if other("queries") {
         queries::table(rounds, rapier);
     }
+    if other("characters") {
+        characters::table(rounds, rapier);
+    }
     for scene in fluids {
         fluid_table(scene, rounds);
     }
 }
 
 /// The benches that are not a scene of their own.
-const OTHER_BENCHES: [&str; 2] = ["queries", "filters"];
+const OTHER_BENCHES: [&str; 3] = ["queries", "filters", "characters"];
 
 /// fixstep's `balls` (500 steps, sleeping off) with the default filter and with every body
 /// on layer 1 interacting with every layer, interleaved: the cost of the collide stage's
