@@ -8,7 +8,8 @@
 #   ./scripts/peer-bench.sh [ROUNDS] [SCENE ...]          (default 5 rounds, every scene)
 #   ./scripts/peer-bench.sh --wasm [ROUNDS] [SCENE ...]
 # SCENE also takes `queries` (rays and sphere overlaps on balls and pyramid, queries/s) and
-# `filters` (fixstep's balls with non-default filters against the default).
+# `filters` (fixstep's balls with non-default filters against the default) and `characters`
+# (1000 characters among 10,000 boxes beside Rapier's KinematicCharacterController).
 # --wasm: what a browser game pays. Builds the comparison for wasm32-wasip1, with Rapier's
 # enhanced-determinism mode only (its cross-platform mode, the one fixstep is compared
 # with), once plain and once with RUSTFLAGS="-C target-feature=+simd128" (fixstep's

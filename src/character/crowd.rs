@@ -160,7 +160,9 @@ impl<R: Real> Crowd<R> {
             let Some(hit) = cast_shape(shape, &start, direction, max, &m.shape, &xf) else {
                 continue;
             };
-            if best.is_none_or(|b| hit.distance < b.distance || (hit.distance == b.distance && i < b.index)) {
+            if best.is_none_or(|b| {
+                hit.distance < b.distance || (hit.distance == b.distance && i < b.index)
+            }) {
                 best = Some(CrowdHit {
                     index: i,
                     distance: hit.distance,

@@ -149,7 +149,8 @@ impl<R: Real> Mover<'_, R> {
         }
         let skin = self.settings.skin;
         let reach = len + skin;
-        let leaves = |distance: R, normal: Vec3<R>| distance <= tiny() && normal.dot(motion) >= R::ZERO;
+        let leaves =
+            |distance: R, normal: Vec3<R>| distance <= tiny() && normal.dot(motion) >= R::ZERO;
         let s = &*self.surroundings;
         let mut body = s.cast(&self.shape, p, motion, reach, filter);
         if let Some(h) = body
@@ -161,7 +162,8 @@ impl<R: Real> Mover<'_, R> {
         }
         let crowd = |exclude: &[usize]| {
             let f = self.settings.filter;
-            self.crowd.cast(self.me, &self.shape, p, motion, reach, f, exclude)
+            self.crowd
+                .cast(self.me, &self.shape, p, motion, reach, f, exclude)
         };
         let mut other = crowd(&[]);
         if let Some(h) = other
@@ -283,12 +285,7 @@ impl<R: Real> Mover<'_, R> {
     /// (the edge of a step), it stays where it is, grounded on what a ray straight down
     /// from its centre meets within its feet's depth plus `reach` and `step_height`, if
     /// that can be stood on.
-    fn find_ground(
-        &self,
-        p: Vec3<R>,
-        reach: R,
-        filter: &QueryFilter,
-    ) -> Option<(Vec3<R>, Hit<R>)> {
+    fn find_ground(&self, p: Vec3<R>, reach: R, filter: &QueryFilter) -> Option<(Vec3<R>, Hit<R>)> {
         let down = Vec3::new(R::ZERO, -reach, R::ZERO);
         let (travel, hit) = self.cast(p, down, filter);
         let hit = hit?;

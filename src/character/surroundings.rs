@@ -101,7 +101,14 @@ impl<R: Real> Surroundings<R> for NoSurroundings {
 
     fn push(&mut self, _: Handle, _: Vec3<R>, _: Vec3<R>) {}
 
-    fn knock_off(&mut self, _: &Shape<R>, _: Vec3<R>, _: Vec3<R>, _: R, _: &QueryFilter) -> Vec<Handle> {
+    fn knock_off(
+        &mut self,
+        _: &Shape<R>,
+        _: Vec3<R>,
+        _: Vec3<R>,
+        _: R,
+        _: &QueryFilter,
+    ) -> Vec<Handle> {
         Vec::new()
     }
 }

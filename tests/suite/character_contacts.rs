@@ -119,7 +119,10 @@ fn a_crowd_walking_to_one_point_never_overlaps() {
                     "tick {tick}: characters {a} and {b} overlap ({d} m apart)"
                 );
             }
-            assert!((pos(&world, a)[1] - 0.81).abs() < 0.05, "stays on the floor");
+            assert!(
+                (pos(&world, a)[1] - 0.81).abs() < 0.05,
+                "stays on the floor"
+            );
         }
     }
 }
@@ -131,7 +134,12 @@ fn throw_ball(speed: f64, restitution: f64) -> (World<Fx>, Handle) {
     ball.velocity = v(speed, 0.0, 0.0);
     ball.material.restitution = fx(restitution);
     let world = world(vec![floor(-20.0, 20.0), ball], vec![standing(0.0, 0.0)]);
-    let handle = world.rigid().expect("rigid").handles().nth(1).expect("ball");
+    let handle = world
+        .rigid()
+        .expect("rigid")
+        .handles()
+        .nth(1)
+        .expect("ball");
     (world, handle)
 }
 
@@ -178,7 +186,13 @@ fn a_bouncy_ball_bounces_back_off_a_character() {
     for _ in 0..20 {
         idle(&mut world);
     }
-    let vx = world.rigid().unwrap().linear_velocity(ball).unwrap().x.to_f64();
+    let vx = world
+        .rigid()
+        .unwrap()
+        .linear_velocity(ball)
+        .unwrap()
+        .x
+        .to_f64();
     // e = 0.8 of 10 m/s, the ball's spin taking none (the contact is on the line of its
     // centre).
     assert!((vx + 8.0).abs() < 0.1, "bounced back at 8 m/s: {vx}");
@@ -193,7 +207,10 @@ fn a_crate_dropped_on_a_character_comes_to_rest_on_its_head() {
         v(0.0, 3.0, 0.0),
     );
     crate_box.angular_velocity = v(0.0, 0.0, 0.0);
-    let mut world = world(vec![floor(-20.0, 20.0), crate_box], vec![standing(0.0, 0.0)]);
+    let mut world = world(
+        vec![floor(-20.0, 20.0), crate_box],
+        vec![standing(0.0, 0.0)],
+    );
     let handle = world.rigid().unwrap().handles().nth(1).unwrap();
     for _ in 0..240 {
         idle(&mut world);

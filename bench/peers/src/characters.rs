@@ -75,17 +75,27 @@ fn covered(ends: impl Iterator<Item = [f64; 3]>) -> f64 {
 /// character.
 pub fn run_fixstep() -> CharacterRun {
     let v = |a: [f64; 3]| Vec3::<Fx>::from_f64(a[0], a[1], a[2]);
-    let mut bodies = vec![BodyDesc::new(
-        Shape::Plane {
-            normal: Vec3::Y,
-            offset: Fx::ZERO,
-        },
-        Vec3::ZERO,
-    )
-    .fixed()];
+    let mut bodies = vec![
+        BodyDesc::new(
+            Shape::Plane {
+                normal: Vec3::Y,
+                offset: Fx::ZERO,
+            },
+            Vec3::ZERO,
+        )
+        .fixed(),
+    ];
     for k in 0..BOXES_PER_SIDE * BOXES_PER_SIDE {
         let (centre, half) = static_box(k);
-        bodies.push(BodyDesc::new(Shape::Box { half_extents: v(half) }, v(centre)).fixed());
+        bodies.push(
+            BodyDesc::new(
+                Shape::Box {
+                    half_extents: v(half),
+                },
+                v(centre),
+            )
+            .fixed(),
+        );
     }
     let settings = CharacterSettings::<Fx> {
         max_slope: Fx::from_f64(45f64.to_radians()),
@@ -153,7 +163,11 @@ pub fn run_rapier() -> CharacterRun {
     for k in 0..BOXES_PER_SIDE * BOXES_PER_SIDE {
         let (c, h) = static_box(k);
         world.insert(
-            RigidBodyBuilder::fixed().translation(Vector::new(c[0] as f32, c[1] as f32, c[2] as f32)),
+            RigidBodyBuilder::fixed().translation(Vector::new(
+                c[0] as f32,
+                c[1] as f32,
+                c[2] as f32,
+            )),
             ColliderBuilder::cuboid(h[0] as f32, h[1] as f32, h[2] as f32),
         );
     }
@@ -162,8 +176,11 @@ pub fn run_rapier() -> CharacterRun {
         .map(|k| {
             let s = start(k);
             let (body, _) = world.insert(
-                RigidBodyBuilder::kinematic_position_based()
-                    .translation(Vector::new(s[0] as f32, s[1] as f32, s[2] as f32)),
+                RigidBodyBuilder::kinematic_position_based().translation(Vector::new(
+                    s[0] as f32,
+                    s[1] as f32,
+                    s[2] as f32,
+                )),
                 ColliderBuilder::capsule_y(0.5, 0.3),
             );
             body
@@ -191,10 +208,15 @@ pub fn run_rapier() -> CharacterRun {
         moves.clear();
         for (k, &body) in characters.iter().enumerate() {
             let w = walking(k, tick);
-            vertical[k] = if grounded[k] { 0.0 } else { vertical[k] - 9.81 * dt };
+            vertical[k] = if grounded[k] {
+                0.0
+            } else {
+                vertical[k] - 9.81 * dt
+            };
             let desired = Vector::new(w[0] as f32 * dt, vertical[k] * dt, w[2] as f32 * dt);
             let pose = *world.bodies[body].position();
-            let queries = world.query_pipeline_with_filter(QueryFilter::default().exclude_rigid_body(body));
+            let queries =
+                world.query_pipeline_with_filter(QueryFilter::default().exclude_rigid_body(body));
             let moved = controller.move_shape(dt, &queries, &shape, &pose, desired, |_| {});
             grounded[k] = moved.grounded;
             moves.push(pose.translation + moved.translation);
