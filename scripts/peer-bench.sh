@@ -25,7 +25,7 @@ wasm=0 args=()
 for a in "$@"; do
   case $a in
     --wasm) wasm=1 ;;
-    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "error: unknown option \`$a\` (see --help)" >&2; exit 2 ;;
     *) args+=("$a") ;;
   esac

@@ -7,15 +7,17 @@
 //! present only when the scene has characters). Inputs drive it with
 //! [`Command::MoveCharacter`](crate::types::Command::MoveCharacter). Once per tick, after
 //! every other stage, each character in index order moves by shape casts against the
-//! bodies ([`movement`]): move-and-slide with a skin, auto-step, snap to ground, riding the
-//! body it stands on, pushing dynamic bodies. The world lends it the bodies through
-//! [`Surroundings`]. The user guide is `docs/characters.md`.
+//! bodies and the other characters ([`movement`]): move-and-slide with a skin, auto-step,
+//! snap to ground, riding the body it stands on, pushing dynamic bodies, and standing as an
+//! immovable obstacle to the dynamic bodies moved into it. The world lends it the bodies
+//! through [`Surroundings`]. The user guide is `docs/characters.md`.
 //!
 //! # Files
 //!
 //! [`desc`] what a scene says · [`system`] the characters' state and commands ·
-//! [`surroundings`] what a character sees of the world · [`movement`] one tick of one
-//! character · [`hashing`] the canonical hash · [`subsystem`] the world's contract.
+//! [`surroundings`] what a character sees of the world · [`crowd`] the other characters
+//! as obstacles · [`movement`] one tick of one character · [`hashing`] the canonical hash
+//! · [`subsystem`] the world's contract.
 
 mod crowd;
 pub mod desc;

@@ -1,8 +1,12 @@
-//! One tick of one character: ride, walk or fall, slide, step, snap, push.
+//! One tick of one character: knock bodies off, ride, walk or fall, slide, step, snap,
+//! push.
 //!
 //! With dt the tick (s), g the y component of gravity (m/s², negative), h the walking
 //! velocity (m/s, horizontal) and v_y the character's vertical speed:
 //!
+//! 0. **Knock off.** The dynamic bodies the rigid stage moved into the character are put
+//!    back where they touch it and lose their approach, as against an immovable body
+//!    ([`Surroundings::knock_off`]); they count as bodies hit this tick.
 //! 1. **Ride.** A grounded character whose ground body moves is first carried by that
 //!    body's velocity at its centre, v_b + ω × (x − c), times dt (a move-and-slide that
 //!    ignores the ground body itself, which has already moved this tick).
@@ -11,7 +15,8 @@
 //!    v_y = `jump_speed`. Airborne, it moves h·dt + (0, v_y dt + ½ g dt², 0) and
 //!    v_y ← v_y + g dt, which is exact for constant gravity at every tick.
 //! 3. **Move and slide.** Up to [`MAX_SLIDES`] shape casts: each moves the shape until it
-//!    is `skin` from the first body in its way (ties to the lower handle, from the query),
+//!    is `skin` from the first body or other character in its way (ties to the lower
+//!    handle, from the query; a body before a character; characters to the lower index),
 //!    then the rest of the motion r is projected on the surface hit, r ← r − n (r·n) when
 //!    r·n < 0. A surface steeper than `max_slope` (n_y < cos `max_slope`) is a wall for
 //!    walking: the motion is first projected on its horizontal normal, so that walking

@@ -37,8 +37,9 @@ impl<R: Real> RigidSystem<R> {
     ///    J = −(1 + e) v_n n / (1/m + (r × n)·I⁻¹(r × n)), e its material's restitution when
     ///    v_n exceeds the restitution threshold, 0 otherwise.
     ///
-    /// Returns the handles of the bodies knocked, ascending; the query index is brought up
-    /// to date when one moved.
+    /// A body knocked stays awake (its sleep timer restarts, as for a body touching a moving
+    /// kinematic body), so that it falls once the obstacle leaves. Returns the handles of
+    /// the bodies knocked, ascending; the query index is brought up to date when one moved.
     pub(crate) fn knock_off_obstacle(
         &mut self,
         shape: &Shape<R>,
@@ -60,6 +61,7 @@ impl<R: Real> RigidSystem<R> {
             };
             self.displace_body(i, knock.displacement, Vec3::ZERO);
             self.stop_against(i, knock.normal, knock.point, velocity);
+            self.bodies.sleep_time[i] = R::ZERO;
             knocked.push(handle);
         }
         if !knocked.is_empty() {
