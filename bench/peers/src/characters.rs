@@ -237,9 +237,12 @@ pub fn run_rapier() -> CharacterRun {
     }
 }
 
+/// One engine's run of the bench.
+type Runner = fn() -> CharacterRun;
+
 /// The table: each engine's median ms per tick over `rounds` interleaved runs.
 pub fn table(rounds: usize, rapier: &str) {
-    let engines: [(&str, fn() -> CharacterRun); 2] = [
+    let engines: [(&str, Runner); 2] = [
         ("fixstep I32F32 characters", run_fixstep),
         ("KinematicCharacterController", run_rapier),
     ];
