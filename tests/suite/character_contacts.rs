@@ -200,7 +200,7 @@ fn a_bouncy_ball_bounces_back_off_a_character() {
 
 #[test]
 fn a_crate_dropped_on_a_character_rests_on_its_head_and_falls_when_it_leaves() {
-    let mut crate_box = BodyDesc::new(
+    let crate_box = BodyDesc::new(
         Shape::Box {
             half_extents: v(0.2, 0.2, 0.2),
         },
