@@ -398,9 +398,13 @@ pub fn run_loopback_pair(
     let start = std::time::Instant::now();
     let target = i64::try_from(ticks).unwrap_or(i64::MAX);
     for update in 1..=max_updates {
-        for (peer, app) in apps.iter_mut().enumerate() {
-            app.update();
-            if let Some(event) = desync(app) {
+        // The peers take turns in both orders (0 1, 1 0, 0 1, ...), so that each in turn
+        // runs a frame before the other's input for it has arrived: both predict, and both
+        // roll back when the prediction was wrong.
+        let order = if update % 2 == 0 { [1, 0] } else { [0, 1] };
+        for peer in order {
+            apps[peer].update();
+            if let Some(event) = desync(&mut apps[peer]) {
                 return Err(format!("peer {peer}: {event}"));
             }
         }
