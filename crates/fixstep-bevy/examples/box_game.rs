@@ -57,7 +57,10 @@ fn parse_args() -> Result<Args, String> {
         }
     }
     if args.ticks == 0 || args.ticks > 1_000_000 {
-        return Err(format!("--ticks: {} is not within 1 to 1000000", args.ticks));
+        return Err(format!(
+            "--ticks: {} is not within 1 to 1000000",
+            args.ticks
+        ));
     }
     Ok(args)
 }
@@ -88,7 +91,8 @@ fn main() -> ExitCode {
 }
 
 fn pair(args: &Args) -> Result<(), String> {
-    let updates = u32::try_from(args.ticks.saturating_mul(4).saturating_add(600)).unwrap_or(u32::MAX);
+    let updates =
+        u32::try_from(args.ticks.saturating_mul(4).saturating_add(600)).unwrap_or(u32::MAX);
     let outcome = run_loopback_pair(
         args.ticks,
         args.seed,
@@ -231,7 +235,11 @@ mod render {
             .0
             .iter()
             .map(|&h| {
-                let input = if h == 0 { keyboard } else { bot_input(seed.0, 1, frame.0) };
+                let input = if h == 0 {
+                    keyboard
+                } else {
+                    bot_input(seed.0, 1, frame.0)
+                };
                 (h, input)
             })
             .collect();

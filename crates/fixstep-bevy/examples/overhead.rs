@@ -100,7 +100,10 @@ fn main() -> ExitCode {
     let plugin_world = app.world().resource::<FixstepWorld>();
     let (a, b) = (raw.checksum().total, plugin_world.checksum());
     let per_tick = |d: Duration| d.as_secs_f64() * 1e3 / done as f64;
-    println!("balls, {done} ticks, {} bodies", raw.rigid().map_or(0, |r| r.body_count()));
+    println!(
+        "balls, {done} ticks, {} bodies",
+        raw.rigid().map_or(0, |r| r.body_count())
+    );
     println!("raw engine:  {:.3} ms/tick", per_tick(raw_time));
     println!("with plugin: {:.3} ms/tick", per_tick(plugin_time));
     println!(

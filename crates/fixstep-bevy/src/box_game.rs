@@ -49,9 +49,7 @@ pub fn crate_shape() -> Shape<Fx> {
 
 /// A player's shape: a ball of radius 0.4 m.
 pub fn player_shape() -> Shape<Fx> {
-    Shape::Sphere {
-        radius: fx(2, 5),
-    }
+    Shape::Sphere { radius: fx(2, 5) }
 }
 
 /// The crate's body: dynamic, 200 kg/m³ (a 43 kg crate).

@@ -81,9 +81,9 @@ pub(crate) fn queue_commands(
             .rigid()
             .is_some_and(|r| r.position(handle).is_some());
         let queued = fixstep.input.players.iter().any(|p| {
-            p.commands.iter().any(|c| {
-                matches!(c, Command::Remove { target: Target::Body(h) } if *h == handle)
-            })
+            p.commands
+                .iter()
+                .any(|c| matches!(c, Command::Remove { target: Target::Body(h) } if *h == handle))
         });
         if alive && !queued {
             fixstep.push(
@@ -129,9 +129,9 @@ pub(crate) fn step_world(
 /// entities.
 pub(crate) fn sync_poses(
     fixstep: Option<Res<FixstepWorld>>,
-    mut bodies: Query<(&BodyLink, &mut FixedTransform, &mut RenderPose)>,
+    mut bodies: Query<(Ref<BodyLink>, &mut FixedTransform, &mut RenderPose)>,
     mut characters: Query<
-        (&CharacterLink, &mut FixedTransform, &mut RenderPose),
+        (Ref<CharacterLink>, &mut FixedTransform, &mut RenderPose),
         Without<BodyLink>,
     >,
 ) {
@@ -147,8 +147,7 @@ pub(crate) fn sync_poses(
             };
             pose.position = position;
             pose.orientation = orientation;
-            render.previous = render.current;
-            render.current = isometry(&pose);
+            advance(&mut render, isometry(&pose), link.is_added());
         }
     }
     if let Some(system) = fixstep.world.characters() {
@@ -157,10 +156,16 @@ pub(crate) fn sync_poses(
                 continue;
             };
             pose.position = character.position;
-            render.previous = render.current;
-            render.current = isometry(&pose);
+            advance(&mut render, isometry(&pose), link.is_added());
         }
     }
+}
+
+/// Makes `now` the current render pose; a newly linked entity has no pose before it, so
+/// it starts at rest there.
+fn advance(render: &mut RenderPose, now: Isometry3d, new: bool) {
+    render.previous = if new { now } else { render.current };
+    render.current = now;
 }
 
 /// After a rollback: forget the queued changes (they are made again as the frames are
@@ -201,4 +206,3 @@ pub(crate) fn isometry(pose: &FixedTransform) -> Isometry3d {
         Quat::from_xyzw(i as f32, j as f32, k as f32, w as f32),
     )
 }
-

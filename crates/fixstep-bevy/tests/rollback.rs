@@ -123,7 +123,11 @@ fn sync_test_with_spawns_and_despawns_passes_and_links_stay_true() {
     let world = app.world().resource::<FixstepWorld>().world();
     let rigid = world.rigid().unwrap();
     for link in &links {
-        assert!(rigid.position(link.0).is_some(), "{:?} is not alive", link.0);
+        assert!(
+            rigid.position(link.0).is_some(),
+            "{:?} is not alive",
+            link.0
+        );
     }
     let mut handles: Vec<_> = links.iter().map(|l| l.0).collect();
     handles.sort_unstable();
