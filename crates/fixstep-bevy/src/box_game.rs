@@ -216,7 +216,7 @@ pub fn cycle_crates(
     use bevy_ggrs::prelude::RollbackDespawnCommandExtension;
     let every = cycle.every.max(2);
     let tick = fixstep.world().tick();
-    if tick % every == 0 {
+    if tick.is_multiple_of(every) {
         let lane = i64::try_from((tick / every) % 5).unwrap_or(0) - 2;
         commands.spawn((
             Crate,
