@@ -338,7 +338,7 @@ pub struct PairOutcome {
     pub rollbacks: [u64; 2],
     /// Peer 0's replay of the `ticks` ticks (confirmed inputs only).
     pub replay: fixstep::replay::Replay,
-    /// App updates each peer ran.
+    /// Rounds run (each round two app updates, the peers taking turns of three).
     pub updates: u32,
 }
 
@@ -371,8 +371,8 @@ fn desync(app: &mut App) -> Option<String> {
 
 /// Runs two peers of the game in this thread, each on its own UDP socket bound to
 /// 127.0.0.1, bots on both sides, input delay 0 and prediction on, until both have
-/// confirmed `ticks` ticks; at most `max_updates` updates each and `time_limit` of wall
-/// time. A desync GGRS reports is an error.
+/// confirmed `ticks` ticks; at most `max_updates` rounds of two updates and `time_limit`
+/// of wall time. A desync GGRS reports is an error.
 pub fn run_loopback_pair(
     ticks: u64,
     bot_seed: u64,
@@ -396,11 +396,11 @@ pub fn run_loopback_pair(
     let start = std::time::Instant::now();
     let target = i64::try_from(ticks).unwrap_or(i64::MAX);
     for update in 1..=max_updates {
-        // The peers take turns in both orders (0 1, 1 0, 0 1, ...), so that each in turn
-        // runs a frame before the other's input for it has arrived: both predict, and both
-        // roll back when the prediction was wrong.
-        let order = if update % 2 == 0 { [1, 0] } else { [0, 1] };
-        for peer in order {
+        // The peers take turns of three updates each (0 0 0 1 1 1 0 ...): in its turn a
+        // peer runs up to three frames on predicted inputs of the other, and rolls back
+        // when a prediction was wrong.
+        for step in 0..2 {
+            let peer = usize::from((update * 2 + step) / 3 % 2 == 1);
             apps[peer].update();
             if let Some(event) = desync(&mut apps[peer]) {
                 return Err(format!("peer {peer}: {event}"));
