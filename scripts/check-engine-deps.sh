@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-tools='clap|plotters|tiny-skia|gif|png|ggrs|proptest|criterion|fixstep-cli|fixstep-viewer|fixstep-net|fixstep-bench|fixstep-scenes'
+tools='clap|plotters|tiny-skia|gif|png|ggrs|bevy|bevy_ggrs|proptest|criterion|fixstep-cli|fixstep-viewer|fixstep-net|fixstep-bench|fixstep-scenes|fixstep-bevy'
 leaked=$(cargo tree --locked -p fixstep -e normal --prefix none | awk '{print $1}' \
   | grep -xE "$tools" | sort -u || true)
 if [ -n "$leaked" ]; then
