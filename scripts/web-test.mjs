@@ -44,14 +44,22 @@ try {
   }
 
   // Characters and water drawn as meshes that follow the world.
+  // (pond's first drop falls at tick 30.)
   for (const name of ['parkour', 'pond']) {
-    await open(`scene=${name}&ticks=30`);
-    await until("document.body.dataset.done === '1'", 120, `${name} to reach tick 30`);
+    await open(`scene=${name}&ticks=40`);
+    await until("document.body.dataset.done === '1'", 120, `${name} to reach tick 40`);
     const [characters, water, moved] = await evaluate(`(() => {
-      const view = window.fixstepPage.view;
+      const { view, session } = window.fixstepPage;
       const water = view.water?.geometry.getAttribute('position');
-      let moved = view.characters.some((c) => c.position.lengthSq() > 0);
-      if (water) moved = Array.from({ length: water.count }, (_, i) => water.getY(i)).some((y) => y !== water.getY(0));
+      const centres = Array.from(session.characterPositions());
+      let moved = view.characters.length > 0 && view.characters.every((c, i) =>
+        c.position.toArray().every((x, k) => Math.abs(x - centres[3 * i + k]) < 1e-6));
+      if (water) {
+        const heights = session.waterHeights();
+        const level = view.water.userData.restLevel;
+        moved = heights.some((h) => h !== 0)
+          && heights.every((h, i) => Math.abs(water.getY(i) - (level + h)) < 1e-6);
+      }
       return [view.characters.length, water?.count ?? 0, moved];
     })()`);
     console.log(`drawn ${name} ${characters} ${water} ${moved}`);
@@ -63,7 +71,7 @@ try {
   // A page written by `fixstep render REPLAY --html`, opened as a file.
   if (livePage) {
     await page('Page.navigate', { url: `file://${livePage}` });
-    await until("document.body.dataset.done === '1'", 120, 'the written live page to play its replay');
+    await until("document.body?.dataset.done === '1'", 120, 'the written live page to play its replay');
     const [tick, checksum, verdict] = await evaluate(`[document.body.dataset.tick,
       document.getElementById('checksum').textContent, document.getElementById('status').dataset.verdict]`);
     console.log(`live-page ${tick} ${checksum} ${verdict}`);
