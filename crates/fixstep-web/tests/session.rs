@@ -149,7 +149,7 @@ fn characters_and_water_are_read_for_drawing() {
         assert!((0..3).all(|k| (f64::from(centre[k]) - p[k]).abs() < 1e-5));
     }
     let mesh = parkour.character_mesh(0).expect("a shape");
-    assert!(!mesh.indices.is_empty() && mesh.indices.len() % 3 == 0);
+    assert!(!mesh.indices.is_empty() && mesh.indices.len().is_multiple_of(3));
     assert!(parkour.character_mesh(2).is_none());
     assert!(parkour.water_grid().is_none() && parkour.water_heights().is_empty());
 
