@@ -4,9 +4,10 @@
 # live page web/index.html. Built for wasm32-unknown-unknown with the simd128 kernels
 # (RUSTFLAGS="-C target-feature=+simd128"); with --scalar also without them, into
 # web/pkg/scalar/ (the page loads it with ?kernels=scalar).
-# Adds the rustup target when missing, and installs wasm-bindgen-cli, exactly the version of
-# the wasm-bindgen crate in Cargo.lock, from source with cargo into target/tools when
-# missing (no prebuilt binary is downloaded).
+# Built in the `wasm` profile (Cargo.toml: small rather than fastest). Adds the rustup
+# target when missing, and installs wasm-bindgen-cli, exactly the version of the
+# wasm-bindgen crate in Cargo.lock, from source with cargo into target/tools when missing
+# (no prebuilt binary is downloaded).
 # Usage: scripts/web-build.sh [--scalar]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -39,10 +40,10 @@ if [[ ! -x $bindgen ]] || [[ $("$bindgen" --version) != "wasm-bindgen $version" 
 fi
 
 build() { # build OUT_DIR TARGET_SUBDIR [RUSTFLAGS]
-  RUSTFLAGS="${RUSTFLAGS:-} ${3:-}" cargo build --release --locked -p fixstep-web \
+  RUSTFLAGS="${RUSTFLAGS:-} ${3:-}" cargo build --profile wasm --locked -p fixstep-web \
     --target wasm32-unknown-unknown --target-dir "$target/$2"
   "$bindgen" --target web --remove-name-section --remove-producers-section --out-dir "$1" \
-    "$target/$2/wasm32-unknown-unknown/release/fixstep_web.wasm"
+    "$target/$2/wasm32-unknown-unknown/wasm/fixstep_web.wasm"
 }
 
 rm -rf web/pkg

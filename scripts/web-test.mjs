@@ -2,8 +2,11 @@
 // run with `node --experimental-websocket` on Node 20). Called by
 // scripts/web-test.sh, which serves the repository on BASE and checks what this prints.
 // Usage: node --experimental-websocket scripts/web-test.mjs CHROMIUM BASE OUT SCENES REPLAYS
+//   [LIVE_PAGE]
 //   SCENES: NAME:TICKS,...  REPLAYS: file names in replays/, comma-separated
-// Prints one line per check: `checksum NAME TICKS HEX`, `replay FILE VERDICT MS LINE`,
+//   LIVE_PAGE: a page written by `fixstep render REPLAY --html`, opened from file://
+// Prints one line per check: `checksum NAME TICKS HEX`, `drawn NAME CHARACTERS WATER_VERTICES`,
+// `live-page TICK HEX VERDICT`, `replay FILE VERDICT MS LINE`,
 // `bad-replay VERDICT MESSAGE`, `recorded PATH COMMANDS`, `first-frame MS`, `screenshot
 // PATH SHARE`, then `console-errors N` (and each error); exits 1 on a failure it can see.
 import { readdirSync, writeFileSync } from 'node:fs';
@@ -11,7 +14,7 @@ import { join } from 'node:path';
 import { inflateSync } from 'node:zlib';
 import { launch, sleep } from './cdp.mjs';
 
-const [chromium, base, out, scenesArg, replaysArg] = process.argv.slice(2);
+const [chromium, base, out, scenesArg, replaysArg, livePage] = process.argv.slice(2);
 const scenes = scenesArg.split(',').map((s) => s.split(':'));
 const replays = replaysArg ? replaysArg.split(',') : [];
 const downloads = join(out, 'downloads');
@@ -38,6 +41,41 @@ try {
       console.log(`screenshot ${path} ${share.toFixed(4)}`);
       if (share < 0.005) fail('the canvas is blank (under 0.5 % of it in colour)');
     }
+  }
+
+  // Characters and water drawn as meshes that follow the world.
+  // (pond's first drop falls at tick 30.)
+  for (const name of ['parkour', 'pond']) {
+    await open(`scene=${name}&ticks=40`);
+    await until("document.body.dataset.done === '1'", 120, `${name} to reach tick 40`);
+    const [characters, water, moved] = await evaluate(`(() => {
+      const { view, session } = window.fixstepPage;
+      const water = view.water?.geometry.getAttribute('position');
+      const centres = Array.from(session.characterPositions());
+      let moved = view.characters.length > 0 && view.characters.every((c, i) =>
+        c.position.toArray().every((x, k) => Math.abs(x - centres[3 * i + k]) < 1e-6));
+      if (water) {
+        const heights = session.waterHeights();
+        const level = view.water.userData.restLevel;
+        moved = heights.some((h) => h !== 0)
+          && heights.every((h, i) => Math.abs(water.getY(i) - (level + h)) < 1e-6);
+      }
+      return [view.characters.length, water?.count ?? 0, moved];
+    })()`);
+    console.log(`drawn ${name} ${characters} ${water} ${moved}`);
+    if (!moved || (name === 'parkour' ? characters !== 2 : water === 0)) {
+      fail(`${name}: its characters or its water are not drawn where the world has them`);
+    }
+  }
+
+  // A page written by `fixstep render REPLAY --html`, opened as a file.
+  if (livePage) {
+    await page('Page.navigate', { url: `file://${livePage}` });
+    await until("document.body?.dataset.done === '1'", 120, 'the written live page to play its replay');
+    const [tick, checksum, verdict] = await evaluate(`[document.body.dataset.tick,
+      document.getElementById('checksum').textContent, document.getElementById('status').dataset.verdict]`);
+    console.log(`live-page ${tick} ${checksum} ${verdict}`);
+    if (verdict !== 'ok') fail('the written live page did not end at the recorded checksum');
   }
 
   // Every replay dropped on the page, then bad bytes.

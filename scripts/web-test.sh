@@ -10,6 +10,9 @@
 #   - two clicks on the stack's boxes are recorded, and the replay the page downloads
 #     passes the native `fixstep verify`;
 #   - half a replay dropped on the page shows an error naming the section and the offset;
+#   - parkour's characters and pond's water are drawn, and move with the world;
+#   - the page `fixstep render pond.replay --html` writes, opened from file://, plays to the
+#     checksum `fixstep run pond` prints;
 #   - the console has no error and nothing is thrown uncaught.
 # Usage: scripts/web-test.sh [OUT_DIR]   (default: a temporary folder, removed on success)
 set -euo pipefail
@@ -42,7 +45,7 @@ for pair in "${scenes[@]}"; do
 done
 
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-python3 -m http.server "$port" --bind 127.0.0.1 >"$out/server.log" 2>&1 &
+python3 scripts/web-serve.py "$port" . >"$out/server.log" 2>&1 &
 server=$!
 trap 'kill "$server" 2>/dev/null || true' EXIT
 for _ in $(seq 50); do
@@ -51,9 +54,12 @@ for _ in $(seq 50); do
 done
 
 replays=$(cd replays && ls -- *.replay | paste -sd,)
+"$fixstep" render replays/pond.replay --ticks 60 --html "$out/pond.html" \
+  --web "http://127.0.0.1:$port/web/" >/dev/null
+live_native=$("$fixstep" run pond --ticks 60 | sed -n 's/^checksum: //p')
 status=0
 node --experimental-websocket --no-warnings scripts/web-test.mjs "$browser" \
-  "http://127.0.0.1:$port" "$out" "$(IFS=,; echo "${scenes[*]}")" "$replays" \
+  "http://127.0.0.1:$port" "$out" "$(IFS=,; echo "${scenes[*]}")" "$replays" "$out/pond.html" \
   | tee "$out/results.txt" || status=1
 
 for pair in "${scenes[@]}"; do
@@ -64,6 +70,11 @@ for pair in "${scenes[@]}"; do
     status=1
   fi
 done
+live=$(awk '$1 == "live-page" { print $3 }' "$out/results.txt")
+if [[ $live != "$live_native" ]]; then
+  echo "web-test: FAIL: the written live page ends at $live, native $live_native" >&2
+  status=1
+fi
 recorded=$(awk '$1 == "recorded" { print $2 }' "$out/results.txt")
 if [[ -z $recorded ]] || ! "$fixstep" verify "$recorded"; then
   echo "web-test: FAIL: the replay recorded in the page does not verify natively" >&2
@@ -75,4 +86,4 @@ if [[ $status -ne 0 ]]; then
 fi
 count=$(grep -c '^replay ' "$out/results.txt")
 [[ $# -ge 1 ]] || rm -rf "$out"
-echo "web-test: ok: checksums as native, $count replays verified, clicks recorded and verified natively ($((SECONDS - started)) s)"
+echo "web-test: ok: checksums as native, $count replays verified, clicks recorded and verified natively, characters and water drawn, the written live page as native ($((SECONDS - started)) s)"

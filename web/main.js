@@ -1,6 +1,8 @@
 // The live page: runs a built-in fixstep scene in wasm at its tick rate and draws it with
 // three.js. URL parameters: scene=NAME (default showcase), ticks=N (run N ticks, then stop
-// and show the checksum), kernels=scalar (load the package built without simd128).
+// and show the checksum), kernels=scalar (load the package built without simd128),
+// replay=URL (play that replay file instead of a scene). A page written by
+// `fixstep render REPLAY --html PAGE` plays the replay it embeds (window.fixstepReplay).
 // A dropped .replay file is verified; a click on a body pushes it (an ApplyImpulse command,
 // recorded); "download replay" saves the run for `fixstep verify`.
 import * as THREE from 'three';
@@ -17,7 +19,7 @@ const status = (text, verdict = '') => {
   $('status').textContent = text;
   $('status').dataset.verdict = verdict;
 };
-const stopAt = params.has('ticks') ? Number(params.get('ticks')) : Infinity;
+let stopAt = params.has('ticks') ? Number(params.get('ticks')) : Infinity;
 $('kernels').textContent = `wasm ${pkg.kernels()}`;
 
 const canvas = $('view');
@@ -70,12 +72,20 @@ function frame() {
   controls.update();
 }
 
+// The replay the page plays instead of a scene: {name, bytes} (null: a scene).
+let replay = null;
+
 function load(name) {
   view?.dispose();
   session?.free();
-  session = pkg.Session.builtin(name);
+  session = null;
+  session = replay ? pkg.Session.fromReplay(replay.bytes, replay.name) : pkg.Session.builtin(name);
+  if (replay) {
+    stopAt = Math.min(stopAt, session.recordedTicks);
+    status(`playing ${replay.name}: ${session.recordedTicks} ticks of ${session.name}`);
+  }
   view = new SceneView(session, world);
-  $('scene').value = name;
+  $('scene').value = session.name;
   frame();
   started = performance.now();
   done = 0;
@@ -111,7 +121,16 @@ function animate(now) {
       view.update();
       show();
     }
-    if (session.tick >= stopAt) document.body.dataset.done = '1';
+    if (session.tick >= stopAt && !document.body.dataset.done) {
+      document.body.dataset.done = '1';
+      if (replay && session.tick === session.recordedTicks) {
+        const same = session.checksum() === session.recordedChecksum;
+        status(same
+          ? `${replay.name}: ${session.tick} ticks, checksum ${session.checksum()} as recorded`
+          : `${replay.name}: checksum ${session.checksum()} at tick ${session.tick}, recorded ${session.recordedChecksum}`,
+        same ? 'ok' : 'desync');
+      }
+    }
   } else if (session) {
     done = Math.floor(((now - started) / 1000) * session.tickRate);
   }
@@ -168,6 +187,8 @@ window.addEventListener('drop', (e) => {
 });
 
 $('scene').addEventListener('change', () => {
+  replay = null;
+  stopAt = Infinity;
   const url = new URL(location.href);
   url.searchParams.set('scene', $('scene').value);
   history.replaceState(null, '', url);
@@ -177,7 +198,10 @@ $('pause').addEventListener('click', () => {
   paused = !paused;
   $('pause').textContent = paused ? 'play' : 'pause';
 });
-$('restart').addEventListener('click', () => load(session.name));
+$('restart').addEventListener('click', () => {
+  delete document.body.dataset.done;
+  load(session.name);
+});
 $('download').addEventListener('click', () => {
   try {
     const bytes = session.replay();
@@ -206,6 +230,15 @@ window.fixstepPage = {
 };
 
 try {
+  if (window.fixstepReplay) {
+    const { name, base64 } = window.fixstepReplay;
+    replay = { name, bytes: Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)) };
+  } else if (params.has('replay')) {
+    const url = new URL(params.get('replay'), location.href);
+    const response = await fetch(url);
+    if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+    replay = { name: url.pathname.split('/').pop(), bytes: new Uint8Array(await response.arrayBuffer()) };
+  }
   load(params.get('scene') ?? 'showcase');
 } catch (error) {
   status(`error: ${error.message}`, 'error');

@@ -1,5 +1,6 @@
-// Draws a fixstep-web Session with three.js: rigid bodies as shaded meshes with shadows,
-// soft bodies as their edges, fluid and particles as points. Reads the session's typed
+// Draws a fixstep-web Session with three.js: rigid bodies and characters as shaded meshes
+// with shadows, the water surface as a shaded height mesh, soft bodies as their edges, fluid
+// and particles as points. Reads the session's typed
 // arrays (views into wasm memory) once per frame and copies nothing per body.
 import * as THREE from 'three';
 
@@ -16,6 +17,8 @@ export class SceneView {
     this.bodies = [];
     this.handles = new Uint32Array(0);
     this.buildSoft();
+    this.buildCharacters();
+    this.buildWater();
     this.fluid = this.points(0x3d8bff, 0.05);
     this.particles = this.points(0xffb347, 0.04);
     this.update();
@@ -36,6 +39,63 @@ export class SceneView {
     this.soft = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: 0xf0d060 }));
     this.soft.frustumCulled = false;
     this.group.add(this.soft);
+  }
+
+  // One mesh per character (they never rotate), moved by update().
+  buildCharacters() {
+    this.characters = [];
+    for (let i = 0; i < this.session.characterCount; i++) {
+      const body = this.session.characterMesh(i);
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', new THREE.BufferAttribute(body.positions, 3));
+      geometry.setIndex(new THREE.BufferAttribute(body.indices, 1));
+      geometry.computeVertexNormals();
+      body.free();
+      const material = new THREE.MeshStandardMaterial({ color: i % 2 ? 0x17bebb : 0xffc914, roughness: 0.5 });
+      const mesh = new THREE.Mesh(geometry, material);
+      mesh.castShadow = true;
+      mesh.receiveShadow = true;
+      mesh.userData.character = i;
+      this.group.add(mesh);
+      this.characters.push(mesh);
+    }
+  }
+
+  // The water surface: one vertex per cell centre, two triangles per square of four
+  // neighbouring centres; update() sets the heights.
+  buildWater() {
+    const grid = this.session.waterGrid();
+    if (!grid) { this.water = null; return; }
+    const [columns, rows, size, ox, oy, oz] = grid;
+    const positions = new Float32Array(columns * rows * 3);
+    for (let k = 0; k < rows; k++) {
+      for (let i = 0; i < columns; i++) {
+        const v = 3 * (i + columns * k);
+        positions[v] = ox + (i + 0.5) * size;
+        positions[v + 1] = oy;
+        positions[v + 2] = oz + (k + 0.5) * size;
+      }
+    }
+    const indices = [];
+    for (let k = 0; k + 1 < rows; k++) {
+      for (let i = 0; i + 1 < columns; i++) {
+        const a = i + columns * k, b = a + 1, c = a + columns, d = c + 1;
+        indices.push(a, c, b, b, c, d);
+      }
+    }
+    const geometry = new THREE.BufferGeometry();
+    const attribute = new THREE.BufferAttribute(positions, 3);
+    attribute.setUsage(THREE.DynamicDrawUsage);
+    geometry.setAttribute('position', attribute);
+    geometry.setIndex(indices);
+    const material = new THREE.MeshStandardMaterial({
+      color: 0x2f7fd8, roughness: 0.2, metalness: 0.1, transparent: true, opacity: 0.78,
+      side: THREE.DoubleSide,
+    });
+    this.water = new THREE.Mesh(geometry, material);
+    this.water.receiveShadow = true;
+    this.water.userData.restLevel = oy;
+    this.group.add(this.water);
   }
 
   points(colour, size) {
@@ -104,6 +164,18 @@ export class SceneView {
       mesh.position.set(poses[o], poses[o + 1], poses[o + 2]);
       mesh.quaternion.set(poses[o + 3], poses[o + 4], poses[o + 5], poses[o + 6]);
     }
+    const centres = this.session.characterPositions();
+    for (let i = 0; i < this.characters.length; i++) {
+      this.characters[i].position.set(centres[3 * i], centres[3 * i + 1], centres[3 * i + 2]);
+    }
+    if (this.water) {
+      const heights = this.session.waterHeights();
+      const attribute = this.water.geometry.getAttribute('position');
+      const level = this.water.userData.restLevel;
+      for (let c = 0; c < heights.length; c++) attribute.array[3 * c + 1] = level + heights[c];
+      attribute.needsUpdate = true;
+      this.water.geometry.computeVertexNormals();
+    }
     if (this.soft) {
       const attribute = this.soft.geometry.getAttribute('position');
       attribute.array.set(this.session.softPositions());
@@ -124,6 +196,9 @@ export class SceneView {
     const box = new THREE.Box3();
     for (const mesh of this.bodies) {
       if (mesh.userData.dynamic) box.expandByObject(mesh);
+    }
+    for (const mesh of [...this.characters, this.water]) {
+      if (mesh) box.expandByObject(mesh);
     }
     for (const o of [this.soft, this.fluid, this.particles]) {
       if (o && o.geometry.drawRange.count !== 0) {

@@ -18,6 +18,7 @@ mod cli_output_clashes;
 mod cli_query;
 mod cli_record_stream;
 mod cli_render_folder;
+mod cli_render_html;
 mod cli_run_outputs;
 mod cli_scene_files;
 mod cli_threads;

@@ -197,6 +197,16 @@ pub struct RenderArgs {
     /// results are the same at any count.
     #[arg(long, value_name = "N", value_parser = fixstep::parallel::parse_threads)]
     pub threads: Option<usize>,
+    /// Instead of pictures, write the live 3D player (the page of `scripts/web.sh`, in
+    /// WebAssembly) playing the run, as one page PAGE.html: a replay's bytes, or a scene's
+    /// run recorded, embedded in it. It loads the player from --web.
+    #[arg(long, value_name = "PAGE.html",
+          conflicts_with_all = ["out", "every", "view", "size", "flat"])]
+    pub html: Option<PathBuf>,
+    /// With --html: the address of the live page's folder, ending in `/` (default
+    /// `http://127.0.0.1:8000/`, where `scripts/web.sh` serves it).
+    #[arg(long, value_name = "URL", requires = "html")]
+    pub web: Option<String>,
 }
 
 /// Arguments of `fixstep query`. The query's values are text here and parsed by

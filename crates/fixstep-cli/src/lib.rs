@@ -12,6 +12,7 @@
 //! fixstep rerecord FILE.replay...
 //! fixstep render REPLAY|SCENE [--ticks N] [--out DIR] [--every K]
 //!                            [--view iso|front|top] [--size WxH] [--flat]
+//! fixstep render REPLAY|SCENE --html PAGE.html [--ticks N] [--web URL]
 //! fixstep query SCENE|FILE.ron|FILE.replay [--tick N] [--max D] [--mask M]
 //!              (--ray OX,OY,OZ,DX,DY,DZ | --cast SHAPE --from X,Y,Z --dir DX,DY,DZ
 //!               | --overlap SHAPE --at X,Y,Z)
@@ -41,6 +42,7 @@ mod csv_file;
 mod events_csv;
 mod file_identity;
 mod info;
+mod live_page;
 mod metrics_csv;
 mod output;
 mod output_file;
@@ -118,6 +120,7 @@ pub fn read_command_line(args: &[OsString]) -> Result<CommandLine, String> {
     };
     let checked = match &cli.command {
         Some(Command::Run(args)) => run::refuse_clashes(args),
+        Some(Command::Render(args)) => live_page::refuse_clashes(args),
         #[cfg(feature = "net")]
         Some(Command::Peer(args)) => peer::refuse_clashes(args),
         _ => Ok(()),
@@ -170,6 +173,7 @@ pub fn main_with_args(args: impl IntoIterator<Item = impl Into<OsString> + Clone
         Some(Command::Verify { files, .. }) => verify::verify_files(&files),
         Some(Command::Info { file }) => info::info(&file),
         Some(Command::Rerecord { files }) => rerecord::rerecord_files(&files),
+        Some(Command::Render(args)) if args.html.is_some() => live_page::write_live_page(&args),
         Some(Command::Render(args)) => render::render(&args),
         Some(Command::Query(args)) => query::query(&args),
         #[cfg(feature = "net")]

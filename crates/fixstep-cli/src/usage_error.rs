@@ -21,6 +21,19 @@ pub fn usage_error_line(error: &clap::Error, args: &[std::ffi::OsString]) -> Str
     } else {
         format!("error: {first}")
     };
+    // A first line ending in `:` (such as a missing required argument's) is followed by
+    // what it names, up to the usage block.
+    if line.ends_with(':') {
+        let named: Vec<&str> = rendered
+            .lines()
+            .skip(1)
+            .map(str::trim)
+            .take_while(|l| !l.is_empty() && !l.starts_with("Usage:"))
+            .collect();
+        if !named.is_empty() {
+            line = format!("{line} {}", named.join(", "));
+        }
+    }
     for tip in lines.filter(|l| l.starts_with("tip:")) {
         line += &format!(" ({tip})");
     }

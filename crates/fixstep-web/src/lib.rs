@@ -146,6 +146,31 @@ impl Session {
             .map_err(|e| JsError::new(&e))
     }
 
+    /// The replay file `bytes` at tick 0, fed its recorded inputs (stepped to its last tick,
+    /// its checksum is the replay's final one); `origin` names it in errors, which give the
+    /// section and the byte offset of bad bytes.
+    #[wasm_bindgen(js_name = fromReplay)]
+    pub fn from_replay(bytes: &[u8], origin: &str) -> Result<Session, JsError> {
+        session::Session::from_replay(bytes, origin)
+            .map(Session)
+            .map_err(|e| JsError::new(&e))
+    }
+
+    /// The ticks of the replay this session plays (`fromReplay`); undefined for a scene.
+    #[wasm_bindgen(getter, js_name = recordedTicks)]
+    pub fn recorded_ticks(&self) -> Option<f64> {
+        self.0.recorded().map(|(ticks, _)| ticks as f64)
+    }
+
+    /// The final checksum the replay this session plays recorded, 16 hex digits;
+    /// undefined for a scene.
+    #[wasm_bindgen(getter, js_name = recordedChecksum)]
+    pub fn recorded_checksum(&self) -> Option<String> {
+        self.0
+            .recorded()
+            .map(|(_, checksum)| fixstep::world::checksum::hex(checksum))
+    }
+
     /// The scene's name.
     #[wasm_bindgen(getter)]
     pub fn name(&self) -> String {
@@ -303,5 +328,54 @@ impl Session {
     pub fn particle_positions(&mut self) -> Float32Array {
         // SAFETY: as in `body_poses`.
         unsafe { Float32Array::view(self.0.particle_positions()) }
+    }
+
+    /// How many characters the world has.
+    #[wasm_bindgen(getter, js_name = characterCount)]
+    pub fn character_count(&self) -> u32 {
+        self.0.character_count() as u32
+    }
+
+    /// The characters' centres, x, y, z (m) each. A view into the module's memory.
+    #[wasm_bindgen(js_name = characterPositions)]
+    pub fn character_positions(&mut self) -> Float32Array {
+        // SAFETY: as in `body_poses`.
+        unsafe { Float32Array::view(self.0.character_positions()) }
+    }
+
+    /// Character number `i`'s shape as triangles around its centre (kind 1: it moves as
+    /// told, never rotating).
+    #[wasm_bindgen(js_name = characterMesh)]
+    pub fn character_mesh(&self, i: u32) -> Option<BodyMesh> {
+        self.0.character_mesh(i as usize).map(|mesh| BodyMesh {
+            mesh,
+            kind: 1,
+            sleeping: false,
+        })
+    }
+
+    /// The water surface's grid, `[columns, rows, cell size (m), origin x, y, z (m)]`;
+    /// undefined without water. Cell (i, k)'s centre is at origin + ((i + ½)·size, height,
+    /// (k + ½)·size).
+    #[wasm_bindgen(js_name = waterGrid)]
+    pub fn water_grid(&self) -> Option<Vec<f64>> {
+        self.0.water_grid().map(|g| {
+            vec![
+                f64::from(g.columns),
+                f64::from(g.rows),
+                g.cell_size,
+                g.origin[0],
+                g.origin[1],
+                g.origin[2],
+            ]
+        })
+    }
+
+    /// The water surface's height above the grid's origin (m) at each cell centre, row by
+    /// row (x fastest). A view into the module's memory.
+    #[wasm_bindgen(js_name = waterHeights)]
+    pub fn water_heights(&mut self) -> Float32Array {
+        // SAFETY: as in `body_poses`.
+        unsafe { Float32Array::view(self.0.water_heights()) }
     }
 }

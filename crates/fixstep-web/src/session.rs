@@ -4,7 +4,7 @@
 use core::mem;
 
 use fixstep::math::{Fx, Real, Vec3};
-use fixstep::replay::{DEFAULT_CHECKSUM_EVERY, Recorder, scene_id};
+use fixstep::replay::{DEFAULT_CHECKSUM_EVERY, Recorder, Replay, scene_id};
 use fixstep::rigid::BodyKind;
 use fixstep::scene::{Scene, Simulation, parse_scene};
 use fixstep::world::checksum::hex;
@@ -37,6 +37,22 @@ pub struct Session {
     layout: u32,
     /// The floats the last position view shows.
     buffer: Vec<f32>,
+    /// The ticks and final checksum of the replay the session plays, if it plays one.
+    recorded: Option<(u64, u64)>,
+}
+
+/// The water surface's grid: `columns` × `rows` cells of `cell_size` (m), the first cell's
+/// corner at `origin` (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WaterGrid {
+    /// Cells along x.
+    pub columns: u32,
+    /// Cells along z.
+    pub rows: u32,
+    /// A cell's side, m.
+    pub cell_size: f64,
+    /// The grid's corner, m; heights are measured from its y.
+    pub origin: [f64; 3],
 }
 
 impl Session {
@@ -58,6 +74,22 @@ impl Session {
     /// canonical order, without players or ticks that give no command), so that the
     /// checksum after N ticks is the one `fixstep run NAME --ticks N` prints.
     pub fn new(scene: Scene<Fx>) -> Result<Self, String> {
+        let script = scene.script.clone();
+        Self::with_inputs(scene, script)
+    }
+
+    /// The replay file `bytes` at tick 0, fed its recorded inputs: stepped to its last tick,
+    /// its checksum is the replay's final one. Errors name `origin`, the section and the
+    /// byte offset.
+    pub fn from_replay(bytes: &[u8], origin: &str) -> Result<Self, String> {
+        let replay = Replay::from_bytes(bytes, origin).map_err(|e| e.to_string())?;
+        let mut session = Self::with_inputs(replay.scene().clone(), replay.inputs().to_vec())?;
+        session.recorded = Some((replay.ticks(), replay.final_checksum()));
+        Ok(session)
+    }
+
+    /// `scene` at tick 0, fed `script` (the scene's script or a replay's inputs).
+    fn with_inputs(scene: Scene<Fx>, mut script: Vec<TickInput<Fx>>) -> Result<Self, String> {
         let name = scene.name.clone();
         let world = scene.build().map_err(|e| format!("{name}: {e}"))?;
         if let Some(particles) = world.particles() {
@@ -67,7 +99,6 @@ impl Session {
         }
         let scene_id =
             scene_id(&scene).map_err(|e| format!("{name}: cannot encode the scene: {e}"))?;
-        let mut script = scene.script.clone();
         for input in &mut script {
             input.canonicalize();
             input.players.retain(|p| !p.commands.is_empty());
@@ -83,7 +114,14 @@ impl Session {
             handles: Vec::new(),
             layout: 0,
             buffer: Vec::new(),
+            recorded: None,
         })
+    }
+
+    /// The ticks and the final checksum of the replay this session plays
+    /// ([`Session::from_replay`]); `None` for a scene.
+    pub fn recorded(&self) -> Option<(u64, u64)> {
+        self.recorded
     }
 
     /// The scene.
@@ -325,6 +363,55 @@ impl Session {
             for (p, _) in live {
                 self.buffer.extend(p.to_f64().map(|c| c as f32));
             }
+        }
+        &self.buffer
+    }
+}
+
+impl Session {
+    /// The characters' centres: x, y, z (m) each, in character order.
+    pub fn character_positions(&mut self) -> &[f32] {
+        self.buffer.clear();
+        if let Some(characters) = self.simulation.world().characters() {
+            for c in characters.characters() {
+                self.buffer.extend(c.position.to_f64().map(|x| x as f32));
+            }
+        }
+        &self.buffer
+    }
+
+    /// Character number `i`'s shape as triangles around its centre (characters never
+    /// rotate).
+    pub fn character_mesh(&self, i: usize) -> Option<TriangleMesh> {
+        let c = self.world().characters()?.characters().get(i)?;
+        Some(shape_mesh(&c.shape))
+    }
+
+    /// How many characters the world has.
+    pub fn character_count(&self) -> usize {
+        self.world()
+            .characters()
+            .map_or(0, |characters| characters.characters().len())
+    }
+
+    /// The water surface's grid, if the world has water.
+    pub fn water_grid(&self) -> Option<WaterGrid> {
+        let s = self.world().water()?.settings();
+        Some(WaterGrid {
+            columns: s.columns,
+            rows: s.rows,
+            cell_size: s.cell_size.to_f64(),
+            origin: s.origin.to_f64(),
+        })
+    }
+
+    /// The water surface's height above the grid's origin (m) at each cell centre, row by
+    /// row (x fastest); empty without water.
+    pub fn water_heights(&mut self) -> &[f32] {
+        self.buffer.clear();
+        if let Some(water) = self.simulation.world().water() {
+            self.buffer
+                .extend(water.heights().iter().map(|h| h.to_f64() as f32));
         }
         &self.buffer
     }

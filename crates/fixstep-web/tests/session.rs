@@ -117,3 +117,47 @@ fn a_committed_replay_verifies_and_bad_bytes_name_the_section_and_offset() {
     let garbage = verify_bytes(b"not a replay at all", "junk.replay").expect_err("junk");
     assert!(garbage.contains("not a fixstep replay"), "{garbage}");
 }
+
+#[test]
+fn a_replay_played_in_a_session_ends_at_its_final_checksum() {
+    let bytes = committed("parkour.replay");
+    let replay = Replay::from_bytes(&bytes, "parkour.replay").expect("decodes");
+    let mut session = Session::from_replay(&bytes, "parkour.replay").expect("loads");
+    assert_eq!(
+        session.recorded(),
+        Some((replay.ticks(), replay.final_checksum()))
+    );
+    for _ in 0..replay.ticks() {
+        session.step();
+    }
+    assert_eq!(session.checksum(), hex(replay.final_checksum()));
+    let cut = Session::from_replay(&bytes[..bytes.len() / 2], "cut.replay").expect_err("cut");
+    assert!(cut.starts_with("cut.replay: truncated in the "), "{cut}");
+    assert_eq!(Session::builtin("parkour").expect("loads").recorded(), None);
+}
+
+#[test]
+fn characters_and_water_are_read_for_drawing() {
+    let mut parkour = Session::builtin("parkour").expect("loads");
+    assert_eq!(parkour.character_count(), 2);
+    parkour.step();
+    let centres = parkour.character_positions().to_vec();
+    assert_eq!(centres.len(), 6);
+    let world = parkour.world().characters().expect("characters");
+    for (c, centre) in world.characters().iter().zip(centres.chunks(3)) {
+        let p = c.position.to_f64();
+        assert!((0..3).all(|k| (f64::from(centre[k]) - p[k]).abs() < 1e-5));
+    }
+    let mesh = parkour.character_mesh(0).expect("a shape");
+    assert!(!mesh.indices.is_empty() && mesh.indices.len().is_multiple_of(3));
+    assert!(parkour.character_mesh(2).is_none());
+    assert!(parkour.water_grid().is_none() && parkour.water_heights().is_empty());
+
+    let mut pond = Session::builtin("pond").expect("loads");
+    let grid = pond.water_grid().expect("water");
+    assert_eq!(
+        pond.water_heights().len(),
+        (grid.columns * grid.rows) as usize
+    );
+    assert_eq!(pond.character_count(), 0);
+}
