@@ -4,7 +4,8 @@
 # live page web/index.html. Built for wasm32-unknown-unknown with the simd128 kernels
 # (RUSTFLAGS="-C target-feature=+simd128"); with --scalar also without them, into
 # web/pkg/scalar/ (the page loads it with ?kernels=scalar).
-# Built in the `wasm` profile (Cargo.toml: small rather than fastest). Adds the rustup
+# Built in the `wasm` profile (Cargo.toml: small rather than fastest), or the cargo profile
+# WASM_PROFILE names (the same bits in every profile; `release` builds faster). Adds the rustup
 # target when missing, and installs wasm-bindgen-cli, exactly the version of the
 # wasm-bindgen crate in Cargo.lock, from source with cargo into target/tools when missing
 # (no prebuilt binary is downloaded).
@@ -12,12 +13,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 target=${CARGO_TARGET_DIR:-target}
+profile=${WASM_PROFILE:-wasm}
 
 scalar=0
 for a in "$@"; do
   case $a in
     --scalar) scalar=1 ;;
-    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "error: unknown argument \`$a\` (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -40,10 +42,10 @@ if [[ ! -x $bindgen ]] || [[ $("$bindgen" --version) != "wasm-bindgen $version" 
 fi
 
 build() { # build OUT_DIR TARGET_SUBDIR [RUSTFLAGS]
-  RUSTFLAGS="${RUSTFLAGS:-} ${3:-}" cargo build --profile wasm --locked -p fixstep-web \
+  RUSTFLAGS="${RUSTFLAGS:-} ${3:-}" cargo build --profile "$profile" --locked -p fixstep-web \
     --target wasm32-unknown-unknown --target-dir "$target/$2"
   "$bindgen" --target web --remove-name-section --remove-producers-section --out-dir "$1" \
-    "$target/$2/wasm32-unknown-unknown/wasm/fixstep_web.wasm"
+    "$target/$2/wasm32-unknown-unknown/$profile/fixstep_web.wasm"
 }
 
 rm -rf web/pkg
