@@ -89,6 +89,7 @@ impl<R: Real> RigidSystem<R> {
             solver.integrate_velocities(bodies, h, gravity);
             if has_joints {
                 if substep > 0 {
+                    solver.refresh_inverse_inertias(bodies);
                     solver.update_joints(joints, bodies, h);
                 }
                 solver.warm_start_joints();
