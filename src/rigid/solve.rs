@@ -69,6 +69,7 @@ impl<R: Real> RigidSystem<R> {
         let has_joints = !joints.is_empty();
         if has_joints {
             solver.prepare_joints(joints, bodies, h);
+            solver.list_spinning(bodies);
         }
         // Joints: `iterations` passes each time, stiff to a fifth of the substep rate per
         // iteration (measured: beyond about a third per iteration a hanging chain of 20 links
@@ -86,9 +87,14 @@ impl<R: Real> RigidSystem<R> {
         };
 
         for substep in 0..substeps {
+            if has_joints {
+                solver.begin_spinning(bodies);
+            }
             solver.integrate_velocities(bodies, h, gravity);
             if has_joints {
+                solver.record_spinning(h);
                 if substep > 0 {
+                    solver.refresh_inverse_inertias(bodies);
                     solver.update_joints(joints, bodies, h);
                 }
                 solver.warm_start_joints();
@@ -109,6 +115,7 @@ impl<R: Real> RigidSystem<R> {
                 solver.advance_joint_errors(h);
             }
             for _ in 0..joint_iterations {
+                solver.correct_spinning(h);
                 solver.solve_joints(&joint_relax);
             }
             let (blocks, solver_bodies) = solver.blocks_and_bodies();

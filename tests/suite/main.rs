@@ -51,6 +51,7 @@ mod rigid_events;
 mod rigid_friction;
 mod rigid_gyroscopic;
 mod rigid_hull;
+mod rigid_joint_energy;
 mod rigid_joints;
 mod rigid_mass;
 mod rigid_mesh;

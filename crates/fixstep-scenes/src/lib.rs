@@ -17,6 +17,7 @@ pub mod particles;
 pub mod pond;
 pub mod rigid;
 pub mod soft;
+pub mod swings;
 pub mod terrain;
 
 use fixstep::fluid::FluidSolver;
@@ -24,7 +25,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 30] = [
+pub const BUILTIN_SCENES: [(&str, &str); 32] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -105,6 +106,14 @@ pub const BUILTIN_SCENES: [(&str, &str); 30] = [
     (
         "ragdolls",
         "four ragdolls (capsules on cone-twist and hinge joints with limits) tumbling down stairs",
+    ),
+    (
+        "top",
+        "a heavy top on a ball joint, spinning at 60 rad/s and precessing steadily at 30 degrees of tilt",
+    ),
+    (
+        "wrecking_ball",
+        "a 4 t steel ball on a rope of six rods swings from 60 degrees into a wall of 12 boxes",
     ),
     (
         "falling_hinges",
@@ -258,6 +267,16 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             let (bodies, dolls) = joints::ragdolls(4);
             (scene.rigid, scene.joints) = (Some(bodies), Some(dolls));
             scene.ticks = 600;
+        }
+        "top" => {
+            let (bodies, top) = swings::top(-scene.gravity.y);
+            (scene.rigid, scene.joints) = (Some(bodies), Some(top));
+            scene.ticks = 300;
+        }
+        "wrecking_ball" => {
+            let (bodies, rope) = swings::wrecking_ball();
+            (scene.rigid, scene.joints) = (Some(bodies), Some(rope));
+            scene.ticks = 240;
         }
         "falling_hinges" => {
             let (bodies, hinges) = joints::falling_hinges(4, 30);

@@ -11,6 +11,11 @@
 //! impulse λ along the row changes the velocities by
 //! v_a −= u λ/m_a, ω_a −= I_a⁻¹ j_a λ, v_b += u λ/m_b, ω_b += I_b⁻¹ j_b λ, and its effective
 //! mass is 1/k with k = |u|²(1/m_a + 1/m_b) + j_a·I_a⁻¹ j_a + j_b·I_b⁻¹ j_b.
+//!
+//! A row may carry a drift ½ h κ (same units as Ċ), its error's second-order motion over
+//! the substep h, C(t + h) = C + h Ċ + ½ h² κ: the solver then drives Ċ + ½ h κ where a
+//! plain row drives Ċ, so the error is met at the end of the substep to second order (see
+//! [`super::joint_point`] for why; the distance rows of rods, ropes and springs carry one).
 
 use super::body::SolverBody;
 use super::softness::Softness;
@@ -83,6 +88,9 @@ pub(crate) struct JointRow<R: Real> {
     pub slot: u8,
     /// Accumulated impulse this step, N·s or N·m·s.
     pub impulse: R,
+    /// ½ h κ, the error's second-order drift over the substep (m/s or rad/s; zero for rows
+    /// without one), from the velocities when the row was built.
+    pub drift: R,
 }
 
 impl<R: Real> JointRow<R> {
@@ -108,6 +116,7 @@ impl<R: Real> JointRow<R> {
             role,
             slot,
             impulse: R::ZERO,
+            drift: R::ZERO,
         }
     }
 
@@ -131,10 +140,11 @@ impl<R: Real> JointRow<R> {
         if k > R::ZERO { k.recip() } else { R::ZERO }
     }
 
-    /// Ċ for the bodies' current velocities.
+    /// Ċ + ½ h κ for the bodies' current velocities (Ċ alone for a row without drift).
     pub fn velocity(&self, ba: &SolverBody<R>, bb: &SolverBody<R>) -> R {
         (bb.v - ba.v).dot_fused(self.linear) + bb.w.dot_fused(self.angular_b)
             - ba.w.dot_fused(self.angular_a)
+            + self.drift
     }
 
     /// Applies impulse `lambda` along the row (A loses, B gains).
@@ -152,7 +162,7 @@ impl<R: Real> JointRow<R> {
         }
     }
 
-    /// One sequential-impulse iteration: λ = −m·s_m·(Ċ + bias) − s_i·λ_acc, accumulated and
+    /// One sequential-impulse iteration: λ = −m·s_m·(Ċ + ½ h κ + bias) − s_i·λ_acc, accumulated and
     /// clamped as the row's [`RowRole`] says, the change applied to the bodies.
     pub fn solve(&mut self, ba: &mut SolverBody<R>, bb: &mut SolverBody<R>, pass: &JointPass<R>) {
         let cdot = self.velocity(ba, bb);

@@ -80,6 +80,7 @@ impl<'a, R: Real> JointRows<'a, R> {
             error: pose.d,
             mass: Mat3::ZERO,
             impulse: Vec3::ZERO,
+            drift: PointBlock::drift_of(pose.r_a, pose.r_b, ba, bb, inputs.h),
         };
         match *inputs.kind {
             JointKind::Ball => out.point = Some(point()),
@@ -218,7 +219,11 @@ impl<'a, R: Real> JointRows<'a, R> {
                     _ => (u, distance - inputs.length, RowRole::Spring(inputs.spring)),
                 };
                 let angular = (pose.r_a.cross(direction), pose.r_b.cross(direction));
-                out.push(JointRow::new(direction, angular, error, role, 0, bodies));
+                let mut row = JointRow::new(direction, angular, error, role, 0, bodies);
+                // The drift of |d|, along u; the rope's row points along −u.
+                let drift = distance_drift(pose, u, distance, (ba, bb), inputs.h);
+                row.drift = if direction == u { drift } else { -drift };
+                out.push(row);
             }
         }
         out
@@ -282,6 +287,33 @@ impl<'a, R: Real> JointRows<'a, R> {
             bodies,
         ));
     }
+}
+
+/// ½ h κ for the distance |d| between two anchors (m/s; the rows of rods, ropes and
+/// springs), over a substep of `h` seconds: with ḋ the anchors' relative velocity and
+/// d̈ = ω_b × (ω_b × r_b) − ω_a × (ω_a × r_a) their centripetal acceleration,
+///
+/// ```text
+/// κ = d²|d|/dt² at fixed velocities = u·d̈ + (|ḋ|² − (u·ḋ)²) / |d|     (m/s²)
+/// ```
+///
+/// the second term being the distance's growth as the anchors pass each other sideways (a
+/// pendulum's bob moving along its circle). Zero at zero distance, where u is undefined.
+fn distance_drift<R: Real>(
+    pose: &JointPose<R>,
+    u: Vec3<R>,
+    distance: R,
+    (ba, bb): (&SolverBody<R>, &SolverBody<R>),
+    h: R,
+) -> R {
+    if distance <= R::ZERO {
+        return R::ZERO;
+    }
+    let d_dot = (bb.v + bb.w.cross(pose.r_b)) - (ba.v + ba.w.cross(pose.r_a));
+    let along = d_dot.dot_fused(u);
+    let sideways = d_dot.dot_fused(d_dot) - along * along;
+    let centripetal = PointBlock::drift_of(pose.r_a, pose.r_b, ba, bb, h);
+    centripetal.dot_fused(u) + sideways / distance * (h * R::HALF)
 }
 
 /// A slider's linear row along unit `u` fixed in A (see the [module](self) documentation).

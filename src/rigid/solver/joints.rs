@@ -172,16 +172,15 @@ impl<R: Real> Solver<R> {
     }
 
     /// Moves every joint constraint's position errors on by the substep just integrated:
-    /// C ← C + h Ċ with the velocities the positions were integrated with (h in s), to first
-    /// order the errors at the new positions, so that the relax pass's limits stop exactly
+    /// C ← C + h (Ċ + ½ h κ) with the velocities the positions were integrated with (h in s;
+    /// κ the rows' drift, zero for most), to second order the errors at the new positions, so that the relax pass's limits stop exactly
     /// at the limit instead of letting one more substep of motion through (contacts do the
     /// same with their separations).
     pub fn advance_joint_errors(&mut self, h: R) {
         for c in &mut self.joints {
             let (ba, bb) = (&self.bodies[c.a as usize], &self.bodies[c.b as usize]);
             if let Some(point) = &mut c.point {
-                let cdot = (bb.v + bb.w.cross(point.r_b)) - (ba.v + ba.w.cross(point.r_a));
-                point.error += cdot * h;
+                point.error += point.velocity(ba, bb) * h;
             }
             for row in &mut self.joint_rows[c.first as usize..(c.first + c.count) as usize] {
                 row.error += row.velocity(ba, bb) * h;

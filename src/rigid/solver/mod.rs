@@ -11,7 +11,9 @@
 //!    **update joints** (their Jacobians and errors from the current poses), **warm start**
 //!    (apply the accumulated impulses), **solve** (with the soft bias), **integrate
 //!    positions**, **relax** (solve again without bias, removing the velocity the bias
-//!    added, so pushing apart injects no energy); joints before contacts in every pass;
+//!    added, so pushing apart injects no energy; jointed bodies' gyroscopic terms are
+//!    solved with their joints there, [`joint_gyroscopic`]); joints before contacts in
+//!    every pass;
 //! 3. **restitution**;
 //! 4. **store impulses** into the persistent contacts and joints for the next step.
 //!
@@ -24,6 +26,7 @@ mod body;
 mod bounce;
 mod contact_constraint;
 mod integrate;
+mod joint_gyroscopic;
 mod joint_point;
 mod joint_pose;
 mod joint_row;
@@ -68,6 +71,10 @@ pub(crate) struct Solver<R: crate::math::Real> {
     joint_rows: Vec<joint_row::JointRow<R>>,
     /// One joint's rows as rebuilt for a substep, before they replace the step's.
     joint_row_scratch: Vec<joint_row::JointRow<R>>,
+    /// The jointed bodies whose gyroscopic term is solved with their joints, and which
+    /// solver bodies a joint holds.
+    spinning: Vec<joint_gyroscopic::Spinning<R>>,
+    joined: Vec<bool>,
 }
 
 impl<R: Real> Solver<R> {
