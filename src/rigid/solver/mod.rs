@@ -12,7 +12,11 @@
 //!    (apply the accumulated impulses), **solve** (with the soft bias), **integrate
 //!    positions**, **relax** (solve again without bias, removing the velocity the bias
 //!    added, so pushing apart injects no energy); joints before contacts in every pass;
-//! 3. **restitution**;
+//!    in a step where a contact may bounce, each point's impulse over the step is summed;
+//! 3. **restitution**: chains of touching bodies that a bounce reaches are resolved one
+//!    contact at a time, the largest closing speed first (the notes' iterative resolver,
+//!    [`contact_constraint::BounceChains`]), every other bouncing contact by itself
+//!    ([`bounce`]);
 //! 4. **store impulses** into the persistent contacts and joints for the next step.
 //!
 //! Contact constraints are visited block by block in the order of [`batching`], close to
@@ -68,6 +72,8 @@ pub(crate) struct Solver<R: crate::math::Real> {
     joint_rows: Vec<joint_row::JointRow<R>>,
     /// One joint's rows as rebuilt for a substep, before they replace the step's.
     joint_row_scratch: Vec<joint_row::JointRow<R>>,
+    /// The restitution pass's buffers for chains of touching bodies.
+    chains: contact_constraint::BounceChains<R>,
 }
 
 impl<R: Real> Solver<R> {
