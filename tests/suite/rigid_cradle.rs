@@ -143,8 +143,16 @@ fn two_balls_into_three_touching_send_two_away() {
 /// The touching cradle resting on a frictionless ground under gravity.
 #[test]
 fn a_touching_cradle_on_the_ground_sends_the_last_away() {
-    check_cradle("1 into 5, on the ground", on_the_ground(cradle_row(1, 5, Fx::ZERO)), 1);
-    check_cradle("2 into 3, on the ground", on_the_ground(cradle_row(2, 3, Fx::ZERO)), 2);
+    check_cradle(
+        "1 into 5, on the ground",
+        on_the_ground(cradle_row(1, 5, Fx::ZERO)),
+        1,
+    );
+    check_cradle(
+        "2 into 3, on the ground",
+        on_the_ground(cradle_row(2, 3, Fx::ZERO)),
+        2,
+    );
 }
 
 /// The cradle with gaps (each collision a two-body one) still works as it did.
@@ -178,10 +186,7 @@ fn a_pool_break_keeps_energy_and_momentum() {
     let row_step = 3f64.sqrt() / 2.0;
     for row in 0..5 {
         for k in 0..=row {
-            bodies.push(ball(
-                row as f64 * row_step,
-                k as f64 - row as f64 / 2.0,
-            ));
+            bodies.push(ball(row as f64 * row_step, k as f64 - row as f64 / 2.0));
         }
     }
     let mut world = zero_gravity(RigidDesc {
@@ -196,10 +201,7 @@ fn a_pool_break_keeps_energy_and_momentum() {
         highest = highest.max(kinetic_energy(&world));
     }
     let (after, momentum_after) = (kinetic_energy(&world), momentum_x(&world));
-    let back_row: f64 = all[11..]
-        .iter()
-        .map(|&h| speed(velocity(&world, h)))
-        .sum();
+    let back_row: f64 = all[11..].iter().map(|&h| speed(velocity(&world, h))).sum();
     eprintln!(
         "pool break: kinetic energy {energy:.4} → {after:.4} J (highest {highest:.4}), \
          momentum {momentum:.4} → {momentum_after:.4}, back row speeds sum {back_row:.3} m/s"
@@ -216,5 +218,8 @@ fn a_pool_break_keeps_energy_and_momentum() {
         (momentum_after - momentum).abs() <= 1e-3 * momentum,
         "momentum {momentum} became {momentum_after}"
     );
-    assert!(back_row > 0.1 * V, "the back row barely moved: {back_row} m/s");
+    assert!(
+        back_row > 0.1 * V,
+        "the back row barely moved: {back_row} m/s"
+    );
 }

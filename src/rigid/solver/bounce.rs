@@ -74,7 +74,9 @@ impl<R: Real> Solver<R> {
     /// `threshold` (m/s) when the step began. Without one the restitution pass has nothing
     /// to do, and the substeps need not add up the impulses for it.
     pub fn may_bounce(&self, threshold: R) -> bool {
-        self.blocks().iter().any(|block| block.may_bounce(threshold))
+        self.blocks()
+            .iter()
+            .any(|block| block.may_bounce(threshold))
     }
 
     /// Adds every point's accumulated normal impulse after a substep's relax pass to the

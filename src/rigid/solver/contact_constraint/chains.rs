@@ -204,7 +204,8 @@ fn resolve_chain<R: Real>(
         block.push_point(bodies, cp.lane.into(), cp.point.into(), undo);
     }
     for cp in points.iter_mut() {
-        cp.closing = -blocks[cp.block as usize].normal_speed(bodies, cp.lane.into(), cp.point.into());
+        cp.closing =
+            -blocks[cp.block as usize].normal_speed(bodies, cp.lane.into(), cp.point.into());
     }
     let settled = resolved_speed::<R>();
     for _ in 0..4 * points.len() {
@@ -267,9 +268,9 @@ impl<R: Real> ContactBlock<R> {
     /// than `threshold` (m/s) when the step began.
     fn bounces(&self, l: usize, threshold: R) -> bool {
         self.restitution[l] > R::ZERO
-            && self.points[..usize::from(self.count[l])]
-                .iter()
-                .any(|cp| cp.max_normal_impulse[l] > R::ZERO && cp.relative_velocity[l] < -threshold)
+            && self.points[..usize::from(self.count[l])].iter().any(|cp| {
+                cp.max_normal_impulse[l] > R::ZERO && cp.relative_velocity[l] < -threshold
+            })
     }
 
     /// The normal velocity of point `p` of lane `l`, m/s:
