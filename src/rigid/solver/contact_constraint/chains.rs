@@ -29,8 +29,8 @@
 //!    ```
 //!
 //!    with m_n the point's effective mass; stop when no point closes faster than
-//!    [`RESOLVED_SPEED`], or after 4 resolutions per point. A closing that remains is
-//!    the next step's contact solver's.
+//!    [`resolved_speed`] (2⁻¹⁶ m/s), or after 4 resolutions per point. A closing that
+//!    remains is the next step's contact solver's.
 //!
 //! Each resolution changes the kinetic energy by ½ λ (v_n before + v_n after) =
 //! ½ λ (u − c) ≤ 0, so the pass never adds energy; with e = 1 each is an elastic
