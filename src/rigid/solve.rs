@@ -86,6 +86,8 @@ impl<R: Real> RigidSystem<R> {
             ..joint_solve
         };
 
+        // Restitution has work only where a contact with restitution approaches fast enough.
+        let may_bounce = solver.may_bounce(settings.restitution_threshold);
         for substep in 0..substeps {
             if has_joints {
                 solver.begin_spinning(bodies);
@@ -122,15 +124,17 @@ impl<R: Real> RigidSystem<R> {
             for block in blocks.iter_mut() {
                 block.solve(solver_bodies, &relax);
             }
+            if may_bounce {
+                solver.add_substep_impulses(substep == 0);
+            }
         }
         let bounce = BouncePass {
             threshold: settings.restitution_threshold,
             gravity,
             h,
         };
-        let (blocks, solver_bodies) = solver.blocks_and_bodies();
-        for block in blocks.iter_mut() {
-            block.apply_restitution(solver_bodies, &bounce);
+        if may_bounce {
+            solver.restitution(&bounce);
         }
         for block in solver.blocks() {
             block.store_impulses(&mut self.contacts);

@@ -47,6 +47,7 @@ mod rigid_bounce;
 mod rigid_broadphase;
 mod rigid_ccd;
 mod rigid_convex_shapes;
+mod rigid_cradle;
 mod rigid_events;
 mod rigid_friction;
 mod rigid_gyroscopic;

@@ -25,7 +25,7 @@ use fixstep::math::Real;
 use fixstep::scene::Scene;
 
 /// Name and one-line description of every built-in scene, in listing order.
-pub const BUILTIN_SCENES: [(&str, &str); 32] = [
+pub const BUILTIN_SCENES: [(&str, &str); 33] = [
     (
         "showcase",
         "everything fixstep simulates so far: emitters, springs, damping, rigid bodies stacking, bouncing and tumbling, a chain swinging, a motorised door, a cloth swinging and a water column collapsing",
@@ -86,6 +86,10 @@ pub const BUILTIN_SCENES: [(&str, &str); 32] = [
     (
         "cradle",
         "Newton's cradle: a ball strikes a row of five elastic balls and the last one leaves",
+    ),
+    (
+        "cradle_touching",
+        "Newton's cradle with the five balls touching: the impulse passes through the row and the last ball leaves",
     ),
     (
         "incline",
@@ -238,6 +242,11 @@ pub fn builtin_scene<R: Real>(name: &str) -> Option<Scene<R>> {
             scene.gravity = fixstep::math::Vec3::ZERO;
             scene.rigid = Some(rigid::cradle());
             scene.ticks = 180;
+        }
+        "cradle_touching" => {
+            scene.gravity = fixstep::math::Vec3::ZERO;
+            scene.rigid = Some(rigid::cradle_touching());
+            scene.ticks = 120;
         }
         "incline" => {
             scene.rigid = Some(rigid::incline());

@@ -146,26 +146,44 @@ pub fn falling<R: Real>(count: u32) -> RigidDesc<R> {
 /// Newton's cradle without strings, in zero gravity: five frictionless, perfectly elastic
 /// balls of radius ½ m in a row along x with 0.1 m between neighbours, and a sixth
 /// approaching the row from the left at 2 m/s. The gaps make each collision a two-body one,
-/// as the small gaps of a real cradle do; balls pressed together would share the impulse.
+/// as the small gaps of a real cradle do; [`cradle_touching`] presses the balls together.
 pub fn cradle<R: Real>() -> RigidDesc<R> {
+    cradle_row(1, 5, ratio(1, 10))
+}
+
+/// [`cradle`] with the five balls of the row touching (centres 1 m apart, radius ½ m): the
+/// impulse must pass through the resting contacts of the row, in order, for the last ball
+/// to leave with the striker's speed.
+pub fn cradle_touching<R: Real>() -> RigidDesc<R> {
+    cradle_row(1, 5, R::ZERO)
+}
+
+/// A stringless cradle in zero gravity: `strikers` touching balls at 2 m/s along x towards
+/// `row` balls at rest, the row's neighbours `gap` m apart, all frictionless and perfectly
+/// elastic spheres of radius ½ m. The strikers' front ball starts 1 m short of the row.
+pub fn cradle_row<R: Real>(strikers: u32, row: u32, gap: R) -> RigidDesc<R> {
     let elastic = Material {
         friction: R::ZERO,
         restitution: R::ONE,
     };
-    let mut row = BodyDesc::new(Shape::Sphere { radius: R::HALF }, Vec3::ZERO);
-    row.material = elastic;
-    row.grid = Some(Grid {
-        count: (5, 1, 1),
-        spacing: Vec3::new(ratio(11, 10), R::ZERO, R::ZERO),
+    let mut resting = BodyDesc::new(Shape::Sphere { radius: R::HALF }, Vec3::ZERO);
+    resting.material = elastic;
+    resting.grid = Some(Grid {
+        count: (row, 1, 1),
+        spacing: Vec3::new(R::ONE + gap, R::ZERO, R::ZERO),
     });
     let mut striker = BodyDesc::new(
         Shape::Sphere { radius: R::HALF },
-        Vec3::new(-R::from_int(2), R::ZERO, R::ZERO),
+        Vec3::new(-R::from_int(strikers as i32 + 1), R::ZERO, R::ZERO),
     );
     striker.material = elastic;
     striker.velocity = Vec3::new(R::TWO, R::ZERO, R::ZERO);
+    striker.grid = (strikers > 1).then_some(Grid {
+        count: (strikers, 1, 1),
+        spacing: Vec3::new(R::ONE, R::ZERO, R::ZERO),
+    });
     RigidDesc {
-        bodies: vec![striker, row],
+        bodies: vec![striker, resting],
         solver: SolverSettings::default(),
         ..RigidDesc::default()
     }

@@ -33,6 +33,7 @@
 //! u = e·|v₀|, Newton's law for the approach speed, which is then also the impact speed.
 //! With e = 1 the body returns to the height it fell from and never above it.
 
+use super::Solver;
 use crate::math::{Real, Vec3};
 
 /// What a step's restitution pass needs besides the contacts.
@@ -65,6 +66,39 @@ impl<R: Real> BouncePass<R> {
         let wanted = e * e * before - a * s1;
         let discriminant = (ah * ah + R::from_int(8) * wanted).max(R::ZERO);
         (half * (ah + discriminant.sqrt())).max(R::ZERO)
+    }
+}
+
+impl<R: Real> Solver<R> {
+    /// Whether a contact of this step may bounce: restitution and an approach faster than
+    /// `threshold` (m/s) when the step began. Without one the restitution pass has nothing
+    /// to do, and the substeps need not add up the impulses for it.
+    pub fn may_bounce(&self, threshold: R) -> bool {
+        self.blocks()
+            .iter()
+            .any(|block| block.may_bounce(threshold))
+    }
+
+    /// Adds every point's accumulated normal impulse after a substep's relax pass to the
+    /// impulse it applied over the step, starting at the `first` substep (for the chains'
+    /// pass, in steps that [may bounce](Self::may_bounce)).
+    pub fn add_substep_impulses(&mut self, first: bool) {
+        for block in &mut self.blocks[..self.block_count] {
+            block.add_substep_impulses(first);
+        }
+    }
+
+    /// Restitution, after the substeps: the chains of touching bodies a bounce reaches are
+    /// resolved one contact at a time, the largest closing speed first
+    /// ([`BounceChains`](super::contact_constraint::BounceChains)); every other bouncing
+    /// contact separates at [`BouncePass::leaving_speed`]
+    /// ([`ContactBlock::apply_restitution`](super::ContactBlock::apply_restitution)).
+    pub fn restitution(&mut self, pass: &BouncePass<R>) {
+        let blocks = &mut self.blocks[..self.block_count];
+        self.chains.resolve(blocks, &mut self.bodies, pass);
+        for block in blocks.iter_mut() {
+            block.apply_restitution(&mut self.bodies, pass);
+        }
     }
 }
 

@@ -78,6 +78,11 @@ struct PointLanes<R: Real> {
     max_normal_impulse: Lanes<R>,
     /// Normal velocity before the step, m/s (negative: approaching).
     relative_velocity: Lanes<R>,
+    /// The normal impulse the point applied over the whole step, N·s: the sum of the
+    /// accumulated impulse after each substep (each substep re-applies it by its warm
+    /// start, then changes it by its passes). Kept only in steps that may bounce
+    /// ([`ContactBlock::add_substep_impulses`]), for the chains' restitution pass.
+    step_impulse: Lanes<R>,
 }
 
 impl<R: Real> PointLanes<R> {
@@ -94,6 +99,7 @@ impl<R: Real> PointLanes<R> {
         normal_impulse: [R::ZERO; LANES],
         max_normal_impulse: [R::ZERO; LANES],
         relative_velocity: [R::ZERO; LANES],
+        step_impulse: [R::ZERO; LANES],
     };
 }
 
@@ -134,6 +140,7 @@ impl<R: Real> FrictionLanes<R> {
     };
 }
 
+mod chains;
 #[cfg(vector_kernels)]
 mod kernel;
 mod prepare;
@@ -144,6 +151,7 @@ mod roots_kernel;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use chains::BounceChains;
 pub(crate) use prepare::ContactArms;
 #[cfg(vector_kernels)]
 use prepare::ContactArmsOf;
@@ -194,6 +202,9 @@ pub(crate) struct ContactBlock<R: Real> {
     restitution: Lanes<R>,
     /// Contacts with a static or kinematic body are twice as stiff.
     rigid_partner: [bool; LANES],
+    /// Lanes whose restitution this step's chain pass ([`BounceChains`]) resolved, which
+    /// [`apply_restitution`](Self::apply_restitution) then leaves alone.
+    chained: [bool; LANES],
     /// Points in use per lane.
     count: [u8; LANES],
     points: [PointLanes<R>; MAX_MANIFOLD_POINTS],
@@ -233,6 +244,7 @@ impl<R: Real> ContactBlock<R> {
             friction: [R::ZERO; LANES],
             restitution: [R::ZERO; LANES],
             rigid_partner: [false; LANES],
+            chained: [false; LANES],
             count: [0; LANES],
             points: [PointLanes::ZERO; MAX_MANIFOLD_POINTS],
             friction_rows: FrictionLanes::ZERO,
@@ -244,6 +256,7 @@ impl<R: Real> ContactBlock<R> {
     pub fn clear(&mut self, independent: bool) {
         self.len = 0;
         self.independent = independent;
+        self.chained = [false; LANES];
         #[cfg(vector_kernels)]
         {
             self.kernel = kernel::KernelFacts::NONE;
@@ -450,10 +463,11 @@ impl<R: Real> ContactBlock<R> {
     /// makes it separate at the speed [`BouncePass::leaving_speed`] gives (e times the
     /// impact speed, gravity's share of the step included), λ = m_n (u − v_n), accumulated
     /// and kept ≥ 0.
+    /// Lanes the chain pass resolved ([`BounceChains`]) are skipped.
     pub fn apply_restitution(&mut self, bodies: &mut [SolverBody<R>], pass: &BouncePass<R>) {
         for l in 0..self.len {
             let restitution = self.restitution[l];
-            if restitution == R::ZERO {
+            if restitution == R::ZERO || self.chained[l] {
                 continue;
             }
             let (ba, bb) = pair(bodies, self.a[l], self.b[l]);
@@ -484,6 +498,32 @@ impl<R: Real> ContactBlock<R> {
                 bb.v += normal_b * applied;
                 bb.w += cp.in_b.get(l) * applied;
                 cp.normal_impulse[l] = new_impulse;
+            }
+        }
+    }
+
+    /// Whether a point of the block may bounce this step: a lane with restitution whose
+    /// point approached faster than `threshold` (m/s) when the step began.
+    pub fn may_bounce(&self, threshold: R) -> bool {
+        (0..self.len).any(|l| {
+            self.restitution[l] > R::ZERO
+                && self.points[..usize::from(self.count[l])]
+                    .iter()
+                    .any(|cp| cp.relative_velocity[l] < -threshold)
+        })
+    }
+
+    /// Adds each point's accumulated normal impulse, as it stands after a substep's relax
+    /// pass, to the impulse it applied over the step (N·s), starting the sum at the
+    /// `first` substep.
+    pub fn add_substep_impulses(&mut self, first: bool) {
+        for cp in &mut self.points {
+            for l in 0..self.len {
+                cp.step_impulse[l] = if first {
+                    cp.normal_impulse[l]
+                } else {
+                    cp.step_impulse[l] + cp.normal_impulse[l]
+                };
             }
         }
     }

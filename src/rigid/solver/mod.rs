@@ -13,8 +13,12 @@
 //!    positions**, **relax** (solve again without bias, removing the velocity the bias
 //!    added, so pushing apart injects no energy; jointed bodies' gyroscopic terms are
 //!    solved with their joints there, [`joint_gyroscopic`]); joints before contacts in
-//!    every pass;
-//! 3. **restitution**;
+//!    every pass; in a step where a contact may bounce, each point's impulse over the step
+//!    is summed;
+//! 3. **restitution**: chains of touching bodies that a bounce reaches are resolved one
+//!    contact at a time, the largest closing speed first (the notes' iterative resolver,
+//!    [`contact_constraint::BounceChains`]), every other bouncing contact by itself
+//!    ([`bounce`]);
 //! 4. **store impulses** into the persistent contacts and joints for the next step.
 //!
 //! Contact constraints are visited block by block in the order of [`batching`], close to
@@ -75,6 +79,8 @@ pub(crate) struct Solver<R: crate::math::Real> {
     /// solver bodies a joint holds.
     spinning: Vec<joint_gyroscopic::Spinning<R>>,
     joined: Vec<bool>,
+    /// The restitution pass's buffers for chains of touching bodies.
+    chains: contact_constraint::BounceChains<R>,
 }
 
 impl<R: Real> Solver<R> {
