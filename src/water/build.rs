@@ -1,7 +1,7 @@
 //! Checking a [`WaterDesc`] and compiling it into a [`WaterSystem`].
 
 use super::desc::{MAX_WATER_CELLS, MAX_WATER_SUBSTEPS, WaterDesc, WaterParticleFloat};
-use super::system::{WaterSettings, WaterSystem};
+use super::system::{WaterSettings, WaterSystem, WaveScratch};
 use super::waves::wave_substeps;
 use crate::math::{Real, Vec3};
 use crate::types::SceneError;
@@ -131,6 +131,7 @@ impl<R: Real> WaterSystem<R> {
             heights: vec![R::ZERO; n * m],
             flow_x: vec![R::ZERO; (n - 1) * m],
             flow_z: vec![R::ZERO; n * (m - 1)],
+            scratch: WaveScratch::default(),
         })
     }
 

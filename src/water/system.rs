@@ -53,6 +53,33 @@ pub struct WaterSystem<R: Real = Fx> {
     /// q, the flow across the edge between cells (i, k) and (i, k + 1), m²/s, positive
     /// towards +z; slot `i + columns · k`.
     pub(super) flow_z: Vec<R>,
+    /// The vector kernels' padded transfers (not state).
+    #[serde(skip)]
+    pub(super) scratch: WaveScratch,
+}
+
+/// The padded transfers of the wave step's vector kernels (`waves/kernel.rs`), reused from
+/// step to step. Not state: a clone starts empty, and any two compare equal.
+#[derive(Debug, Default)]
+pub(crate) struct WaveScratch {
+    /// X: the x edges' transfers, one slot after their left cell, m.
+    #[cfg_attr(not(vector_kernels), allow(dead_code))]
+    pub x: Vec<Fx>,
+    /// Z: the z edges' transfers, a row after their lower cell, m.
+    #[cfg_attr(not(vector_kernels), allow(dead_code))]
+    pub z: Vec<Fx>,
+}
+
+impl Clone for WaveScratch {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl PartialEq for WaveScratch {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl<R: Real> WaterSystem<R> {

@@ -39,6 +39,11 @@ use super::desc::{MAX_WATER_SUBSTEPS, WaterBorder};
 use super::system::{WaterSettings, WaterSystem};
 use crate::math::Real;
 
+#[cfg(vector_kernels)]
+mod kernel;
+#[cfg(all(test, vector_kernels))]
+mod tests;
+
 /// The fewest wave steps that split `dt` seconds so that c h / s ≤ 1/2 for wave speed `c`
 /// (m/s) and cell size `s` (m); `None` when that takes more than [`MAX_WATER_SUBSTEPS`].
 pub(super) fn wave_substeps<R: Real>(c: R, dt: R, s: R) -> Option<u32> {
@@ -55,14 +60,53 @@ impl<R: Real> WaterSystem<R> {
         }
     }
 
-    /// One wave step of `h` seconds (the [module](self)'s scheme).
+    /// One wave step of `h` seconds (the [module](self)'s scheme). In I32F32 on a
+    /// processor with vector kernels the flows and heights run eight at a time
+    /// ([`kernel`]), with the same bits.
     fn wave_step(&mut self, h: R) {
         let s = &self.settings;
-        let (n, m) = (s.columns as usize, s.rows as usize);
+        let n = s.columns as usize;
         let push = h * s.wave_speed * s.wave_speed / s.cell_size;
         let keep = R::ONE - s.damping * h;
         let carry = h / s.cell_size;
-        let u = &mut self.heights;
+        let open = s.border == WaterBorder::Open;
+        #[cfg(vector_kernels)]
+        let done = kernel::flows(
+            &self.heights,
+            &mut self.flow_x,
+            &mut self.flow_z,
+            n,
+            push,
+            keep,
+        );
+        #[cfg(not(vector_kernels))]
+        let done = false;
+        if !done {
+            self.update_flows(push, keep);
+        }
+        if open {
+            self.let_out(carry);
+        }
+        #[cfg(vector_kernels)]
+        if kernel::heights(
+            &mut self.heights,
+            &self.flow_x,
+            &self.flow_z,
+            n,
+            carry,
+            &mut self.scratch,
+        ) {
+            return;
+        }
+        self.update_heights(carry);
+    }
+
+    /// q ← (q − p (u_j − u_i))·κ on every edge, p = h c²/s (`push`, m/s), κ = 1 − γh
+    /// (`keep`).
+    fn update_flows(&mut self, push: R, keep: R) {
+        let s = &self.settings;
+        let (n, m) = (s.columns as usize, s.rows as usize);
+        let u = &self.heights;
         for k in 0..m {
             for i in 0..n - 1 {
                 let e = i + (n - 1) * k;
@@ -77,15 +121,29 @@ impl<R: Real> WaterSystem<R> {
                 *q = (*q - push * (u[i + n * (k + 1)] - u[i + n * k])) * keep;
             }
         }
-        if s.border == WaterBorder::Open {
-            let leave = s.wave_speed * carry;
-            for_each_border_cell(n, m, |cell, outer_edges| {
-                let t = leave * u[cell];
-                for _ in 0..outer_edges {
-                    u[cell] -= t;
-                }
-            });
-        }
+    }
+
+    /// The open border: c h/s · u leaves each border cell through each outer edge
+    /// (`carry` = h/s).
+    fn let_out(&mut self, carry: R) {
+        let s = &self.settings;
+        let (n, m) = (s.columns as usize, s.rows as usize);
+        let leave = s.wave_speed * carry;
+        let u = &mut self.heights;
+        for_each_border_cell(n, m, |cell, outer_edges| {
+            let t = leave * u[cell];
+            for _ in 0..outer_edges {
+                u[cell] -= t;
+            }
+        });
+    }
+
+    /// t = (h/s)·q across every edge (`carry` = h/s), taken from one cell and given to
+    /// the other: x edges in slot order, then z edges.
+    fn update_heights(&mut self, carry: R) {
+        let s = &self.settings;
+        let (n, m) = (s.columns as usize, s.rows as usize);
+        let u = &mut self.heights;
         for k in 0..m {
             for i in 0..n - 1 {
                 let t = carry * self.flow_x[i + (n - 1) * k];

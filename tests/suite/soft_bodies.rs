@@ -115,6 +115,35 @@ fn cloth_does_not_stretch_and_does_not_gain_energy() {
     assert_eq!(world.saturations_total(), 0);
 }
 
+/// `cloth` and `curtain` (its rail slid by its script) while they swing: from 0.5 s to
+/// 10 s, at every tick, no edge is stretched by more than 1% (the `max_stretch` metric that
+/// `fixstep run --metrics` writes every tick).
+#[test]
+fn cloth_and_curtain_stay_within_one_percent_while_swinging() {
+    for name in ["cloth", "curtain"] {
+        let scene = builtin_scene::<Fx>(name).unwrap();
+        let mut world = scene.build().unwrap();
+        let mut feed = fixstep::replay::InputFeed::new(&scene.script);
+        let half_second = u64::from(scene.tick_rate) / 2;
+        let mut worst = (0.0, 0);
+        while world.tick() < u64::from(scene.tick_rate) * 10 {
+            let tick = world.tick();
+            world.step(feed.at(tick));
+            let stretch = world.metrics().max_stretch;
+            if world.tick() >= half_second && stretch > worst.0 {
+                worst = (stretch, world.tick());
+            }
+        }
+        assert!(
+            worst.0 <= 0.01,
+            "{name}: max edge stretch {:.3}% at tick {}",
+            worst.0 * 100.0,
+            worst.1
+        );
+        assert_eq!(world.saturations_total(), 0, "{name}");
+    }
+}
+
 /// ω² of the slowest small-swing mode of `links` equal point masses m hanging on massless
 /// inextensible links of length ℓ from a fixed point: the smallest eigenvalue of the
 /// symmetric tridiagonal matrix with diagonal (T_j + T_{j+1})/(mℓ) and off-diagonal

@@ -59,9 +59,13 @@ fn cloth_model<R: Real>() -> SoftModel<R> {
 
 /// A horizontal square cloth of `n` × `n` vertices, 1 m a side, 0.1 kg, at height 2 m,
 /// pinned at its two corners on the x axis, falling and swinging under gravity, with a
-/// velocity damping of ½ /s (the air) that lets it come to rest within seconds.
+/// velocity damping of ½ /s (the air) that lets it come to rest within seconds. 40 XPBD
+/// substeps a tick keep every edge within 1% of its rest length while it swings (10 leave
+/// 4.1%, 20 leave 1.4%).
 pub fn cloth<R: Real>(n: u32) -> SoftDesc<R> {
-    pinned_cloth(Vec3::new(-R::HALF, R::TWO, R::ZERO), n, Vec::new())
+    let mut cloth = pinned_cloth(Vec3::new(-R::HALF, R::TWO, R::ZERO), n, Vec::new());
+    cloth.solver.substeps = 40;
+    cloth
 }
 
 /// A horizontal square cloth of `n` × `n` vertices, 1 m a side along x and z from
@@ -90,6 +94,8 @@ fn pinned_cloth<R: Real>(origin: Vec3<R>, n: u32, colliders: Vec<ColliderDesc<R>
 
 /// The curtain's cloth: a 32 × 32 vertical sheet 2 m wide and 2 m tall hanging from a rail
 /// at y = 3 m (its top row held by attachment target 0), blown by a 4 m/s wind along +z.
+/// 80 XPBD substeps a tick keep every edge within 1% of its rest length while the rail
+/// slides (10 leave 6.6%, 40 leave 1.5%).
 pub fn curtain<R: Real>() -> SoftDesc<R> {
     let n = 32;
     let mut sheet = body(
@@ -113,7 +119,10 @@ pub fn curtain<R: Real>() -> SoftDesc<R> {
     SoftDesc {
         bodies: vec![sheet],
         colliders: Vec::new(),
-        solver: XpbdSettings::default(),
+        solver: XpbdSettings {
+            substeps: 80,
+            ..XpbdSettings::default()
+        },
     }
 }
 
