@@ -53,7 +53,13 @@ use crate::water::WaterSystem;
 ///
 /// 6: restitution acts on the speed of the impact (gravity's share of the step included),
 /// giving the next flight e² times the height of the last (`rigid::solver::bounce`).
-pub const STATE_VERSION: u32 = 6;
+///
+/// 7: joints aim at the end of each substep (a second-order drift term for ball anchors and
+/// distance rows), jointed bodies' inverse inertias turn with them every substep and their
+/// gyroscopic term is solved with their joints; bounces that reach chains of touching
+/// bodies are resolved contact by contact, the largest closing speed first
+/// (`rigid::solver::contact_constraint::BounceChains`).
+pub const STATE_VERSION: u32 = 7;
 
 /// The RNG stream of the world's generator (the seed comes from the scene).
 const RNG_STREAM: u64 = 0x6669_7873_7465_7021; // "fixstep!"
