@@ -49,7 +49,7 @@ pub const BUILTIN_SCENES: [(&str, &str); 33] = [
     ),
     (
         "parkour",
-        "two scripted kinematic characters: one climbs stairs, jumps a gap and is stopped by a slope too steep to climb; the other pushes crates and rides a moving platform",
+        "three scripted kinematic characters: one climbs stairs, jumps a gap and is stopped by a slope too steep to climb, where a third walks into it and slides round it and a thrown ball bounces off it; the second pushes crates and rides a moving platform",
     ),
     (
         "bullets",
