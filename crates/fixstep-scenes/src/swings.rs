@@ -1,4 +1,4 @@
-//! Built-in scenes of joints that must neither make nor lose energy (issue [energy]): a
+//! Built-in scenes of joints that must neither make nor lose energy (issue \[energy\]): a
 //! heavy top precessing on a ball joint, and a wrecking ball on a rope of rods. Every
 //! constant is an exact ratio or an integer, and the top's precession goes through the
 //! scalar's own `sqrt` and `sin_cos`, so the presets are the same bits on every machine.

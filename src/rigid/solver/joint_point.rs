@@ -14,7 +14,7 @@
 //! its target, so that the anchors meet at the end of the substep to second order (the
 //! velocity form of SHAKE/RATTLE). Without it each substep's velocity projection shortens
 //! the anchors' velocity instead of turning it, a loss first order in h: a heavy top on a
-//! ball joint gained spin and sank (issue [energy]).
+//! ball joint gained spin and sank (issue \[energy\]).
 //!
 //! The 3 × 3 effective mass is K⁻¹ with
 //! K = (1/m_a + 1/m_b) 𝟙 − \[r_a\]ₓ I_a⁻¹ \[r_a\]ₓ − \[r_b\]ₓ I_b⁻¹ \[r_b\]ₓ (1/kg), computed once per
