@@ -183,7 +183,7 @@ fn info_describes_the_soft_bodies() {
     for (file, line) in [
         (
             "replays/cloth.replay",
-            "soft bodies: 1 (32x32 cloth, XPBD), 1024 vertices, 0 colliders, XPBD 10 substeps of 1 iterations\n",
+            "soft bodies: 1 (32x32 cloth, XPBD), 1024 vertices, 0 colliders, XPBD 40 substeps of 1 iterations\n",
         ),
         (
             "replays/rope.replay",
