@@ -63,7 +63,7 @@ try {
       return [view.characters.length, water?.count ?? 0, moved];
     })()`);
     console.log(`drawn ${name} ${characters} ${water} ${moved}`);
-    if (!moved || (name === 'parkour' ? characters !== 2 : water === 0)) {
+    if (!moved || (name === 'parkour' ? characters !== 3 : water === 0)) {
       fail(`${name}: its characters or its water are not drawn where the world has them`);
     }
   }

@@ -139,10 +139,10 @@ fn a_replay_played_in_a_session_ends_at_its_final_checksum() {
 #[test]
 fn characters_and_water_are_read_for_drawing() {
     let mut parkour = Session::builtin("parkour").expect("loads");
-    assert_eq!(parkour.character_count(), 2);
+    assert_eq!(parkour.character_count(), 3);
     parkour.step();
     let centres = parkour.character_positions().to_vec();
-    assert_eq!(centres.len(), 6);
+    assert_eq!(centres.len(), 9);
     let world = parkour.world().characters().expect("characters");
     for (c, centre) in world.characters().iter().zip(centres.chunks(3)) {
         let p = c.position.to_f64();
@@ -150,7 +150,7 @@ fn characters_and_water_are_read_for_drawing() {
     }
     let mesh = parkour.character_mesh(0).expect("a shape");
     assert!(!mesh.indices.is_empty() && mesh.indices.len().is_multiple_of(3));
-    assert!(parkour.character_mesh(2).is_none());
+    assert!(parkour.character_mesh(3).is_none());
     assert!(parkour.water_grid().is_none() && parkour.water_heights().is_empty());
 
     let mut pond = Session::builtin("pond").expect("loads");
