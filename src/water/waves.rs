@@ -65,6 +65,7 @@ impl<R: Real> WaterSystem<R> {
     /// ([`kernel`]), with the same bits.
     fn wave_step(&mut self, h: R) {
         let s = &self.settings;
+        #[cfg(vector_kernels)]
         let n = s.columns as usize;
         let push = h * s.wave_speed * s.wave_speed / s.cell_size;
         let keep = R::ONE - s.damping * h;
