@@ -53,15 +53,18 @@ mod tests {
     use super::*;
     use crate::math::Fx;
 
-    fn fx(v: f64) -> Fx {
-        Fx::from_f64(v)
-    }
-
     #[test]
     fn a_column_is_submerged_by_the_depth_of_its_bottom() {
-        assert_eq!(column_fraction(fx(1.0), fx(0.5), fx(0.0)), Fx::ZERO);
-        assert_eq!(column_fraction(fx(-1.0), fx(0.5), fx(0.0)), Fx::ONE);
-        let half = column_fraction(fx(0.0), fx(0.5), fx(0.0)).to_f64();
+        assert_eq!(
+            column_fraction(Fx::from_f64(1.0), Fx::from_f64(0.5), Fx::from_f64(0.0)),
+            Fx::ZERO
+        );
+        assert_eq!(
+            column_fraction(Fx::from_f64(-1.0), Fx::from_f64(0.5), Fx::from_f64(0.0)),
+            Fx::ONE
+        );
+        let half =
+            column_fraction(Fx::from_f64(0.0), Fx::from_f64(0.5), Fx::from_f64(0.0)).to_f64();
         assert!((half - 0.5).abs() < 1e-9);
     }
 
@@ -69,22 +72,35 @@ mod tests {
     fn a_sphere_cap_gives_half_and_whole_volumes() {
         let r = 0.5;
         let whole = 4.0 / 3.0 * std::f64::consts::PI * r * r * r; // ok-det: test reference
-        let full = sphere_submerged_volume(fx(-2.0), fx(r), fx(0.0)).to_f64();
-        let half = sphere_submerged_volume(fx(0.0), fx(r), fx(0.0)).to_f64();
+        let full = sphere_submerged_volume(Fx::from_f64(-2.0), Fx::from_f64(r), Fx::from_f64(0.0))
+            .to_f64();
+        let half =
+            sphere_submerged_volume(Fx::from_f64(0.0), Fx::from_f64(r), Fx::from_f64(0.0)).to_f64();
         assert!((full - whole).abs() < 1e-6 * whole, "{full} vs {whole}");
         assert!(
             (half - whole / 2.0).abs() < 1e-6 * whole,
             "{half} vs {}",
             whole / 2.0
         );
-        assert_eq!(sphere_submerged_volume(fx(2.0), fx(r), fx(0.0)), Fx::ZERO);
+        assert_eq!(
+            sphere_submerged_volume(Fx::from_f64(2.0), Fx::from_f64(r), Fx::from_f64(0.0)),
+            Fx::ZERO
+        );
     }
 
     #[test]
     fn a_floating_body_feels_its_displaced_weight_and_drag() {
-        let g = Vec3::new(Fx::ZERO, fx(-10.0), Fx::ZERO);
-        let v = Vec3::new(fx(1.0), Fx::ZERO, Fx::ZERO);
-        let f = float_force(g, fx(1000.0), fx(0.001), fx(0.002), fx(2.0), fx(3.0), v);
+        let g = Vec3::new(Fx::ZERO, Fx::from_f64(-10.0), Fx::ZERO);
+        let v = Vec3::new(Fx::from_f64(1.0), Fx::ZERO, Fx::ZERO);
+        let f = float_force(
+            g,
+            Fx::from_f64(1000.0),
+            Fx::from_f64(0.001),
+            Fx::from_f64(0.002),
+            Fx::from_f64(2.0),
+            Fx::from_f64(3.0),
+            v,
+        );
         assert!((f.y.to_f64() - 10.0).abs() < 1e-6);
         assert!((f.x.to_f64() + 3.0).abs() < 1e-6, "drag −k m f v = −3 N");
     }

@@ -107,17 +107,17 @@ mod tests {
     use super::*;
     use crate::math::Fx;
 
-    fn pass(h: f64) -> BouncePass<Fx> {
+    fn pass(h: Fx) -> BouncePass<Fx> {
         BouncePass {
             threshold: Fx::ONE,
             gravity: Vec3::new(Fx::ZERO, Fx::from_f64(-9.81), Fx::ZERO),
-            h: Fx::from_f64(h),
+            h,
         }
     }
 
     #[test]
     fn without_relative_acceleration_it_is_newtons_law() {
-        let u = pass(1.0 / 300.0).leaving_speed(
+        let u = pass(Fx::from_f64(1.0 / 300.0)).leaving_speed(
             Fx::from_f64(0.8),
             Fx::from_f64(-4.0),
             (Fx::ONE, Fx::ZERO),
@@ -137,7 +137,7 @@ mod tests {
             v -= g * h;
             x += h * v;
         }
-        let u = pass(h)
+        let u = pass(Fx::from_f64(h))
             .leaving_speed(
                 Fx::from_f64(e),
                 Fx::from_f64(v),
