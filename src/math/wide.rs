@@ -41,6 +41,7 @@ pub(crate) mod avx2;
 pub(crate) mod avx512;
 #[cfg(target_arch = "aarch64")]
 pub(crate) mod neon;
+pub(crate) mod portable;
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 pub(crate) mod simd128;
 
@@ -562,6 +563,14 @@ pub(crate) trait Wide: Copy {
         self.store_words(a)
             .into_iter()
             .fold(0, |sum: i64, x| sum.wrapping_add(x))
+    }
+
+    /// Whether every lane, as an unsigned number, lies below 2ⁿ (n < 64): on the or of
+    /// several [`magnitude`](Self::magnitude)s, whether each value lies within
+    /// [−2ⁿ, 2ⁿ). By default through [`or_lanes`](Self::or_lanes).
+    #[inline(always)]
+    fn below_power(self, a: Self::V, n: u32) -> bool {
+        self.or_lanes(a) >> n == 0
     }
 
     /// The bitwise or of the lanes.

@@ -53,21 +53,24 @@ pub struct WaterSystem<R: Real = Fx> {
     /// q, the flow across the edge between cells (i, k) and (i, k + 1), m²/s, positive
     /// towards +z; slot `i + columns · k`.
     pub(super) flow_z: Vec<R>,
-    /// The vector kernels' padded transfers (not state).
+    /// The kernel's rows of transfers (not state).
     #[serde(skip)]
     pub(super) scratch: WaveScratch,
 }
 
-/// The padded transfers of the wave step's vector kernels (`waves/kernel.rs`), reused from
-/// step to step. Not state: a clone starts empty, and any two compare equal.
+/// The rows of transfers of the wave step's kernel (`waves/kernel.rs`), reused from step
+/// to step. Not state: a clone starts empty, and any two compare equal.
 #[derive(Debug, Default)]
 pub(crate) struct WaveScratch {
-    /// X: the x edges' transfers, one slot after their left cell, m.
+    /// The transfers of a row's x edges, each one slot after its left cell, m (n + 1).
     #[cfg_attr(not(vector_kernels), allow(dead_code))]
     pub x: Vec<Fx>,
-    /// Z: the z edges' transfers, a row after their lower cell, m.
+    /// The transfers of the z edges from the previous row into this one, m (n + 1).
     #[cfg_attr(not(vector_kernels), allow(dead_code))]
-    pub z: Vec<Fx>,
+    pub previous: Vec<Fx>,
+    /// The transfers of the z edges from this row into the next, m (n + 1).
+    #[cfg_attr(not(vector_kernels), allow(dead_code))]
+    pub next: Vec<Fx>,
 }
 
 impl Clone for WaveScratch {

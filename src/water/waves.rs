@@ -44,6 +44,20 @@ mod kernel;
 #[cfg(all(test, vector_kernels))]
 mod tests;
 
+/// The constants of one wave step, generic over the scalar.
+#[derive(Clone, Copy)]
+struct Factors<R> {
+    /// p = h c²/s, m/s.
+    push: R,
+    /// κ = 1 − γh.
+    keep: R,
+    /// h/s, s/m.
+    carry: R,
+    /// c h/s, the share of a border cell's height that leaves through each outer edge of
+    /// an open border; `None` with reflective borders.
+    leave: Option<R>,
+}
+
 /// The fewest wave steps that split `dt` seconds so that c h / s ≤ 1/2 for wave speed `c`
 /// (m/s) and cell size `s` (m); `None` when that takes more than [`MAX_WATER_SUBSTEPS`].
 pub(super) fn wave_substeps<R: Real>(c: R, dt: R, s: R) -> Option<u32> {
@@ -60,46 +74,46 @@ impl<R: Real> WaterSystem<R> {
         }
     }
 
-    /// One wave step of `h` seconds (the [module](self)'s scheme). In I32F32 on a
-    /// processor with vector kernels the flows and heights run eight at a time
-    /// ([`kernel`]), with the same bits.
+    /// One wave step of `h` seconds (the [module](self)'s scheme). In I32F32 it runs in
+    /// [`kernel`], eight edges or cells at a time, with the bits of
+    /// [`scalar_wave_step`](Self::scalar_wave_step).
     fn wave_step(&mut self, h: R) {
-        let s = &self.settings;
+        let factors = self.factors(h);
         #[cfg(vector_kernels)]
-        let n = s.columns as usize;
-        let push = h * s.wave_speed * s.wave_speed / s.cell_size;
-        let keep = R::ONE - s.damping * h;
-        let carry = h / s.cell_size;
-        let open = s.border == WaterBorder::Open;
-        #[cfg(vector_kernels)]
-        let done = kernel::flows(
-            &self.heights,
+        if kernel::wave_step(
+            &mut self.heights,
             &mut self.flow_x,
             &mut self.flow_z,
-            n,
-            push,
-            keep,
-        );
-        #[cfg(not(vector_kernels))]
-        let done = false;
-        if !done {
-            self.update_flows(push, keep);
-        }
-        if open {
-            self.let_out(carry);
-        }
-        #[cfg(vector_kernels)]
-        if kernel::heights(
-            &mut self.heights,
-            &self.flow_x,
-            &self.flow_z,
-            n,
-            carry,
+            self.settings.columns as usize,
+            &factors,
             &mut self.scratch,
         ) {
             return;
         }
-        self.update_heights(carry);
+        self.scalar_wave_step(&factors);
+    }
+
+    /// The constants of a wave step of `h` seconds: p = h c²/s, κ = 1 − γh, h/s and, on an
+    /// open border, c h/s.
+    fn factors(&self, h: R) -> Factors<R> {
+        let s = &self.settings;
+        let carry = h / s.cell_size;
+        Factors {
+            push: h * s.wave_speed * s.wave_speed / s.cell_size,
+            keep: R::ONE - s.damping * h,
+            carry,
+            leave: (s.border == WaterBorder::Open).then(|| s.wave_speed * carry),
+        }
+    }
+
+    /// The wave step with the scalar operators: every flow, the outflow of an open border,
+    /// then every height.
+    fn scalar_wave_step(&mut self, factors: &Factors<R>) {
+        self.update_flows(factors.push, factors.keep);
+        if let Some(leave) = factors.leave {
+            self.let_out(leave);
+        }
+        self.update_heights(factors.carry);
     }
 
     /// q ← (q − p (u_j − u_i))·κ on every edge, p = h c²/s (`push`, m/s), κ = 1 − γh
@@ -124,19 +138,20 @@ impl<R: Real> WaterSystem<R> {
         }
     }
 
-    /// The open border: c h/s · u leaves each border cell through each outer edge
-    /// (`carry` = h/s).
-    fn let_out(&mut self, carry: R) {
+    /// The open border: `leave` = c h/s of u leaves each border cell through each outer
+    /// edge.
+    fn let_out(&mut self, leave: R) {
         let s = &self.settings;
         let (n, m) = (s.columns as usize, s.rows as usize);
-        let leave = s.wave_speed * carry;
         let u = &mut self.heights;
-        for_each_border_cell(n, m, |cell, outer_edges| {
-            let t = leave * u[cell];
-            for _ in 0..outer_edges {
-                u[cell] -= t;
-            }
-        });
+        for k in 0..m {
+            for_each_border_cell_of_row(n, m, k, |cell, outer_edges| {
+                let t = leave * u[cell];
+                for _ in 0..outer_edges {
+                    u[cell] -= t;
+                }
+            });
+        }
     }
 
     /// t = (h/s)·q across every edge (`carry` = h/s), taken from one cell and given to
@@ -162,24 +177,22 @@ impl<R: Real> WaterSystem<R> {
     }
 }
 
-/// Calls `f(cell, outer_edges)` once for every cell on the border of an n × m grid, with
-/// how many of its edges are on the border (2 at a corner, up to 4 on a grid one cell
-/// wide). An open border lets c h/s · u out of the cell through each, u taken before the
-/// step.
-fn for_each_border_cell(n: usize, m: usize, mut f: impl FnMut(usize, u32)) {
-    let edges = |i: usize, k: usize| {
+/// Calls `f(cell, outer_edges)` once for every cell of row `k` on the border of an n × m
+/// grid, with how many of its edges are on the border (2 at a corner, up to 4 on a grid
+/// one cell wide). An open border lets c h/s · u out of the cell through each, u taken
+/// before the step.
+fn for_each_border_cell_of_row(n: usize, m: usize, k: usize, mut f: impl FnMut(usize, u32)) {
+    let edges = |i: usize| {
         u32::from(i == 0) + u32::from(i == n - 1) + u32::from(k == 0) + u32::from(k == m - 1)
     };
-    for k in 0..m {
-        if k == 0 || k == m - 1 {
-            for i in 0..n {
-                f(i + n * k, edges(i, k));
-            }
-        } else {
-            f(n * k, edges(0, k));
-            if n > 1 {
-                f(n - 1 + n * k, edges(n - 1, k));
-            }
+    if k == 0 || k == m - 1 {
+        for i in 0..n {
+            f(i + n * k, edges(i));
+        }
+    } else {
+        f(n * k, edges(0));
+        if n > 1 {
+            f(n - 1 + n * k, edges(n - 1));
         }
     }
 }

@@ -24,7 +24,8 @@ use core::arch::x86_64::{
     _mm256_movemask_pd, _mm256_mul_epi32, _mm256_mul_epu32, _mm256_or_si256,
     _mm256_permute4x64_epi64, _mm256_set_epi64x, _mm256_set1_epi64x, _mm256_setzero_si256,
     _mm256_sll_epi64, _mm256_slli_epi64, _mm256_sllv_epi64, _mm256_srai_epi32, _mm256_srl_epi64,
-    _mm256_srli_epi64, _mm256_srlv_epi64, _mm256_storeu_si256, _mm256_sub_epi64, _mm256_xor_si256,
+    _mm256_srli_epi64, _mm256_srlv_epi64, _mm256_storeu_si256, _mm256_sub_epi64,
+    _mm256_testz_si256, _mm256_xor_si256,
 };
 
 use super::Wide;
@@ -244,6 +245,15 @@ impl Wide for Avx2 {
                 _mm256_mask_i64gather_epi64::<8>(self.zero()[0], base, words[0], low),
                 _mm256_mask_i64gather_epi64::<8>(self.zero()[1], base, words[1], high),
             ]
+        }
+    }
+
+    /// One `vptest` of the or of both halves against the bits from n up.
+    #[inline(always)]
+    fn below_power(self, a: Self::V, n: u32) -> bool {
+        unsafe {
+            let high_bits = _mm256_set1_epi64x(-1i64 << n);
+            _mm256_testz_si256(_mm256_or_si256(a[0], a[1]), high_bits) == 1
         }
     }
 

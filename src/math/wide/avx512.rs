@@ -21,8 +21,8 @@ use core::arch::x86_64::{
     _mm512_permutex2var_epi64, _mm512_permutexvar_epi64, _mm512_reduce_add_epi64,
     _mm512_reduce_or_epi64, _mm512_set_epi64, _mm512_set1_epi64, _mm512_setzero_si512,
     _mm512_sll_epi64, _mm512_sllv_epi64, _mm512_sra_epi64, _mm512_srai_epi64, _mm512_srl_epi64,
-    _mm512_srlv_epi64, _mm512_storeu_si512, _mm512_sub_epi64, _mm512_unpackhi_epi64,
-    _mm512_unpacklo_epi64, _mm512_xor_si512,
+    _mm512_srlv_epi64, _mm512_storeu_si512, _mm512_sub_epi64, _mm512_test_epi64_mask,
+    _mm512_unpackhi_epi64, _mm512_unpacklo_epi64, _mm512_xor_si512,
 };
 
 use super::{LANES, Wide};
@@ -371,6 +371,12 @@ impl Wide for Avx512 {
     #[inline(always)]
     fn or_lanes(self, a: __m512i) -> u64 {
         unsafe { _mm512_reduce_or_epi64(a) as u64 }
+    }
+
+    /// One `vptestmq` against the bits from n up.
+    #[inline(always)]
+    fn below_power(self, a: __m512i, n: u32) -> bool {
+        unsafe { _mm512_test_epi64_mask(a, _mm512_set1_epi64(-1i64 << n)) == 0 }
     }
 }
 

@@ -1,159 +1,246 @@
-//! The wave step of I32F32 on the lanes of [`Wide`] (every backend), eight edges or cells
-//! at a time, with the bits of the scalar step ([`super`]).
+//! The wave step of I32F32 in one pass over the rows, eight edges or cells at a time on
+//! the lanes of [`Wide`]: with the processor's backend, or on [`Portable`] lanes where
+//! there is none (the `scalar` cap), with the bits of the scalar step ([`super`]).
 //!
-//! # Layout
+//! # One pass
 //!
-//! The flows along x of row k are the edges (n − 1)k … (n − 1)(k + 1) − 1, between the
-//! cells nk + i and nk + i + 1; the flows along z are one run, edge j between the cells j
-//! and j + n. Both update as q ← (q − p (u_high − u_low))·κ over runs of contiguous
-//! memory. The heights then take the transfers t = (h/s) q of their four edges, read from
-//! two padded copies, so that every cell reads the same four slots:
+//! Row k (cells nk … nk + n − 1) takes, in order: the new flows of its x edges; the new
+//! flows of the z edges to row k + 1 (which read row k + 1 before anything changes it);
+//! on an open border, the outflow of its border cells; then its heights, from the
+//! transfers t = (h/s) q of its four edges:
 //!
 //! ```text
-//! u_c ← u_c + X[c] − X[c + 1] + Z[c] − Z[c + n]
-//! X[c + 1] = t of the x edge from c (0 at a row's last cell), X[0] = 0
-//! Z[c + n] = t of the z edge from c (0 on the last row),     Z[0 … n) = 0
+//! u_i ← u_i + X[i] − X[i + 1] + P[i] − N[i]
+//! X[i + 1] = t of the x edge from cell i (X[0] = X[n] = 0)
+//! P[i] = t of the z edge from row k − 1 (0 on row 0), N[i] = t of the edge to row k + 1
 //! ```
 //!
-//! # Exactness
+//! N becomes P of the next row. Every value is a function of the values before the step
+//! only, as in the scalar step, which takes all flows, then the outflow, then all heights;
+//! and each cell takes its terms in the scalar step's order (outflow, left, right, up,
+//! down). The grid is read and written once, with three rows of transfers beside it.
 //!
-//! The scalar step rounds each product once ([`Fx`]'s `*`: to nearest, ties toward +∞)
-//! and adds exactly unless a sum leaves the format. The kernel computes every product with
-//! [`Wide::mul`], which is that rounding for factors within [−2⁴⁶, 2⁴⁶) as raw bits: the
-//! constants p, κ and h/s are checked once per step, and per lane the heights, the old
-//! flow, the rise u_high − u_low and q − p·rise (whose products are then below 2⁶⁰, no sum
-//! leaving `i64` nor the format). A cell adds five terms within [−2⁴⁶, 2⁴⁶), below 2⁴⁹:
-//! the scalar step's sums, taken in its order (left, right, up, down), never saturate
-//! either, and integer sums do not depend on their order. A block of eight where a check
-//! fails takes the scalar operators, in the scalar order, before anything of it is
-//! written; so does the tail of each run.
+//! # Exactness and range
+//!
+//! The scalar step rounds each product once ([`Fx`]'s `*`: ⌊(a·b + 2³¹)/2³²⌋) and adds
+//! exactly unless a sum leaves the format. The factors p = h c²/s, κ = 1 − γh and h/s are
+//! checked once per step to lie within [−2⁴⁶, 2⁴⁶) as raw bits. Per block of eight edges,
+//! with a = u_low, b = u_high and q the old flow:
+//!
+//! * **narrow** (heights and flows below ½ m, m²/s, as in any calm or wavy pond): when
+//!   a, b and q lie within [−2⁴⁶, 2⁴⁶) and the rise b − a, q − p(b − a), the new flow q′
+//!   and so each product's small factor lie within [−2³¹, 2³¹), each product is
+//!   [`Wide::times`]`::<true>`: two signed 32 × 32 → 64-bit multiplies
+//!   (`_mm256_mul_epi32` on AVX2, one instruction per four lanes), exact in 64 bits. Every
+//!   product is then below 2⁴⁵ and every sum below 2⁴⁸: nothing leaves the format;
+//! * **wide** (heights or flows up to 2¹⁴): else, when a, b, q, the rise, q − p(b − a)
+//!   and q′ lie within [−2⁴⁶, 2⁴⁶), the full [`Wide::mul`];
+//! * else the block takes the scalar operators, lane by lane, before anything of it is
+//!   written.
+//!
+//! A block of heights adds five terms within [−2⁴⁶, 2⁴⁶), below 2⁴⁹, where the scalar
+//! step's sums never saturate either and integer sums do not depend on their order; a
+//! block with a term outside takes the scalar operators in the scalar order. The bounds
+//! are checked on the magnitudes x ^ (x >> 63) of a block, or-ed together, with one test
+//! ([`Wide::below_power`]). A run's last, partial block is padded with calm water.
 
 use super::super::system::WaveScratch;
+use super::{Factors, for_each_border_cell_of_row};
 use crate::math::over_real::{Scalar, Scalars};
+use crate::math::wide::portable::Portable;
 use crate::math::wide::{LANES, Wide, backend, kernel_entry};
 use crate::math::{Fx, Real};
 
-/// The bound every factor must lie within: |x| < 2⁴⁶ as raw bits.
-const BOUND: u64 = 1 << 46;
+/// The bound of every factor and term: |x| < 2⁴⁶ as raw bits.
+const BOUND_BITS: u32 = 46;
 
-/// Whether a constant, checked once per step, lies within [`BOUND`].
-fn within_bound(x: Fx) -> bool {
-    x.to_bits().unsigned_abs() < BOUND
-}
+/// The bound of a narrow product's small factor: [−2³¹, 2³¹).
+const NARROW_BITS: u32 = 31;
 
-/// The scalar flow update of one edge: (q − p (high − low))·κ.
-#[inline(always)]
-fn flow(q: Fx, low: Fx, high: Fx, push: Fx, keep: Fx) -> Fx {
-    (q - push * (high - low)) * keep
-}
-
-/// Every flow of an n-column grid (`columns`) from the `heights`, with the kernel when `R`
-/// is I32F32, a backend runs and the factors `push` (p, m/s) and `keep` (κ) lie within the
-/// bound; returns whether it ran (if not, nothing was written).
-pub(super) fn flows<R: Real>(
-    heights: &[R],
+/// Runs the wave step on `heights`, `flow_x`, `flow_z` of an n-column grid (`columns`)
+/// when `R` is I32F32 and the factors lie within the bound; returns whether it ran (if
+/// not, nothing was written).
+pub(super) fn wave_step<R: Real>(
+    heights: &mut [R],
     flow_x: &mut [R],
     flow_z: &mut [R],
     columns: usize,
-    push: R,
-    keep: R,
-) -> bool {
-    let (Some(backend), Some(u), Some(qx), Some(qz), Some(&push), Some(&keep)) = (
-        backend(),
-        R::as_fixed::<Scalars>(heights),
-        R::as_fixed_mut::<Scalars>(flow_x),
-        R::as_fixed_mut::<Scalars>(flow_z),
-        R::as_fixed::<Scalar>(&push),
-        R::as_fixed::<Scalar>(&keep),
-    ) else {
-        return false;
-    };
-    if !within_bound(push) || !within_bound(keep) {
-        return false;
-    }
-    flows_on(backend, u, qx, qz, columns, push, keep);
-    true
-}
-
-/// Every height from the new flows, as [`flows`] (`carry` is h/s, s/m).
-pub(super) fn heights<R: Real>(
-    heights: &mut [R],
-    flow_x: &[R],
-    flow_z: &[R],
-    columns: usize,
-    carry: R,
+    factors: &Factors<R>,
     scratch: &mut WaveScratch,
 ) -> bool {
-    let (Some(backend), Some(u), Some(qx), Some(qz), Some(&carry)) = (
-        backend(),
+    let fixed = |x: &R| R::as_fixed::<Scalar>(x).copied();
+    let (Some(u), Some(qx), Some(qz), Some(push), Some(keep), Some(carry)) = (
         R::as_fixed_mut::<Scalars>(heights),
-        R::as_fixed::<Scalars>(flow_x),
-        R::as_fixed::<Scalars>(flow_z),
-        R::as_fixed::<Scalar>(&carry),
+        R::as_fixed_mut::<Scalars>(flow_x),
+        R::as_fixed_mut::<Scalars>(flow_z),
+        fixed(&factors.push),
+        fixed(&factors.keep),
+        fixed(&factors.carry),
     ) else {
         return false;
     };
-    if !within_bound(carry) {
+    let leave = match &factors.leave {
+        Some(leave) => match fixed(leave) {
+            Some(leave) => Some(leave),
+            None => return false,
+        },
+        None => None,
+    };
+    let within = |x: Fx| x.to_bits().unsigned_abs() < 1 << BOUND_BITS;
+    if !within(push) || !within(keep) || !within(carry) {
         return false;
     }
-    let cells = u.len();
-    scratch.x.resize(cells + 1, Fx::ZERO);
-    scratch.z.resize(cells + columns, Fx::ZERO);
-    heights_on(backend, u, qx, qz, columns, carry, scratch);
+    let factors = Factors {
+        push,
+        keep,
+        carry,
+        leave,
+    };
+    match backend() {
+        Some(backend) => step_on(backend, u, qx, qz, columns, factors, scratch),
+        None => step_kernel(Portable, u, qx, qz, columns, factors, scratch),
+    }
     true
 }
 
 kernel_entry! {
-    /// [`flows_kernel`] with the instructions of `backend`.
-    fn flows_on(
-        u: &[Fx],
+    /// [`step_kernel`] with the instructions of `backend`.
+    fn step_on(
+        u: &mut [Fx],
         qx: &mut [Fx],
         qz: &mut [Fx],
         n: usize,
-        push: Fx,
-        keep: Fx,
-    ) -> () = flows_kernel;
-}
-
-kernel_entry! {
-    /// [`heights_kernel`] with the instructions of `backend`.
-    fn heights_on(
-        u: &mut [Fx],
-        qx: &[Fx],
-        qz: &[Fx],
-        n: usize,
-        carry: Fx,
+        factors: Factors<Fx>,
         scratch: &mut WaveScratch,
-    ) -> () = heights_kernel;
+    ) -> () = step_kernel;
 }
 
-/// The flows along x, row by row, then along z, in one run.
+/// The factors p, κ and h/s in every lane.
+#[derive(Clone, Copy)]
+struct Lanes<V> {
+    push: V,
+    keep: V,
+    carry: V,
+}
+
+/// The step, row by row ([module](self) documentation).
 #[inline(always)]
-fn flows_kernel<W: Wide>(
+fn step_kernel<W: Wide>(
     w: W,
-    u: &[Fx],
+    u: &mut [Fx],
     qx: &mut [Fx],
     qz: &mut [Fx],
     n: usize,
-    push: Fx,
-    keep: Fx,
+    factors: Factors<Fx>,
+    scratch: &mut WaveScratch,
 ) {
     let rows = u.len() / n;
-    for k in 0..rows {
-        let cells = &u[n * k..n * (k + 1)];
-        let edges = &mut qx[(n - 1) * k..(n - 1) * (k + 1)];
-        flow_run(w, edges, &cells[..n - 1], &cells[1..], push, keep);
+    let lanes = Lanes {
+        push: w.splat(factors.push.to_bits()),
+        keep: w.splat(factors.keep.to_bits()),
+        carry: w.splat(factors.carry.to_bits()),
+    };
+    let WaveScratch { x, previous, next } = scratch;
+    for buffer in [&mut *x, &mut *previous, &mut *next] {
+        buffer.clear();
+        buffer.resize(n + 1, Fx::ZERO);
     }
-    let edges = n * (rows - 1);
-    flow_run(w, &mut qz[..edges], &u[..edges], &u[n..], push, keep);
+    for k in 0..rows {
+        let row = n * k..n * (k + 1);
+        let edges = (n - 1) * k..(n - 1) * (k + 1);
+        flow_run(
+            w,
+            &lanes,
+            &factors,
+            &mut qx[edges],
+            &u[row.start..row.end - 1],
+            &u[row.start + 1..row.end],
+            &mut x[1..n],
+        );
+        if k + 1 < rows {
+            flow_run(
+                w,
+                &lanes,
+                &factors,
+                &mut qz[row.clone()],
+                &u[row.clone()],
+                &u[row.end..row.end + n],
+                &mut next[..n],
+            );
+        } else {
+            next.fill(Fx::ZERO);
+        }
+        if let Some(leave) = factors.leave {
+            for_each_border_cell_of_row(n, rows, k, |cell, outer_edges| {
+                let t = leave * u[cell];
+                for _ in 0..outer_edges {
+                    u[cell] -= t;
+                }
+            });
+        }
+        height_run(w, &mut u[row], x, previous, next);
+        core::mem::swap(previous, next);
+    }
 }
 
-/// q_j ← (q_j − p (high_j − low_j))·κ for every j of `q`.
+/// The new flows q′ = (q − p (b − a))·κ of eight edges and their transfers (h/s) q′, from
+/// the heights a (low side) and b (high side) and the old flows q; `None` where a lane
+/// leaves the bounds ([module](self) documentation).
 #[inline(always)]
-fn flow_run<W: Wide>(w: W, q: &mut [Fx], low: &[Fx], high: &[Fx], push: Fx, keep: Fx) {
+fn flow_block<W: Wide>(
+    w: W,
+    lanes: &Lanes<W::V>,
+    a: W::V,
+    b: W::V,
+    q: W::V,
+) -> Option<(W::V, W::V)> {
+    let inputs = w.or(w.or(w.magnitude(a), w.magnitude(b)), w.magnitude(q));
+    if !w.below_power(inputs, BOUND_BITS) {
+        return None;
+    }
+    let rise = w.sub(b, a);
+    let pushed = w.sub(q, w.times::<true>(rise, lanes.push));
+    let new = w.times::<true>(pushed, lanes.keep);
+    let factors = w.or(
+        w.or(w.magnitude(rise), w.magnitude(pushed)),
+        w.magnitude(new),
+    );
+    if w.below_power(factors, NARROW_BITS) {
+        return Some((new, w.times::<true>(new, lanes.carry)));
+    }
+    let pushed = w.sub(q, w.mul(lanes.push, rise));
+    let new = w.mul(pushed, lanes.keep);
+    let factors = w.or(
+        w.or(w.magnitude(rise), w.magnitude(pushed)),
+        w.magnitude(new),
+    );
+    if w.below_power(factors, BOUND_BITS) {
+        return Some((new, w.mul(new, lanes.carry)));
+    }
+    None
+}
+
+/// One edge with the scalar operators: q′ = (q − p (high − low))·κ, t = (h/s) q′.
+#[inline(always)]
+fn flow_one(q: &mut Fx, low: Fx, high: Fx, t: &mut Fx, factors: &Factors<Fx>) {
+    *q = (*q - factors.push * (high - low)) * factors.keep;
+    *t = factors.carry * *q;
+}
+
+/// [`flow_block`] over a run of edges: `q[j]` between the cells `low[j]` and `high[j]`,
+/// its transfer written to `t[j]`.
+#[inline(always)]
+fn flow_run<W: Wide>(
+    w: W,
+    lanes: &Lanes<W::V>,
+    factors: &Factors<Fx>,
+    q: &mut [Fx],
+    low: &[Fx],
+    high: &[Fx],
+    t: &mut [Fx],
+) {
     let len = q.len();
-    assert!(low.len() >= len && high.len() >= len);
-    let (p, kappa) = (w.splat(push.to_bits()), w.splat(keep.to_bits()));
+    assert!(low.len() >= len && high.len() >= len && t.len() >= len);
     let mut j = 0;
     while j + LANES <= len {
         // SAFETY: words j … j + 7 lie in each slice (j + 8 ≤ len ≤ their lengths), and
@@ -165,104 +252,111 @@ fn flow_run<W: Wide>(w: W, q: &mut [Fx], low: &[Fx], high: &[Fx], push: Fx, keep
                 w.load_at(q.as_ptr().add(j).cast()),
             )
         };
-        let rise = w.sub(b, a);
-        let pushed = w.sub(old, w.mul(p, rise));
-        let outside = w.out_of_bound(a)
-            | w.out_of_bound(b)
-            | w.out_of_bound(old)
-            | w.out_of_bound(rise)
-            | w.out_of_bound(pushed);
-        if outside == 0 {
+        if let Some((new, transfer)) = flow_block(w, lanes, a, b, old) {
             // SAFETY: as above.
-            unsafe { w.store_at(q.as_mut_ptr().add(j).cast(), w.mul(pushed, kappa)) };
+            unsafe {
+                w.store_at(q.as_mut_ptr().add(j).cast(), new);
+                w.store_at(t.as_mut_ptr().add(j).cast(), transfer);
+            }
         } else {
             for i in j..j + LANES {
-                q[i] = flow(q[i], low[i], high[i], push, keep);
+                flow_one(&mut q[i], low[i], high[i], &mut t[i], factors);
             }
         }
         j += LANES;
     }
-    for i in j..len {
-        q[i] = flow(q[i], low[i], high[i], push, keep);
+    if j == len {
+        return;
     }
-}
-
-/// The padded transfers, then every height.
-#[inline(always)]
-fn heights_kernel<W: Wide>(
-    w: W,
-    u: &mut [Fx],
-    qx: &[Fx],
-    qz: &[Fx],
-    n: usize,
-    carry: Fx,
-    scratch: &mut WaveScratch,
-) {
-    let cells = u.len();
-    let rows = cells / n;
-    for k in 0..rows {
-        let edges = &qx[(n - 1) * k..(n - 1) * (k + 1)];
-        transfer_run(w, &mut scratch.x[n * k + 1..n * k + n], edges, carry);
-    }
-    transfer_run(w, &mut scratch.z[n..cells], &qz[..cells - n], carry);
-    let (x, z) = (&scratch.x, &scratch.z);
-    assert!(x.len() > cells && z.len() >= cells + n);
-    let mut c = 0;
-    while c + LANES <= cells {
-        // SAFETY: c + 8 ≤ cells, so words c … c + 8 of `x` (cells + 1 long) and c … c + 7 + n
-        // of `z` (cells + n long) and c … c + 7 of `u` exist.
-        let (height, left, right, up, down) = unsafe {
-            (
-                w.load_at(u.as_ptr().add(c).cast()),
-                w.load_at(x.as_ptr().add(c).cast()),
-                w.load_at(x.as_ptr().add(c + 1).cast()),
-                w.load_at(z.as_ptr().add(c).cast()),
-                w.load_at(z.as_ptr().add(c + n).cast()),
-            )
-        };
-        let outside = w.out_of_bound(height)
-            | w.out_of_bound(left)
-            | w.out_of_bound(right)
-            | w.out_of_bound(up)
-            | w.out_of_bound(down);
-        if outside == 0 {
-            let along_x = w.sub(w.add(height, left), right);
-            let new = w.sub(w.add(along_x, up), down);
-            // SAFETY: as above.
-            unsafe { w.store_at(u.as_mut_ptr().add(c).cast(), new) };
-        } else {
-            for i in c..c + LANES {
-                u[i] = u[i] + x[i] - x[i + 1] + z[i] - z[i + n];
-            }
+    let padded = |values: &[Fx]| {
+        let mut words = [0; LANES];
+        for (word, value) in words.iter_mut().zip(&values[j..len]) {
+            *word = value.to_bits();
         }
-        c += LANES;
-    }
-    for i in c..cells {
-        u[i] = u[i] + x[i] - x[i + 1] + z[i] - z[i + n];
+        w.load_words(words)
+    };
+    let (a, b, old) = (padded(low), padded(high), padded(q));
+    if let Some((new, transfer)) = flow_block(w, lanes, a, b, old) {
+        let (new, transfer) = (w.store_words(new), w.store_words(transfer));
+        for i in j..len {
+            q[i] = Fx::from_bits(new[i - j]);
+            t[i] = Fx::from_bits(transfer[i - j]);
+        }
+    } else {
+        for i in j..len {
+            flow_one(&mut q[i], low[i], high[i], &mut t[i], factors);
+        }
     }
 }
 
-/// t_j = (h/s)·q_j for every j of `t`.
+/// u + left − right + up − down for eight cells; `None` where a term leaves the bound.
 #[inline(always)]
-fn transfer_run<W: Wide>(w: W, t: &mut [Fx], q: &[Fx], carry: Fx) {
-    let len = t.len();
-    assert!(q.len() >= len);
-    let factor = w.splat(carry.to_bits());
+fn height_block<W: Wide>(w: W, terms: [W::V; 5]) -> Option<W::V> {
+    let [u, left, right, up, down] = terms;
+    let magnitudes = w.or(
+        w.or(w.magnitude(u), w.magnitude(left)),
+        w.or(w.or(w.magnitude(right), w.magnitude(up)), w.magnitude(down)),
+    );
+    if !w.below_power(magnitudes, BOUND_BITS) {
+        return None;
+    }
+    Some(w.sub(w.add(w.sub(w.add(u, left), right), up), down))
+}
+
+/// The heights of one row: u_i ← u_i + x[i] − x[i + 1] + up[i] − down[i].
+#[inline(always)]
+fn height_run<W: Wide>(w: W, u: &mut [Fx], x: &[Fx], up: &[Fx], down: &[Fx]) {
+    let len = u.len();
+    assert!(x.len() > len && up.len() >= len && down.len() >= len);
+    let one = |u: &mut [Fx], i: usize| u[i] = u[i] + x[i] - x[i + 1] + up[i] - down[i];
     let mut j = 0;
     while j + LANES <= len {
-        // SAFETY: words j … j + 7 lie in both slices, `Fx` an `i64`.
-        let flow = unsafe { w.load_at(q.as_ptr().add(j).cast()) };
-        if w.out_of_bound(flow) == 0 {
+        // SAFETY: j + 8 ≤ len, so words j … j + 8 of `x` (longer than `u`) and j … j + 7 of
+        // `u`, `up` and `down` exist.
+        let terms = unsafe {
+            [
+                w.load_at(u.as_ptr().add(j).cast()),
+                w.load_at(x.as_ptr().add(j).cast()),
+                w.load_at(x.as_ptr().add(j + 1).cast()),
+                w.load_at(up.as_ptr().add(j).cast()),
+                w.load_at(down.as_ptr().add(j).cast()),
+            ]
+        };
+        if let Some(new) = height_block(w, terms) {
             // SAFETY: as above.
-            unsafe { w.store_at(t.as_mut_ptr().add(j).cast(), w.mul(factor, flow)) };
+            unsafe { w.store_at(u.as_mut_ptr().add(j).cast(), new) };
         } else {
             for i in j..j + LANES {
-                t[i] = carry * q[i];
+                one(u, i);
             }
         }
         j += LANES;
     }
-    for i in j..len {
-        t[i] = carry * q[i];
+    if j == len {
+        return;
+    }
+    let padded = |values: &[Fx], from: usize| {
+        let mut words = [0; LANES];
+        for (word, value) in words.iter_mut().zip(&values[from..from + len - j]) {
+            *word = value.to_bits();
+        }
+        w.load_words(words)
+    };
+    let terms = [
+        padded(u, j),
+        padded(x, j),
+        padded(x, j + 1),
+        padded(up, j),
+        padded(down, j),
+    ];
+    if let Some(new) = height_block(w, terms) {
+        let new = w.store_words(new);
+        for i in j..len {
+            u[i] = Fx::from_bits(new[i - j]);
+        }
+    } else {
+        for i in j..len {
+            one(u, i);
+        }
     }
 }
