@@ -7,7 +7,7 @@
 //! | `avx2` | x86-64: AVX2 where the processor has it, else none |
 //! | `neon` | aarch64: NEON |
 //! | `simd128` | wasm32 built with `+simd128` (`RUSTFLAGS="-C target-feature=+simd128"`): `simd128` |
-//! | `scalar` | none: every stage runs its scalar code |
+//! | `scalar` | none: every stage runs its scalar code (the water step its kernel on plain-Rust lanes, `math::wide::portable`) |
 //!
 //! Every kernel gives the bits of the scalar code it replaces, so the cap changes speed
 //! only, never a result; it exists so that one machine can run, and the determinism matrix

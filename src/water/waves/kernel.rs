@@ -27,12 +27,13 @@
 //! checked once per step to lie within [−2⁴⁶, 2⁴⁶) as raw bits. Per block of eight edges,
 //! with a = u_low, b = u_high and q the old flow:
 //!
-//! * **narrow** (heights and flows below ½ m, m²/s, as in any calm or wavy pond): when
-//!   a, b and q lie within [−2⁴⁶, 2⁴⁶) and the rise b − a, q − p(b − a), the new flow q′
-//!   and so each product's small factor lie within [−2³¹, 2³¹), each product is
-//!   [`Wide::times`]`::<true>`: two signed 32 × 32 → 64-bit multiplies
+//! * **narrow** (heights and flows within about ¼ m, m²/s, as in any calm or wavy pond):
+//!   when a, b and q lie within [−2ⁿ, 2ⁿ), n ≤ 30 the largest for which the rise b − a,
+//!   q − p(b − a) and the new flow q′ are sure to lie within [−2³¹, 2³¹) (worked out once
+//!   per step from p and κ in `i128`, [`narrow_input_bits`]), each product has a small
+//!   factor there and is [`Wide::times`]`::<true>`: two signed 32 × 32 → 64-bit multiplies
 //!   (`_mm256_mul_epi32` on AVX2, one instruction per four lanes), exact in 64 bits. Every
-//!   product is then below 2⁴⁵ and every sum below 2⁴⁸: nothing leaves the format;
+//!   product is then below 2⁴⁵ + 1 and every sum below 2⁴⁸: nothing leaves the format;
 //! * **wide** (heights or flows up to 2¹⁴): else, when a, b, q, the rise, q − p(b − a)
 //!   and q′ lie within [−2⁴⁶, 2⁴⁶), the full [`Wide::mul`];
 //! * else the block takes the scalar operators, lane by lane, before anything of it is
@@ -40,9 +41,11 @@
 //!
 //! A block of heights adds five terms within [−2⁴⁶, 2⁴⁶), below 2⁴⁹, where the scalar
 //! step's sums never saturate either and integer sums do not depend on their order; a
-//! block with a term outside takes the scalar operators in the scalar order. The bounds
-//! are checked on the magnitudes x ^ (x >> 63) of a block, or-ed together, with one test
-//! ([`Wide::below_power`]). A run's last, partial block is padded with calm water.
+//! block with a term outside takes the scalar operators in the scalar order. When the
+//! narrow tier made every transfer a row reads (each below 2⁴⁵ + 1), only u is checked.
+//! The bounds are checked on the magnitudes x ^ (x >> 63) of a block, or-ed together,
+//! with one test ([`Wide::below_power`]). A run's last, partial block is padded with calm
+//! water.
 
 use super::super::system::WaveScratch;
 use super::{Factors, for_each_border_cell_of_row};
@@ -53,9 +56,6 @@ use crate::math::{Fx, Real};
 
 /// The bound of every factor and term: |x| < 2⁴⁶ as raw bits.
 const BOUND_BITS: u32 = 46;
-
-/// The bound of a narrow product's small factor: [−2³¹, 2³¹).
-const NARROW_BITS: u32 = 31;
 
 /// Runs the wave step on `heights`, `flow_x`, `flow_z` of an n-column grid (`columns`)
 /// when `R` is I32F32 and the factors lie within the bound; returns whether it ran (if
@@ -115,12 +115,28 @@ kernel_entry! {
     ) -> () = step_kernel;
 }
 
-/// The factors p, κ and h/s in every lane.
+/// The factors p, κ and h/s in every lane, and the bound n of the narrow tier's inputs.
 #[derive(Clone, Copy)]
 struct Lanes<V> {
     push: V,
     keep: V,
     carry: V,
+    narrow_bits: Option<u32>,
+}
+
+/// The largest n ≤ 30 such that heights and old flows within [−2ⁿ, 2ⁿ) keep every small
+/// factor of the narrow products within [−2³¹, 2³¹), for the factors p (`push`) and κ
+/// (`keep`); `None` if there is none. The rise is then below 2ⁿ⁺¹ ≤ 2³¹; p times it,
+/// rounded, at most 2ⁿ⁺¹|p|/2³² + 1; q − p·rise at most 2ⁿ plus that; and q′ at most
+/// |q − p·rise|·|κ|/2³² + 1, all as raw bits, computed exactly in `i128`.
+fn narrow_input_bits(push: Fx, keep: Fx) -> Option<u32> {
+    let p = i128::from(push.to_bits().unsigned_abs());
+    let kappa = i128::from(keep.to_bits().unsigned_abs());
+    (0..=30).rev().find(|&n| {
+        let pushed = (1 << n) + (((1 << (n + 1)) * p) >> 32) + 1;
+        let new = ((pushed * kappa) >> 32) + 1;
+        pushed < 1 << 31 && new < 1 << 31
+    })
 }
 
 /// The step, row by row ([module](self) documentation).
@@ -139,16 +155,18 @@ fn step_kernel<W: Wide>(
         push: w.splat(factors.push.to_bits()),
         keep: w.splat(factors.keep.to_bits()),
         carry: w.splat(factors.carry.to_bits()),
+        narrow_bits: narrow_input_bits(factors.push, factors.keep),
     };
     let WaveScratch { x, previous, next } = scratch;
     for buffer in [&mut *x, &mut *previous, &mut *next] {
         buffer.clear();
         buffer.resize(n + 1, Fx::ZERO);
     }
+    let mut previous_narrow = true;
     for k in 0..rows {
         let row = n * k..n * (k + 1);
         let edges = (n - 1) * k..(n - 1) * (k + 1);
-        flow_run(
+        let x_narrow = flow_run(
             w,
             &lanes,
             &factors,
@@ -157,7 +175,7 @@ fn step_kernel<W: Wide>(
             &u[row.start + 1..row.end],
             &mut x[1..n],
         );
-        if k + 1 < rows {
+        let next_narrow = if k + 1 < rows {
             flow_run(
                 w,
                 &lanes,
@@ -166,10 +184,11 @@ fn step_kernel<W: Wide>(
                 &u[row.clone()],
                 &u[row.end..row.end + n],
                 &mut next[..n],
-            );
+            )
         } else {
             next.fill(Fx::ZERO);
-        }
+            true
+        };
         if let Some(leave) = factors.leave {
             for_each_border_cell_of_row(n, rows, k, |cell, outer_edges| {
                 let t = leave * u[cell];
@@ -178,14 +197,20 @@ fn step_kernel<W: Wide>(
                 }
             });
         }
-        height_run(w, &mut u[row], x, previous, next);
+        if x_narrow && previous_narrow && next_narrow {
+            height_run::<W, true>(w, &mut u[row], x, previous, next);
+        } else {
+            height_run::<W, false>(w, &mut u[row], x, previous, next);
+        }
         core::mem::swap(previous, next);
+        previous_narrow = next_narrow;
     }
 }
 
 /// The new flows q′ = (q − p (b − a))·κ of eight edges and their transfers (h/s) q′, from
-/// the heights a (low side) and b (high side) and the old flows q; `None` where a lane
-/// leaves the bounds ([module](self) documentation).
+/// the heights a (low side) and b (high side) and the old flows q, and whether the narrow
+/// tier took them (each transfer then below 2⁴⁵ + 1); `None` where a lane leaves the
+/// bounds ([module](self) documentation).
 #[inline(always)]
 fn flow_block<W: Wide>(
     w: W,
@@ -193,20 +218,18 @@ fn flow_block<W: Wide>(
     a: W::V,
     b: W::V,
     q: W::V,
-) -> Option<(W::V, W::V)> {
+) -> Option<(W::V, W::V, bool)> {
     let inputs = w.or(w.or(w.magnitude(a), w.magnitude(b)), w.magnitude(q));
+    let rise = w.sub(b, a);
+    if let Some(bits) = lanes.narrow_bits
+        && w.below_power(inputs, bits)
+    {
+        let pushed = w.sub(q, w.times::<true>(rise, lanes.push));
+        let new = w.times::<true>(pushed, lanes.keep);
+        return Some((new, w.times::<true>(new, lanes.carry), true));
+    }
     if !w.below_power(inputs, BOUND_BITS) {
         return None;
-    }
-    let rise = w.sub(b, a);
-    let pushed = w.sub(q, w.times::<true>(rise, lanes.push));
-    let new = w.times::<true>(pushed, lanes.keep);
-    let factors = w.or(
-        w.or(w.magnitude(rise), w.magnitude(pushed)),
-        w.magnitude(new),
-    );
-    if w.below_power(factors, NARROW_BITS) {
-        return Some((new, w.times::<true>(new, lanes.carry)));
     }
     let pushed = w.sub(q, w.mul(lanes.push, rise));
     let new = w.mul(pushed, lanes.keep);
@@ -215,7 +238,7 @@ fn flow_block<W: Wide>(
         w.magnitude(new),
     );
     if w.below_power(factors, BOUND_BITS) {
-        return Some((new, w.mul(new, lanes.carry)));
+        return Some((new, w.mul(new, lanes.carry), false));
     }
     None
 }
@@ -228,7 +251,7 @@ fn flow_one(q: &mut Fx, low: Fx, high: Fx, t: &mut Fx, factors: &Factors<Fx>) {
 }
 
 /// [`flow_block`] over a run of edges: `q[j]` between the cells `low[j]` and `high[j]`,
-/// its transfer written to `t[j]`.
+/// its transfer written to `t[j]`; returns whether the narrow tier took them all.
 #[inline(always)]
 fn flow_run<W: Wide>(
     w: W,
@@ -238,9 +261,10 @@ fn flow_run<W: Wide>(
     low: &[Fx],
     high: &[Fx],
     t: &mut [Fx],
-) {
+) -> bool {
     let len = q.len();
     assert!(low.len() >= len && high.len() >= len && t.len() >= len);
+    let mut all_narrow = true;
     let mut j = 0;
     while j + LANES <= len {
         // SAFETY: words j … j + 7 lie in each slice (j + 8 ≤ len ≤ their lengths), and
@@ -252,13 +276,15 @@ fn flow_run<W: Wide>(
                 w.load_at(q.as_ptr().add(j).cast()),
             )
         };
-        if let Some((new, transfer)) = flow_block(w, lanes, a, b, old) {
+        if let Some((new, transfer, narrow)) = flow_block(w, lanes, a, b, old) {
             // SAFETY: as above.
             unsafe {
                 w.store_at(q.as_mut_ptr().add(j).cast(), new);
                 w.store_at(t.as_mut_ptr().add(j).cast(), transfer);
             }
+            all_narrow &= narrow;
         } else {
+            all_narrow = false;
             for i in j..j + LANES {
                 flow_one(&mut q[i], low[i], high[i], &mut t[i], factors);
             }
@@ -266,7 +292,7 @@ fn flow_run<W: Wide>(
         j += LANES;
     }
     if j == len {
-        return;
+        return all_narrow;
     }
     let padded = |values: &[Fx]| {
         let mut words = [0; LANES];
@@ -276,36 +302,45 @@ fn flow_run<W: Wide>(
         w.load_words(words)
     };
     let (a, b, old) = (padded(low), padded(high), padded(q));
-    if let Some((new, transfer)) = flow_block(w, lanes, a, b, old) {
+    if let Some((new, transfer, narrow)) = flow_block(w, lanes, a, b, old) {
         let (new, transfer) = (w.store_words(new), w.store_words(transfer));
         for i in j..len {
             q[i] = Fx::from_bits(new[i - j]);
             t[i] = Fx::from_bits(transfer[i - j]);
         }
+        all_narrow && narrow
     } else {
         for i in j..len {
             flow_one(&mut q[i], low[i], high[i], &mut t[i], factors);
         }
+        false
     }
 }
 
 /// u + left − right + up − down for eight cells; `None` where a term leaves the bound.
+/// With `NARROW` transfers (each below 2⁴⁵ + 1, from the narrow tier or padding) only u
+/// is checked.
 #[inline(always)]
-fn height_block<W: Wide>(w: W, terms: [W::V; 5]) -> Option<W::V> {
+fn height_block<W: Wide, const NARROW: bool>(w: W, terms: [W::V; 5]) -> Option<W::V> {
     let [u, left, right, up, down] = terms;
-    let magnitudes = w.or(
-        w.or(w.magnitude(u), w.magnitude(left)),
-        w.or(w.or(w.magnitude(right), w.magnitude(up)), w.magnitude(down)),
-    );
+    let magnitudes = if NARROW {
+        w.magnitude(u)
+    } else {
+        let (x, z) = (
+            w.or(w.magnitude(left), w.magnitude(right)),
+            w.or(w.magnitude(up), w.magnitude(down)),
+        );
+        w.or(w.magnitude(u), w.or(x, z))
+    };
     if !w.below_power(magnitudes, BOUND_BITS) {
         return None;
     }
     Some(w.sub(w.add(w.sub(w.add(u, left), right), up), down))
 }
 
-/// The heights of one row: u_i ← u_i + x[i] − x[i + 1] + up[i] − down[i].
+/// The heights of one row: u_i ← u_i + x[i] − x[i + 1] + up[i] − down[i] ([`height_block`]).
 #[inline(always)]
-fn height_run<W: Wide>(w: W, u: &mut [Fx], x: &[Fx], up: &[Fx], down: &[Fx]) {
+fn height_run<W: Wide, const NARROW: bool>(w: W, u: &mut [Fx], x: &[Fx], up: &[Fx], down: &[Fx]) {
     let len = u.len();
     assert!(x.len() > len && up.len() >= len && down.len() >= len);
     let one = |u: &mut [Fx], i: usize| u[i] = u[i] + x[i] - x[i + 1] + up[i] - down[i];
@@ -322,7 +357,7 @@ fn height_run<W: Wide>(w: W, u: &mut [Fx], x: &[Fx], up: &[Fx], down: &[Fx]) {
                 w.load_at(down.as_ptr().add(j).cast()),
             ]
         };
-        if let Some(new) = height_block(w, terms) {
+        if let Some(new) = height_block::<W, NARROW>(w, terms) {
             // SAFETY: as above.
             unsafe { w.store_at(u.as_mut_ptr().add(j).cast(), new) };
         } else {
@@ -349,7 +384,7 @@ fn height_run<W: Wide>(w: W, u: &mut [Fx], x: &[Fx], up: &[Fx], down: &[Fx]) {
         padded(up, j),
         padded(down, j),
     ];
-    if let Some(new) = height_block(w, terms) {
+    if let Some(new) = height_block::<W, NARROW>(w, terms) {
         let new = w.store_words(new);
         for i in j..len {
             u[i] = Fx::from_bits(new[i - j]);
