@@ -338,7 +338,7 @@ fn height_block<W: Wide, const NARROW: bool>(w: W, terms: [W::V; 5]) -> Option<W
     Some(w.sub(w.add(w.sub(w.add(u, left), right), up), down))
 }
 
-/// The heights of one row: u_i ← u_i + x[i] − x[i + 1] + up[i] − down[i] ([`height_block`]).
+/// The heights of one row: `u[i] += x[i] − x[i + 1] + up[i] − down[i]` ([`height_block`]).
 #[inline(always)]
 fn height_run<W: Wide, const NARROW: bool>(w: W, u: &mut [Fx], x: &[Fx], up: &[Fx], down: &[Fx]) {
     let len = u.len();
