@@ -123,7 +123,7 @@ impl<R: Real> Distances<R> {
             share_b: &f.share_b[rows.clone()],
             relax: &f.relax[rows.clone()],
             #[cfg(vector_kernels)]
-            independent: if rows.start % crate::math::wide::LANES == 0 {
+            independent: if rows.start.is_multiple_of(crate::math::wide::LANES) {
                 f.independent
                     .get(rows.start / crate::math::wide::LANES..)
                     .unwrap_or(&[])
