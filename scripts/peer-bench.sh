@@ -7,6 +7,7 @@
 # quality figure computed the same way for every engine.
 #   ./scripts/peer-bench.sh [ROUNDS] [SCENE ...]          (default 5 rounds, every scene)
 #   ./scripts/peer-bench.sh --wasm [ROUNDS] [SCENE ...]
+#   ./scripts/peer-bench.sh --threads N [ROUNDS] [SCENE ...]
 # SCENE also takes `queries` (rays and sphere overlaps on balls and pyramid, queries/s) and
 # `filters` (fixstep's balls with non-default filters against the default) and `characters`
 # (1000 characters among 10,000 boxes beside Rapier's KinematicCharacterController).
@@ -18,14 +19,24 @@
 # Node >= 20 and `rustup target add wasm32-wasip1`). FIXSTEP_SIMD reaches the wasm
 # program (`scalar` caps the simd128 build's kernels).
 # $target is ${CARGO_TARGET_DIR:-target}, relative to bench/peers.
+# --threads N: both engines on threads (Rapier's `parallel` feature on rayon, fixstep's
+# pool), built once into $target/parallel and run at 1 thread, then at N
+# (RAYON_NUM_THREADS and FIXSTEP_THREADS), in Rapier's default mode.
 # The first build downloads and compiles Rapier (a few minutes on two cores).
 set -euo pipefail
 
-wasm=0 args=()
-for a in "$@"; do
+wasm=0 threads=0 args=()
+while [[ $# -gt 0 ]]; do
+  a=$1; shift
   case $a in
     --wasm) wasm=1 ;;
-    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --threads)
+      threads=${1:-}; shift || true
+      if [[ ! $threads =~ ^[1-9][0-9]*$ ]]; then
+        echo "error: --threads takes a positive whole number, not \`$threads\`" >&2
+        exit 2
+      fi ;;
+    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "error: unknown option \`$a\` (see --help)" >&2; exit 2 ;;
     *) args+=("$a") ;;
   esac
@@ -37,6 +48,15 @@ fi
 cd "$(dirname "$0")/../bench/peers"
 
 target=${CARGO_TARGET_DIR:-target}
+if [[ $threads -gt 0 ]]; then
+  cargo build --release --locked --target-dir "$target/parallel" --features parallel
+  for n in 1 "$threads"; do
+    echo "# Rapier parallel and fixstep, $n thread(s)"
+    RAYON_NUM_THREADS=$n FIXSTEP_THREADS=$n "$target/parallel/release/fixstep-peers" "${args[@]}"
+    echo
+  done
+  exit 0
+fi
 if [[ $wasm -eq 0 ]]; then
   cargo build --release --locked --target-dir "$target/default"
   cargo build --release --locked --target-dir "$target/enhanced-determinism" \

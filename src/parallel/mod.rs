@@ -324,6 +324,63 @@ pub fn map_collect<T: Send>(n: usize, chunk_len: usize, f: impl Fn(usize) -> T +
     (0..n).map(f).collect()
 }
 
+/// `f(job)` for every job, on the workers when [`splits`] (a plain loop otherwise). Each
+/// job owns what it writes (disjoint `&mut` pieces cut by the caller), so the jobs may run
+/// in any order; the caller cuts them from the data, never from the thread count.
+pub fn for_each_job<J: Send>(jobs: Vec<J>, f: impl Fn(J) + Sync) {
+    #[cfg(feature = "parallel")]
+    if jobs.len() > 1 && splits() {
+        use rayon::prelude::*;
+        let saturations: u64 = jobs
+            .into_par_iter()
+            .map(|job| isolate_saturations(|| f(job)).1)
+            .sum();
+        add_saturations(saturations);
+        return;
+    }
+    jobs.into_iter().for_each(f);
+}
+
+/// The writes [`scatter_sorted`] hands to one call at a time.
+pub const SCATTER_CHUNK: usize = 1024;
+
+/// `f(&mut items[index], slot)` for every `(index, slot)` of `writes`, which are sorted by
+/// strictly increasing index: on the workers when [`splits`], the writes cut into chunks
+/// of [`SCATTER_CHUNK`] and `items` into the disjoint ranges they fall in.
+pub fn scatter_sorted<T: Send>(
+    items: &mut [T],
+    writes: &[(u32, u32)],
+    f: impl Fn(&mut T, usize) + Sync,
+) {
+    #[cfg(feature = "parallel")]
+    if writes.len() > SCATTER_CHUNK && splits() {
+        let mut jobs = Vec::with_capacity(writes.len().div_ceil(SCATTER_CHUNK));
+        let mut rest = items;
+        let mut base = 0;
+        let mut chunks = writes.chunks(SCATTER_CHUNK).peekable();
+        while let Some(chunk) = chunks.next() {
+            let start = chunk[0].0 as usize;
+            let end = chunks
+                .peek()
+                .map_or(base + rest.len(), |next| next[0].0 as usize);
+            let (_, tail) = rest.split_at_mut(start - base);
+            let (piece, tail) = tail.split_at_mut(end - start);
+            rest = tail;
+            base = end;
+            jobs.push((start, piece, chunk));
+        }
+        for_each_job(jobs, |(start, piece, chunk)| {
+            for &(index, slot) in chunk {
+                f(&mut piece[index as usize - start], slot as usize);
+            }
+        });
+        return;
+    }
+    for &(index, slot) in writes {
+        f(&mut items[index as usize], slot as usize);
+    }
+}
+
 /// The chunks of `0..n` that [`fold_chunks`] sums over: `chunk_len` indices each, the last
 /// shorter; they depend on `n` and `chunk_len` only.
 pub fn chunks(n: usize, chunk_len: usize) -> impl Iterator<Item = Range<usize>> {

@@ -86,6 +86,42 @@ fn helpers_give_the_plain_loops_result_at_any_thread_count() {
     }
 }
 
+/// Jobs and sorted scatters give the plain loop's result on 1, 2, 3 and 8 threads, the
+/// scatter's chunks falling on uneven index ranges, and count the jobs' saturations.
+#[test]
+fn jobs_and_scatters_give_the_plain_loops_result_at_any_thread_count() {
+    let n = 10_000;
+    // Every third index, written from slot 2·index + 1.
+    let writes: Vec<(u32, u32)> = (0..n as u32)
+        .filter(|i| i % 3 == 0)
+        .map(|i| (i, 2 * i + 1))
+        .collect();
+    for threads in [1, 2, 3, 8] {
+        let pool = Pool::new(threads);
+        let ((items, doubled), saturations) = count_saturations(|| {
+            pool.run(|| {
+                let mut items = vec![0u64; n];
+                scatter_sorted(&mut items, &writes, |x, slot| *x = slot as u64);
+                let mut doubled = vec![0u64; n];
+                let jobs: Vec<_> = doubled.chunks_mut(700).enumerate().collect();
+                for_each_job(jobs, |(c, chunk)| {
+                    record_saturation();
+                    for (k, x) in chunk.iter_mut().enumerate() {
+                        *x = 2 * (c * 700 + k) as u64;
+                    }
+                });
+                (items, doubled)
+            })
+        });
+        for (i, &x) in items.iter().enumerate() {
+            let want = if i % 3 == 0 { 2 * i as u64 + 1 } else { 0 };
+            assert_eq!(x, want, "{threads} threads, item {i}");
+        }
+        assert!(doubled.iter().enumerate().all(|(i, &x)| x == 2 * i as u64));
+        assert_eq!(saturations, n.div_ceil(700) as u64, "{threads} threads");
+    }
+}
+
 #[test]
 fn one_thread_has_no_workers_and_does_not_split() {
     let pool = Pool::new(1);

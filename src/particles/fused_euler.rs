@@ -86,31 +86,56 @@ pub(super) fn step_portable<R: Real>(
     kinematics: &mut Kinematics<R>,
     attributes: &Attributes<R>,
 ) {
-    let mut buffers = Buffers::new();
-    for_each_block(kinematics, attributes, |block| {
-        block.step_portable(&mut buffers, field, h);
+    for_each_block(kinematics, attributes, |block, buffers| {
+        block.step_portable(buffers, field, h);
     });
 }
 
-/// Calls `f` on each block of [`BLOCK`] slots in turn.
+/// Slots a chunk of a step split across a pool's workers holds: whole blocks, so the
+/// blocks are those of one thread.
+const CHUNK: usize = 16 * BLOCK;
+
+/// Calls `f` on each block of [`BLOCK`] slots, with block buffers to reuse: in turn on one
+/// thread, or in chunks of [`CHUNK`] slots across the workers when the loop splits
+/// ([`crate::parallel::splits`]). Each block's step reads and writes its own slots only,
+/// so the order changes no bit.
 fn for_each_block<R: Real>(
     kinematics: &mut Kinematics<R>,
     attributes: &Attributes<R>,
-    mut f: impl FnMut(Block<'_, R>),
+    f: impl Fn(Block<'_, R>, &mut Buffers<R>) + Sync,
 ) {
     let slots = kinematics.positions.len();
-    let mut start = 0;
-    while start < slots {
-        let range = start..slots.min(start + BLOCK);
-        f(Block {
-            positions: &mut kinematics.positions[range.clone()],
-            velocities: &mut kinematics.velocities[range.clone()],
-            external_forces: &attributes.external_forces[range.clone()],
-            inv_masses: &attributes.inv_masses[range.clone()],
-            groups: &attributes.groups[range.clone()],
-        });
-        start = range.end;
-    }
+    let chunk = if crate::parallel::splits() {
+        CHUNK
+    } else {
+        slots.max(1)
+    };
+    let jobs: Vec<_> = kinematics
+        .positions
+        .chunks_mut(chunk)
+        .zip(kinematics.velocities.chunks_mut(chunk))
+        .enumerate()
+        .map(|(c, (positions, velocities))| (c * chunk, positions, velocities))
+        .collect();
+    crate::parallel::for_each_job(jobs, |(first, positions, velocities)| {
+        let mut buffers = Buffers::new();
+        let mut start = 0;
+        while start < positions.len() {
+            let range = start..positions.len().min(start + BLOCK);
+            let slots = first + range.start..first + range.end;
+            f(
+                Block {
+                    positions: &mut positions[range.clone()],
+                    velocities: &mut velocities[range.clone()],
+                    external_forces: &attributes.external_forces[slots.clone()],
+                    inv_masses: &attributes.inv_masses[slots.clone()],
+                    groups: &attributes.groups[slots],
+                },
+                &mut buffers,
+            );
+            start = range.end;
+        }
+    });
 }
 
 /// The slots of one block.

@@ -948,34 +948,65 @@ impl<R: Real> BroadPhase<R> {
     /// the resting boxes of the strip and the resting boxes of lower strips that reach it.
     /// Each pair of strips is handled by a merged sweep, or by a probe per box when the
     /// boxes on one side are few (see [`Run::cross`]).
+    ///
+    /// On a pool's workers ([`crate::parallel::splits`]) each strip's pairs are found into
+    /// a list of their own, and the lists are joined in strip order: the pairs are the
+    /// one-thread pairs in the one-thread order (and are sorted afterwards anyway), and
+    /// more than the limit are found on some thread exactly when more than the limit
+    /// overlap.
     fn sweep(&self, sink: &mut Sink<'_>) {
-        let (awake, resting) = (&self.awake, &self.resting);
-        for t in 0..awake.reach.len() {
-            let here = awake.all.run(t);
+        let strips = self.awake.reach.len();
+        if crate::parallel::splits() {
+            let (limit, valid) = (sink.limit, sink.valid);
+            let parts = crate::parallel::map_collect(strips, 1, |t| {
+                let mut out = Vec::new();
+                self.sweep_strip(
+                    t,
+                    &mut Sink {
+                        out: &mut out,
+                        limit,
+                        valid,
+                    },
+                );
+                out
+            });
+            for part in parts {
+                sink.out.extend_from_slice(&part);
+            }
+            return;
+        }
+        for t in 0..strips {
             if sink.full() {
                 return;
             }
-            if here.entries.is_empty() {
-                continue;
+            self.sweep_strip(t, sink);
+        }
+    }
+
+    /// The pairs of strip `t` of awake boxes (see [`BroadPhase::sweep`]).
+    fn sweep_strip(&self, t: usize, sink: &mut Sink<'_>) {
+        let (awake, resting) = (&self.awake, &self.resting);
+        let here = awake.all.run(t);
+        if here.entries.is_empty() {
+            return;
+        }
+        self_sweep(here.entries, sink);
+        let up = awake.up.run(t);
+        let reach = awake.reach[t] as usize;
+        for s in t + 1..=reach {
+            up.cross(&awake.all.run(s), sink);
+        }
+        if resting.len() == 0 {
+            return;
+        }
+        for s in resting.down[t] as usize..t {
+            if resting.reach[s] as usize >= t {
+                here.cross(&resting.up.run(s), sink);
             }
-            self_sweep(here.entries, sink);
-            let up = awake.up.run(t);
-            let reach = awake.reach[t] as usize;
-            for s in t + 1..=reach {
-                up.cross(&awake.all.run(s), sink);
-            }
-            if resting.len() == 0 {
-                continue;
-            }
-            for s in resting.down[t] as usize..t {
-                if resting.reach[s] as usize >= t {
-                    here.cross(&resting.up.run(s), sink);
-                }
-            }
-            here.cross(&resting.all.run(t), sink);
-            for s in t + 1..=reach {
-                up.cross(&resting.all.run(s), sink);
-            }
+        }
+        here.cross(&resting.all.run(t), sink);
+        for s in t + 1..=reach {
+            up.cross(&resting.all.run(s), sink);
         }
     }
 }

@@ -5,7 +5,9 @@ use serde::{Deserialize, Serialize};
 
 use super::body_coupling::{BodyContacts, CouplingScratch, Ties};
 use super::collide::Collider;
-use super::constraints::{Attachments, DistanceFactors, Distances, Hinges, Tethers, Tetrahedra};
+use super::constraints::{
+    Attachments, ColourRuns, DistanceFactors, Distances, Hinges, Tethers, Tetrahedra,
+};
 use super::desc::XpbdSettings;
 use super::rigid_bodies::RigidBodies;
 use super::spring_mass::Springs;
@@ -119,6 +121,12 @@ pub(crate) struct Scratch<R: Real> {
     pub previous: Vec<Vec3<R>>,
     /// Shares and relaxations of the distance rows.
     pub distance: DistanceFactors<R>,
+    /// The distance rows' runs that share no vertex (built on a pool's first split pass).
+    pub distance_runs: ColourRuns<2>,
+    /// The bending rows' runs that share no vertex.
+    pub hinge_runs: ColourRuns<4>,
+    /// The chunks' copies of a run's moved vertices in a split pass, m.
+    pub moved: Vec<Vec3<R>>,
     /// Whether tethers 8k..8k+8 are independent, for each k (see
     /// [`Tethers::independent_blocks`]).
     #[cfg(vector_kernels)]

@@ -16,12 +16,21 @@
 //! and reused while it stays the same.
 
 use super::collide::project_positions;
+use super::constraints::ColourRuns;
 use super::rigid_bodies::RigidBodies;
 use super::system::{Model, SoftSystem};
 use crate::math::{Real, Vec3};
 
 #[cfg(vector_kernels)]
 mod kernel;
+
+/// Distance rows a chunk of a split pass holds.
+const DISTANCE_CHUNK: usize = super::constraints::DISTANCE_CHUNK;
+/// Vertices a chunk of the prediction and the velocity update holds (each vertex on its
+/// own: any cut gives the same bits).
+const VERTEX_CHUNK: usize = 512;
+/// Bending rows a chunk of a split pass holds.
+const HINGE_CHUNK: usize = super::constraints::HINGE_CHUNK;
 #[cfg(all(test, vector_kernels))]
 mod tests;
 
@@ -40,6 +49,9 @@ impl<R: Real> SoftSystem<R> {
         let h = dt * R::from_ratio(1, i64::from(n));
         let inv_h = h.recip();
         self.prepare(h, inv_h);
+        if crate::parallel::splits() {
+            self.prepare_runs();
+        }
         if let Some(bodies) = bodies.as_deref_mut() {
             self.find_bodies(bodies, dt, gravity);
         }
@@ -80,6 +92,22 @@ impl<R: Real> SoftSystem<R> {
         scratch.inv_h2 = inv_h2;
     }
 
+    /// Cuts the distance and bending rows into runs that share no vertex, once, for the
+    /// passes split across a pool's workers ([`ColourRuns`]).
+    fn prepare_runs(&mut self) {
+        let scratch = &mut self.scratch;
+        let vertices = self.vertices.position.len();
+        let d = &self.distances;
+        if scratch.distance_runs.runs.is_empty() && !d.a.is_empty() {
+            let ends: Vec<[u32; 2]> = d.a.iter().zip(&d.b).map(|(&a, &b)| [a, b]).collect();
+            scratch.distance_runs = ColourRuns::new(&ends, vertices, DISTANCE_CHUNK);
+        }
+        let h = &self.hinges.vertices;
+        if scratch.hinge_runs.runs.is_empty() && !h.is_empty() {
+            scratch.hinge_runs = ColourRuns::new(h, vertices, HINGE_CHUNK);
+        }
+    }
+
     /// One substep; `done` of `total` substeps of the tick are complete at its end.
     fn xpbd_substep(
         &mut self,
@@ -111,14 +139,20 @@ impl<R: Real> SoftSystem<R> {
             if body.model != Model::Xpbd {
                 continue;
             }
-            let v = &mut self.vertices.velocity;
-            #[cfg(vector_kernels)]
-            if kernel::update_velocities(body.range(), x, &s.previous, w, v, inv_h) {
-                continue;
-            }
-            for i in body.range() {
-                update_velocity(i, x, &s.previous, w, v, inv_h);
-            }
+            let r = body.range();
+            let (x, previous, w) = (&x[r.clone()], &s.previous[r.clone()], &w[r.clone()]);
+            let v = &mut self.vertices.velocity[r];
+            crate::parallel::for_each_chunk_mut(v, VERTEX_CHUNK, |start, v| {
+                let end = start + v.len();
+                let (x, previous, w) = (&x[start..end], &previous[start..end], &w[start..end]);
+                #[cfg(vector_kernels)]
+                if kernel::update_velocities(0..v.len(), x, previous, w, v, inv_h) {
+                    return;
+                }
+                for i in 0..v.len() {
+                    update_velocity(i, x, previous, w, v, inv_h);
+                }
+            });
         }
         if let Some(bodies) = bodies {
             self.settle_contacts(bodies);
@@ -130,20 +164,32 @@ impl<R: Real> SoftSystem<R> {
     fn iterate(&mut self) {
         let x = &mut self.vertices.position;
         let w = &self.vertices.inv_mass;
-        let s = &self.scratch;
+        let s = &mut self.scratch;
         self.tethers.solve(
             x,
             #[cfg(vector_kernels)]
             &s.tether_blocks,
         );
-        self.distances.solve(x, &s.distance);
-        self.hinges.solve(
-            x,
-            &s.hinge_share,
-            &s.hinge_relax,
-            #[cfg(vector_kernels)]
-            &s.hinge_blocks,
-        );
+        if crate::parallel::splits() {
+            self.distances
+                .solve_split(x, &s.distance, &s.distance_runs, &mut s.moved);
+            self.hinges.solve_split(
+                x,
+                (&s.hinge_share, &s.hinge_relax),
+                &s.hinge_runs,
+                &mut s.moved,
+            );
+        } else {
+            self.distances.solve(x, &s.distance);
+            self.hinges.solve(
+                x,
+                &s.hinge_share,
+                &s.hinge_relax,
+                #[cfg(vector_kernels)]
+                &s.hinge_blocks,
+            );
+        }
+        let s = &self.scratch;
         self.tetrahedra.solve(x, w, s.inv_h2);
         self.attachments
             .solve(x, &s.displacement, &s.attachment_share, &s.attachment_relax);
@@ -182,19 +228,31 @@ impl<R: Real> SoftSystem<R> {
                 wind: body.wind,
                 drag: body.drag,
             };
-            let mut vertices = Vertices {
-                x: &mut *x,
-                v: &mut *v,
-                previous: &mut *previous,
-                w,
+            let r = body.range();
+            // One chunk unless the loop splits (each vertex on its own: any cut, the same
+            // bits).
+            let chunk = if crate::parallel::splits() {
+                VERTEX_CHUNK
+            } else {
+                r.len().max(1)
             };
-            #[cfg(vector_kernels)]
-            if kernel::predict(body.range(), &mut vertices, &motion) {
-                continue;
-            }
-            for i in body.range() {
-                predict_vertex(i, &mut vertices, &motion);
-            }
+            let jobs: Vec<Vertices<'_, R>> = x[r.clone()]
+                .chunks_mut(chunk)
+                .zip(v[r.clone()].chunks_mut(chunk))
+                .zip(previous[r.clone()].chunks_mut(chunk))
+                .zip(w[r].chunks(chunk))
+                .map(|(((x, v), previous), w)| Vertices { x, v, previous, w })
+                .collect();
+            crate::parallel::for_each_job(jobs, |mut vertices| {
+                let n = vertices.w.len();
+                #[cfg(vector_kernels)]
+                if kernel::predict(0..n, &mut vertices, &motion) {
+                    return;
+                }
+                for i in 0..n {
+                    predict_vertex(i, &mut vertices, &motion);
+                }
+            });
         }
     }
 }

@@ -2,7 +2,8 @@
 //!
 //! With more than one thread (`--threads`, `FIXSTEP_THREADS`) and more than one file, the
 //! files are verified side by side, one per worker, and each file's lines are printed once
-//! all are done, in argument order: the output is the same at any thread count.
+//! all are done, in argument order: the output is the same at any thread count. The
+//! largest files start first.
 
 use std::path::Path;
 
@@ -24,9 +25,21 @@ pub fn verify_files(files: &[impl AsRef<Path> + Sync]) -> Result<Status, String>
             status = status.max(report.print()?);
         }
     } else {
-        let reports =
-            pool.run(|| map_collect(files.len(), 1, |i| verify_file(files[i].as_ref(), false)));
-        for report in reports {
+        // The largest files (the longest runs, roughly) start first, so that no long run
+        // starts last and keeps one worker busy alone; the reports go back in argument order.
+        let size = |i: usize| std::fs::metadata(files[i].as_ref()).map_or(0, |m| m.len());
+        let mut order: Vec<usize> = (0..files.len()).collect();
+        order.sort_by_key(|&i| (std::cmp::Reverse(size(i)), i));
+        let done = pool.run(|| {
+            map_collect(order.len(), 1, |k| {
+                verify_file(files[order[k]].as_ref(), false)
+            })
+        });
+        let mut reports: Vec<Option<Report>> = (0..files.len()).map(|_| None).collect();
+        for (report, &i) in done.into_iter().zip(&order) {
+            reports[i] = Some(report);
+        }
+        for report in reports.into_iter().flatten() {
             status = status.max(report.print()?);
         }
     }

@@ -66,7 +66,7 @@
 
 use core::mem::{offset_of, size_of};
 
-use super::{Block, Buffers, for_each_block};
+use super::{Block, for_each_block};
 use crate::math::over_real::OverReal;
 use crate::math::wide::{Backend, LANES, Wide, backend, bit_length, kernel_entry};
 use crate::math::{Fraction, Fx, Real, Vec3};
@@ -140,10 +140,9 @@ pub(super) fn step_with<R: Real>(
         return false;
     };
     let constants = Constants::new(field, h);
-    let mut buffers = Buffers::new();
-    for_each_block(kinematics, attributes, |mut block| {
+    for_each_block(kinematics, attributes, |mut block, buffers| {
         if !step_block_on(backend, &mut block, &constants) {
-            block.step_portable(&mut buffers, field, h);
+            block.step_portable(buffers, field, h);
         }
     });
     true

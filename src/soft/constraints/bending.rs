@@ -15,6 +15,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::arithmetic::{Arithmetic, Checked, Guarded};
+use super::colour_runs::ColourRuns;
 use crate::math::{Guard, Real, Vec3};
 
 #[cfg(vector_kernels)]
@@ -104,25 +105,131 @@ impl<R: Real> Hinges<R> {
         relax: &[R],
         #[cfg(vector_kernels)] independent: &[bool],
     ) {
+        HingeRun {
+            vertices: &self.vertices,
+            coefficients: &self.coefficients,
+            lambda: &mut self.lambda,
+            shares,
+            relax,
+            #[cfg(vector_kernels)]
+            independent,
+        }
+        .solve(positions);
+    }
+
+    /// One pass as [`Hinges::solve`], each run of `runs` (rows sharing no vertex) split
+    /// across the workers: each chunk of a run solves its rows on its own copy of their
+    /// corners (`moved`), which are then written back vertex by vertex. No row of a run
+    /// reads what another writes, so the bits are those of [`Hinges::solve`].
+    pub fn solve_split(
+        &mut self,
+        positions: &mut [Vec3<R>],
+        (shares, relax): (&[[R; 4]], &[R]),
+        runs: &ColourRuns<4>,
+        moved: &mut Vec<Vec3<R>>,
+    ) {
+        for (k, rows) in runs.runs.iter().enumerate() {
+            let vertices = &self.vertices[rows.clone()];
+            let coefficients = &self.coefficients[rows.clone()];
+            let lambda = &mut self.lambda[rows.clone()];
+            let (shares, relax) = (&shares[rows.clone()], &relax[rows.clone()]);
+            if rows.len() <= ROW_CHUNK {
+                HingeRun {
+                    vertices,
+                    coefficients,
+                    lambda,
+                    shares,
+                    relax,
+                    #[cfg(vector_kernels)]
+                    independent: &runs.independent,
+                }
+                .solve(positions);
+                continue;
+            }
+            moved.clear();
+            moved.resize(4 * rows.len(), Vec3::ZERO);
+            let jobs: Vec<_> = vertices
+                .chunks(ROW_CHUNK)
+                .zip(coefficients.chunks(ROW_CHUNK))
+                .zip(lambda.chunks_mut(ROW_CHUNK))
+                .zip(shares.chunks(ROW_CHUNK))
+                .zip(relax.chunks(ROW_CHUNK))
+                .zip(moved.chunks_mut(4 * ROW_CHUNK))
+                .map(
+                    |(((((corners, coefficients), lambda), shares), relax), own)| {
+                        let local = HingeRun {
+                            vertices: &runs.local_rows[..corners.len()],
+                            coefficients,
+                            lambda,
+                            shares,
+                            relax,
+                            #[cfg(vector_kernels)]
+                            independent: &runs.independent,
+                        };
+                        (corners, local, own)
+                    },
+                )
+                .collect();
+            let x: &[Vec3<R>] = positions;
+            crate::parallel::for_each_job(jobs, |(corners, mut local, own)| {
+                for (i, row) in corners.iter().enumerate() {
+                    for (k, &v) in row.iter().enumerate() {
+                        own[4 * i + k] = x[v as usize];
+                    }
+                }
+                local.solve(own);
+            });
+            let moved: &[Vec3<R>] = moved;
+            crate::parallel::scatter_sorted(positions, runs.touches(k), |x, slot| {
+                *x = moved[slot];
+            });
+        }
+    }
+}
+
+/// Rows a [`HingeRun`] chunk of a parallel pass holds (a multiple of the kernels' eight
+/// lanes); fixed, so the chunks depend on the rows only.
+pub(crate) const ROW_CHUNK: usize = 256;
+
+/// Consecutive bending rows to solve in order: their slices of the rows and factors.
+pub(crate) struct HingeRun<'a, R: Real> {
+    /// Each row's corners in the positions the run is solved on.
+    pub vertices: &'a [[u32; 4]],
+    /// cₖ, 1/m.
+    pub coefficients: &'a [[R; 4]],
+    /// μ = α̃λ per axis.
+    pub lambda: &'a mut [Vec3<R>],
+    /// wₖcₖ/D, m.
+    pub shares: &'a [[R; 4]],
+    /// α̃/D.
+    pub relax: &'a [R],
+    /// Whether rows 8k..8k+8 of the run share no vertex, for each k listed.
+    #[cfg(vector_kernels)]
+    pub independent: &'a [bool],
+}
+
+impl<R: Real> HingeRun<'_, R> {
+    /// Every row of the run, in order, on `positions` (see [`Hinges::solve`]).
+    pub fn solve(&mut self, positions: &mut [Vec3<R>]) {
         #[cfg(vector_kernels)]
-        if kernel::solve(self, positions, shares, relax, independent) {
+        if kernel::solve(self, positions) {
             return;
         }
         for h in 0..self.vertices.len() {
-            self.solve_row(positions, shares, relax, h);
+            self.solve_row(positions, h);
         }
     }
 
     /// Row `h`, guarded first, checked if the guard trips.
     #[inline(always)]
-    fn solve_row(&mut self, positions: &mut [Vec3<R>], shares: &[[R; 4]], relax: &[R], h: usize) {
+    fn solve_row(&mut self, positions: &mut [Vec3<R>], h: usize) {
         let v = self.vertices[h].map(|i| i as usize);
         let input = HingeInput {
             x: v.map(|i| positions[i]),
             c: self.coefficients[h],
             mu: self.lambda[h],
-            shares: shares[h],
-            relax: relax[h],
+            shares: self.shares[h],
+            relax: self.relax[h],
         };
         let mut guarded = Guarded(Guard::new());
         let mut output = hinge(&mut guarded, &input);

@@ -24,6 +24,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::arithmetic::{Arithmetic, Checked, Guarded};
+use super::colour_runs::ColourRuns;
 use crate::math::{Guard, Real, Vec3};
 
 #[cfg(vector_kernels)]
@@ -103,18 +104,148 @@ impl<R: Real> Distances<R> {
     /// AVX-512 or AVX2, blocks of rows that share no vertex are solved eight at a time by a
     /// kernel that gives the same bits ([`kernel`]).
     pub fn solve(&mut self, positions: &mut [Vec3<R>], f: &DistanceFactors<R>) {
+        self.run(f, 0..self.a.len()).solve(positions);
+    }
+
+    /// Rows `rows` with their factors `f`, to solve in place.
+    pub fn run<'a>(
+        &'a mut self,
+        f: &'a DistanceFactors<R>,
+        rows: core::ops::Range<usize>,
+    ) -> DistanceRun<'a, R> {
+        DistanceRun {
+            a: &self.a[rows.clone()],
+            b: &self.b[rows.clone()],
+            rest: &self.rest[rows.clone()],
+            inv_length: &mut self.inv_length[rows.clone()],
+            lambda: &mut self.lambda[rows.clone()],
+            share_a: &f.share_a[rows.clone()],
+            share_b: &f.share_b[rows.clone()],
+            relax: &f.relax[rows.clone()],
+            #[cfg(vector_kernels)]
+            independent: if rows.start.is_multiple_of(crate::math::wide::LANES) {
+                f.independent
+                    .get(rows.start / crate::math::wide::LANES..)
+                    .unwrap_or(&[])
+            } else {
+                &[]
+            },
+        }
+    }
+
+    /// One pass as [`Distances::solve`], each run of `runs` (rows sharing no vertex)
+    /// split across the workers: each chunk of a run solves its rows on its own copy of
+    /// their ends (`moved`), which are then written back vertex by vertex. No row of a run
+    /// reads what another writes, so the bits are those of [`Distances::solve`].
+    pub fn solve_split(
+        &mut self,
+        positions: &mut [Vec3<R>],
+        f: &DistanceFactors<R>,
+        runs: &ColourRuns<2>,
+        moved: &mut Vec<Vec3<R>>,
+    ) {
+        for (k, rows) in runs.runs.iter().enumerate() {
+            if rows.len() <= ROW_CHUNK {
+                let mut run = self.run(f, rows.clone());
+                #[cfg(vector_kernels)]
+                {
+                    run.independent = &runs.independent;
+                }
+                run.solve(positions);
+                continue;
+            }
+            moved.clear();
+            moved.resize(2 * rows.len(), Vec3::ZERO);
+            let run = self.run(f, rows.clone());
+            let (ends_a, ends_b) = (run.a, run.b);
+            let jobs: Vec<_> = ends_a
+                .chunks(ROW_CHUNK)
+                .zip(ends_b.chunks(ROW_CHUNK))
+                .zip(run.rest.chunks(ROW_CHUNK))
+                .zip(run.inv_length.chunks_mut(ROW_CHUNK))
+                .zip(run.lambda.chunks_mut(ROW_CHUNK))
+                .zip(run.share_a.chunks(ROW_CHUNK))
+                .zip(run.share_b.chunks(ROW_CHUNK))
+                .zip(run.relax.chunks(ROW_CHUNK))
+                .zip(moved.chunks_mut(2 * ROW_CHUNK))
+                .map(
+                    |(
+                        (((((((a, b), rest), inv_length), lambda), share_a), share_b), relax),
+                        own,
+                    )| {
+                        let n = a.len();
+                        let local = DistanceRun {
+                            a: &runs.local[0][..n],
+                            b: &runs.local[1][..n],
+                            rest,
+                            inv_length,
+                            lambda,
+                            share_a,
+                            share_b,
+                            relax,
+                            #[cfg(vector_kernels)]
+                            independent: &runs.independent,
+                        };
+                        (a, b, local, own)
+                    },
+                )
+                .collect();
+            let x: &[Vec3<R>] = positions;
+            crate::parallel::for_each_job(jobs, |(a, b, mut local, own)| {
+                for (i, (&a, &b)) in a.iter().zip(b).enumerate() {
+                    own[2 * i] = x[a as usize];
+                    own[2 * i + 1] = x[b as usize];
+                }
+                local.solve(own);
+            });
+            let moved: &[Vec3<R>] = moved;
+            crate::parallel::scatter_sorted(positions, runs.touches(k), |x, slot| {
+                *x = moved[slot];
+            });
+        }
+    }
+}
+
+/// Rows a [`DistanceRun`] chunk of a parallel pass holds (a multiple of the kernels' eight
+/// lanes); fixed, so the chunks depend on the rows only.
+pub(crate) const ROW_CHUNK: usize = 256;
+
+/// Consecutive distance rows to solve in order: their slices of the rows and of the
+/// factors.
+pub(crate) struct DistanceRun<'a, R: Real> {
+    /// The ends' indices in the positions the run is solved on.
+    pub a: &'a [u32],
+    pub b: &'a [u32],
+    /// ℓ₀, m.
+    pub rest: &'a [R],
+    /// 1/|d| at each row's last solve, 1/m.
+    pub inv_length: &'a mut [R],
+    /// μ = α̃λ, m.
+    pub lambda: &'a mut [R],
+    /// sₐ, s_b and ρ (see [`DistanceFactors`]).
+    pub share_a: &'a [R],
+    pub share_b: &'a [R],
+    pub relax: &'a [R],
+    /// Whether rows 8k..8k+8 of the run share no vertex, for each k listed.
+    #[cfg(vector_kernels)]
+    pub independent: &'a [bool],
+}
+
+impl<R: Real> DistanceRun<'_, R> {
+    /// Every row of the run, in order, on `positions` (see [`Distances::solve`]).
+    pub fn solve(&mut self, positions: &mut [Vec3<R>]) {
         #[cfg(vector_kernels)]
-        if kernel::solve(self, positions, f) {
+        if kernel::solve(self, positions) {
             return;
         }
         for c in 0..self.a.len() {
-            self.solve_row(positions, f, c);
+            self.solve_row(positions, c);
         }
     }
 
     /// Row `c`, guarded first, checked if the guard trips.
     #[inline(always)]
-    fn solve_row(&mut self, positions: &mut [Vec3<R>], f: &DistanceFactors<R>, c: usize) {
+    fn solve_row(&mut self, positions: &mut [Vec3<R>], c: usize) {
         let (a, b) = (self.a[c] as usize, self.b[c] as usize);
         let input = RowInput {
             xa: positions[a],
@@ -122,9 +253,9 @@ impl<R: Real> Distances<R> {
             rest: self.rest[c],
             previous: self.inv_length[c],
             mu: self.lambda[c],
-            share_a: f.share_a[c],
-            share_b: f.share_b[c],
-            relax: f.relax[c],
+            share_a: self.share_a[c],
+            share_b: self.share_b[c],
+            relax: self.relax[c],
         };
         let mut guarded = Guarded(Guard::new());
         let mut output = row(&mut guarded, &input);

@@ -13,12 +13,14 @@
 mod arithmetic;
 mod attachment;
 mod bending;
+mod colour_runs;
 mod distance;
 mod tether;
 mod volume;
 
 pub(crate) use attachment::Attachments;
-pub(crate) use bending::Hinges;
-pub(crate) use distance::{DistanceFactors, Distances};
+pub(crate) use bending::{Hinges, ROW_CHUNK as HINGE_CHUNK};
+pub(crate) use colour_runs::ColourRuns;
+pub(crate) use distance::{DistanceFactors, Distances, ROW_CHUNK as DISTANCE_CHUNK};
 pub(crate) use tether::Tethers;
 pub(crate) use volume::Tetrahedra;

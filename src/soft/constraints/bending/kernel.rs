@@ -18,17 +18,10 @@
 //! the kernel's exact values ([`Wide::mul`]) are the checked operators', which the scalar row
 //! gives whether its guard stays clear or it reruns checked.
 
-use super::Hinges;
+use super::{HingeRun, Hinges};
 use crate::math::over_real::{Scalars, Vectors};
 use crate::math::wide::{LANES, Wide, backend, kernel_entry};
 use crate::math::{Fx, OverReal, Real, Vec3};
-
-/// The family of [`Hinges`] over the scalar formats.
-struct HingesOf;
-
-impl OverReal for HingesOf {
-    type Of<R: Real> = Hinges<R>;
-}
 
 /// The family of `[[R; 4]]` (the hinges' shares) over the scalar formats.
 struct Quads;
@@ -54,63 +47,61 @@ impl<R: Real> Hinges<R> {
     }
 }
 
-/// One pass over every hinge with the kernel when `R` is I32F32 and a backend runs;
-/// returns whether it ran (if not, nothing was written).
-pub(super) fn solve<R: Real>(
-    rows: &mut Hinges<R>,
-    positions: &mut [Vec3<R>],
-    shares: &[[R; 4]],
-    relax: &[R],
-    independent: &[bool],
-) -> bool {
-    let (Some(backend), Some(rows), Some(positions), Some(shares), Some(relax)) = (
+/// One pass over every hinge of `run` with the kernel when `R` is I32F32 and a backend
+/// runs; returns whether it ran (if not, nothing was written).
+pub(super) fn solve<R: Real>(run: &mut HingeRun<'_, R>, positions: &mut [Vec3<R>]) -> bool {
+    let (
+        Some(backend),
+        Some(coefficients),
+        Some(lambda),
+        Some(positions),
+        Some(shares),
+        Some(relax),
+    ) = (
         backend(),
-        R::as_fixed_mut::<HingesOf>(rows),
+        R::as_fixed::<Quads>(run.coefficients),
+        R::as_fixed_mut::<Vectors>(&mut *run.lambda),
         R::as_fixed_mut::<Vectors>(positions),
-        R::as_fixed::<Quads>(shares),
-        R::as_fixed::<Scalars>(relax),
-    ) else {
+        R::as_fixed::<Quads>(run.shares),
+        R::as_fixed::<Scalars>(run.relax),
+    )
+    else {
         return false;
     };
-    solve_rows(backend, rows, positions, shares, relax, independent);
+    let mut rows = HingeRun {
+        vertices: run.vertices,
+        coefficients,
+        lambda,
+        shares,
+        relax,
+        independent: run.independent,
+    };
+    solve_rows(backend, &mut rows, positions);
     true
 }
 
 kernel_entry! {
     /// [`solve_rows_kernel`] with the instructions of `backend`.
-    fn solve_rows(
-        rows: &mut Hinges<Fx>,
-        positions: &mut [Vec3<Fx>],
-        shares: &[[Fx; 4]],
-        relax: &[Fx],
-        independent: &[bool],
-    ) -> () = solve_rows_kernel;
+    fn solve_rows(rows: &mut HingeRun<'_, Fx>, positions: &mut [Vec3<Fx>]) -> () = solve_rows_kernel;
 }
 
 /// Every hinge in order: the independent blocks with the kernel, the rest with the scalar
 /// row.
 #[inline(always)]
-fn solve_rows_kernel<W: Wide>(
-    w: W,
-    rows: &mut Hinges<Fx>,
-    positions: &mut [Vec3<Fx>],
-    shares: &[[Fx; 4]],
-    relax: &[Fx],
-    independent: &[bool],
-) {
+fn solve_rows_kernel<W: Wide>(w: W, rows: &mut HingeRun<'_, Fx>, positions: &mut [Vec3<Fx>]) {
     let count = rows.vertices.len();
     for k in 0..count / LANES {
         let start = k * LANES;
-        let solved = independent.get(k).copied().unwrap_or(false)
-            && solve_block(w, rows, positions, shares, relax, start);
+        let solved = rows.independent.get(k).copied().unwrap_or(false)
+            && solve_block(w, rows, positions, start);
         if !solved {
             for h in start..start + LANES {
-                rows.solve_row(positions, shares, relax, h);
+                rows.solve_row(positions, h);
             }
         }
     }
     for h in count - count % LANES..count {
-        rows.solve_row(positions, shares, relax, h);
+        rows.solve_row(positions, h);
     }
 }
 
@@ -119,10 +110,8 @@ fn solve_rows_kernel<W: Wide>(
 #[inline(always)]
 fn solve_block<W: Wide>(
     w: W,
-    rows: &mut Hinges<Fx>,
+    rows: &mut HingeRun<'_, Fx>,
     positions: &mut [Vec3<Fx>],
-    shares: &[[Fx; 4]],
-    relax: &[Fx],
     start: usize,
 ) -> bool {
     let block = start..start + LANES;
@@ -142,15 +131,15 @@ fn solve_block<W: Wide>(
     };
     let x = [x0, x1, x2, x3];
     let (Some(coefficients), Some(block_shares), Some(relax)) = (
-        eight(&rows.coefficients, start),
-        eight(shares, start),
-        relax.get(block.clone()),
+        eight(rows.coefficients, start),
+        eight(rows.shares, start),
+        rows.relax.get(block.clone()),
     ) else {
         return false;
     };
     let c = w.load_columns(coefficients);
     let s = w.load_columns(block_shares);
-    let Some(mu) = w.load_run(&rows.lambda, start) else {
+    let Some(mu) = w.load_run(rows.lambda, start) else {
         return false;
     };
     let relax = w.load(relax.try_into().expect("eight values"));

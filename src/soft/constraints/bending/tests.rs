@@ -75,8 +75,16 @@ fn hinges_match_the_scalar_row() {
             let ((), fast_saturations) =
                 count_saturations(|| fast.solve(&mut fast_x, &shares, &relax, &independent));
             let ((), slow_saturations) = count_saturations(|| {
-                for h in 0..slow.vertices.len() {
-                    slow.solve_row(&mut slow_x, &shares, &relax, h);
+                let mut run = super::HingeRun {
+                    vertices: &slow.vertices,
+                    coefficients: &slow.coefficients,
+                    lambda: &mut slow.lambda,
+                    shares: &shares,
+                    relax: &relax,
+                    independent: &[],
+                };
+                for h in 0..run.vertices.len() {
+                    run.solve_row(&mut slow_x, h);
                 }
             });
             assert_eq!(fast_x, slow_x, "trial {trial}: positions");

@@ -1,5 +1,5 @@
 //! The distance rows of I32F32 on the lanes of [`Wide`] (every backend): eight rows side by
-//! side, one `i64` lane per row, with the bits of the scalar row ([`Distances::solve_row`]).
+//! side, one `i64` lane per row, with the bits of the scalar row ([`DistanceRun::solve_row`]).
 //!
 //! # Why side by side gives the same bits
 //!
@@ -41,24 +41,10 @@
 //! The lane arithmetic (products from 32-bit halves, the bound checks) is
 //! [`wide`](crate::math::wide)'s.
 
-use super::{DistanceFactors, Distances};
-use crate::math::over_real::Vectors;
+use super::DistanceRun;
+use crate::math::over_real::{Scalars, Vectors};
 use crate::math::wide::{LANES, Wide, backend, kernel_entry};
-use crate::math::{Fx, OverReal, Real, Vec3};
-
-/// The family of [`Distances`] over the scalar formats.
-struct DistancesOf;
-
-impl OverReal for DistancesOf {
-    type Of<R: Real> = Distances<R>;
-}
-
-/// The family of [`DistanceFactors`] over the scalar formats.
-struct FactorsOf;
-
-impl OverReal for FactorsOf {
-    type Of<R: Real> = DistanceFactors<R>;
-}
+use crate::math::{Fx, Real, Vec3};
 
 /// Whether rows 8k..8k+8 (ends `a`, `b`) share no vertex, for each whole block k.
 pub(super) fn independent_blocks(a: &[u32], b: &[u32]) -> Vec<bool> {
@@ -74,59 +60,75 @@ pub(super) fn independent_blocks(a: &[u32], b: &[u32]) -> Vec<bool> {
         .collect()
 }
 
-/// One Gauss–Seidel pass over every row with the kernel when `R` is I32F32 and a backend
-/// runs; returns whether it ran (if not, nothing was written).
-pub(super) fn solve<R: Real>(
-    rows: &mut Distances<R>,
-    positions: &mut [Vec3<R>],
-    f: &DistanceFactors<R>,
-) -> bool {
-    let (Some(backend), Some(rows), Some(positions), Some(f)) = (
-        backend(),
-        R::as_fixed_mut::<DistancesOf>(rows),
-        R::as_fixed_mut::<Vectors>(positions),
-        R::as_fixed::<FactorsOf>(f),
-    ) else {
+/// One Gauss–Seidel pass over every row of `run` with the kernel when `R` is I32F32 and a
+/// backend runs; returns whether it ran (if not, nothing was written).
+pub(super) fn solve<R: Real>(run: &mut DistanceRun<'_, R>, positions: &mut [Vec3<R>]) -> bool {
+    let Some(backend) = backend() else {
         return false;
     };
-    solve_rows(backend, rows, positions, f);
+    let (
+        Some(rest),
+        Some(inv_length),
+        Some(lambda),
+        Some(share_a),
+        Some(share_b),
+        Some(relax),
+        Some(positions),
+    ) = (
+        R::as_fixed::<Scalars>(run.rest),
+        R::as_fixed_mut::<Scalars>(&mut *run.inv_length),
+        R::as_fixed_mut::<Scalars>(&mut *run.lambda),
+        R::as_fixed::<Scalars>(run.share_a),
+        R::as_fixed::<Scalars>(run.share_b),
+        R::as_fixed::<Scalars>(run.relax),
+        R::as_fixed_mut::<Vectors>(positions),
+    )
+    else {
+        return false;
+    };
+    let mut rows = DistanceRun {
+        a: run.a,
+        b: run.b,
+        rest,
+        inv_length,
+        lambda,
+        share_a,
+        share_b,
+        relax,
+        independent: run.independent,
+    };
+    solve_rows(backend, &mut rows, positions);
     true
 }
 
 kernel_entry! {
     /// [`solve_rows_kernel`] with the instructions of `backend`.
     fn solve_rows(
-        rows: &mut Distances<Fx>,
+        rows: &mut DistanceRun<'_, Fx>,
         positions: &mut [Vec3<Fx>],
-        f: &DistanceFactors<Fx>,
     ) -> () = solve_rows_kernel;
 }
 
 /// Every row in order: the independent blocks with the kernel and what it leaves, the
 /// other rows, with the scalar row.
 #[inline(always)]
-fn solve_rows_kernel<W: Wide>(
-    w: W,
-    rows: &mut Distances<Fx>,
-    positions: &mut [Vec3<Fx>],
-    f: &DistanceFactors<Fx>,
-) {
+fn solve_rows_kernel<W: Wide>(w: W, rows: &mut DistanceRun<'_, Fx>, positions: &mut [Vec3<Fx>]) {
     let count = rows.a.len();
     for k in 0..count / LANES {
         let start = k * LANES;
-        let done = if f.independent.get(k).copied().unwrap_or(false) {
-            solve_block(w, rows, positions, f, start)
+        let done = if rows.independent.get(k).copied().unwrap_or(false) {
+            solve_block(w, rows, positions, start)
         } else {
             0
         };
         for l in 0..LANES {
             if done & (1 << l) == 0 {
-                rows.solve_row(positions, f, start + l);
+                rows.solve_row(positions, start + l);
             }
         }
     }
     for c in count - count % LANES..count {
-        rows.solve_row(positions, f, c);
+        rows.solve_row(positions, c);
     }
 }
 
@@ -151,9 +153,8 @@ fn block_mut(values: &mut [Fx], start: usize) -> &mut [Fx; LANES] {
 #[inline(always)]
 fn solve_block<W: Wide>(
     w: W,
-    rows: &mut Distances<Fx>,
+    rows: &mut DistanceRun<'_, Fx>,
     positions: &mut [Vec3<Fx>],
-    f: &DistanceFactors<Fx>,
     start: usize,
 ) -> u8 {
     let ends = start..start + LANES;
@@ -163,12 +164,12 @@ fn solve_block<W: Wide>(
     ) else {
         return 0;
     };
-    let rest = w.load(block(&rows.rest, start));
-    let previous = w.load(block(&rows.inv_length, start));
-    let mu = w.load(block(&rows.lambda, start));
-    let share_a = w.load(block(&f.share_a, start));
-    let share_b = w.load(block(&f.share_b, start));
-    let relax = w.load(block(&f.relax, start));
+    let rest = w.load(block(rows.rest, start));
+    let previous = w.load(block(rows.inv_length, start));
+    let mu = w.load(block(rows.lambda, start));
+    let share_a = w.load(block(rows.share_a, start));
+    let share_b = w.load(block(rows.share_b, start));
+    let relax = w.load(block(rows.relax, start));
     let mut bad = w.out_of_bound3(xa)
         | w.out_of_bound3(xb)
         | w.out_of_bound(rest)
@@ -254,8 +255,8 @@ fn solve_block<W: Wide>(
                 positions[b] = lane(&new_b, l);
             }
         }
-        w.store_lanes(block_mut(&mut rows.lambda, start), solved, new_mu);
-        w.store_lanes(block_mut(&mut rows.inv_length, start), solved, inv_length);
+        w.store_lanes(block_mut(rows.lambda, start), solved, new_mu);
+        w.store_lanes(block_mut(rows.inv_length, start), solved, inv_length);
     }
     solved
 }

@@ -78,8 +78,10 @@ fn assert_same_once(
     let (mut fast_x, mut slow_x) = (positions.to_vec(), positions.to_vec());
     let ((), fast_saturations) = count_saturations(|| fast.solve(&mut fast_x, f));
     let ((), slow_saturations) = count_saturations(|| {
-        for c in 0..slow.a.len() {
-            slow.solve_row(&mut slow_x, f, c);
+        let n = slow.a.len();
+        let mut run = slow.run(f, 0..n);
+        for c in 0..n {
+            run.solve_row(&mut slow_x, c);
         }
     });
     let bits = |x: &[Vec3<Fx>]| -> Vec<[i64; 3]> {
