@@ -116,9 +116,12 @@ impl<R: Real> RigidSystem<R> {
             if has_joints {
                 solver.advance_joint_errors(h);
             }
-            for _ in 0..joint_iterations {
-                solver.correct_spinning(h);
+            for iteration in 0..joint_iterations {
+                solver.correct_spinning(h, iteration == 0);
                 solver.solve_joints(&joint_relax);
+            }
+            if has_joints {
+                solver.correct_spinning(h, false);
             }
             let (blocks, solver_bodies) = solver.blocks_and_bodies();
             for block in blocks.iter_mut() {

@@ -173,13 +173,19 @@ impl<R: Real> Solver<R> {
 
     /// Moves every joint constraint's position errors on by the substep just integrated:
     /// C ← C + h (Ċ + ½ h κ) with the velocities the positions were integrated with (h in s;
-    /// κ the rows' drift, zero for most), to second order the errors at the new positions, so that the relax pass's limits stop exactly
-    /// at the limit instead of letting one more substep of motion through (contacts do the
-    /// same with their separations).
+    /// κ the rows' drift, zero for most), to second order the errors at the new positions,
+    /// so that the relax pass's limits stop exactly at the limit instead of letting one more
+    /// substep of motion through (contacts do the same with their separations).
+    ///
+    /// A point block's drift ½ h κ is first taken again from those velocities (it was built
+    /// from the velocities before the gyroscopic update and the solve pass), so that the
+    /// relax pass holds the anchors' velocity at the lever the bodies actually turned to
+    /// (see [`PointBlock::drift_of`]).
     pub fn advance_joint_errors(&mut self, h: R) {
         for c in &mut self.joints {
             let (ba, bb) = (&self.bodies[c.a as usize], &self.bodies[c.b as usize]);
             if let Some(point) = &mut c.point {
+                point.drift = PointBlock::drift_of(point.r_a, point.r_b, ba, bb, h);
                 point.error += point.velocity(ba, bb) * h;
             }
             for row in &mut self.joint_rows[c.first as usize..(c.first + c.count) as usize] {

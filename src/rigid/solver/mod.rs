@@ -12,7 +12,8 @@
 //!    (apply the accumulated impulses), **solve** (with the soft bias), **integrate
 //!    positions**, **relax** (solve again without bias, removing the velocity the bias
 //!    added, so pushing apart injects no energy; jointed bodies' gyroscopic terms are
-//!    solved with their joints there, [`joint_gyroscopic`]); joints before contacts in
+//!    solved with their joints there, [`joint_gyroscopic`], and the joints' point blocks
+//!    take their drift from the velocities the positions moved with); joints before contacts in
 //!    every pass; in a step where a contact may bounce, each point's impulse over the step
 //!    is summed;
 //! 3. **restitution**: chains of touching bodies that a bounce reaches are resolved one
