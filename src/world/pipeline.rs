@@ -59,7 +59,12 @@ use crate::water::WaterSystem;
 /// gyroscopic term is solved with their joints; bounces that reach chains of touching
 /// bodies are resolved contact by contact, the largest closing speed first
 /// (`rigid::solver::contact_constraint::BounceChains`).
-pub const STATE_VERSION: u32 = 7;
+///
+/// 8: a ball joint's centripetal drift term is taken from the velocities the positions were
+/// just integrated with (it was fixed when the joint was built), and a jointed body's
+/// gyroscopic term takes one more Newton step after the last relax pass: a spinning heavy
+/// top precesses within 0.6 % of the exact rate at 5 substeps (was −1.9 %).
+pub const STATE_VERSION: u32 = 8;
 
 /// The RNG stream of the world's generator (the seed comes from the scene).
 const RNG_STREAM: u64 = 0x6669_7873_7465_7021; // "fixstep!"
