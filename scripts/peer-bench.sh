@@ -9,7 +9,8 @@
 #   ./scripts/peer-bench.sh --wasm [ROUNDS] [SCENE ...]
 # SCENE also takes `queries` (rays and sphere overlaps on balls and pyramid, queries/s) and
 # `filters` (fixstep's balls with non-default filters against the default) and `characters`
-# (1000 characters among 10,000 boxes beside Rapier's KinematicCharacterController).
+# (1000 characters among 10,000 boxes beside Rapier's KinematicCharacterController) and `energy`
+# (energy drift of pendulums, a spinning hinge wheel and a touching cradle; no timing).
 # --wasm: what a browser game pays. Builds the comparison for wasm32-wasip1, with Rapier's
 # enhanced-determinism mode only (its cross-platform mode, the one fixstep is compared
 # with), once plain and once with RUSTFLAGS="-C target-feature=+simd128" (fixstep's
@@ -25,7 +26,7 @@ wasm=0 args=()
 for a in "$@"; do
   case $a in
     --wasm) wasm=1 ;;
-    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "error: unknown option \`$a\` (see --help)" >&2; exit 2 ;;
     *) args+=("$a") ;;
   esac
