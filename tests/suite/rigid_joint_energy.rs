@@ -433,7 +433,10 @@ fn wheel_world(axis: [f64; 3]) -> World<Fx> {
 #[test]
 fn hinge_wheel_keeps_its_spin_and_energy() {
     let mut failures = Vec::new();
-    for (label, axis) in [("horizontal (x)", [1.0, 0.0, 0.0]), ("vertical (y)", [0.0, 1.0, 0.0])] {
+    for (label, axis) in [
+        ("horizontal (x)", [1.0, 0.0, 0.0]),
+        ("vertical (y)", [0.0, 1.0, 0.0]),
+    ] {
         let mut world = wheel_world(axis);
         let h = body(&world, 1);
         let m = world
@@ -453,7 +456,8 @@ fn hinge_wheel_keeps_its_spin_and_energy() {
             0.5 * m * dot(v, v) + 0.5 * i3 * along * along + 0.5 * i1 * across
         };
         let e0 = energy(&world);
-        let (mut spin_error, mut energy_error, mut sag, mut wobble) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        let (mut spin_error, mut energy_error, mut sag, mut wobble) =
+            (0.0f64, 0.0f64, 0.0f64, 0.0f64);
         for _ in 0..(10.0 / DT) as usize {
             world.step(&TickInput::default());
             let rigid = world.rigid().expect("rigid");

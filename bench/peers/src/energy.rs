@@ -120,7 +120,10 @@ fn measure(case: Case, mut step: impl FnMut(), state: impl Fn() -> Vec<BodyState
     let end = state();
     let note = match case {
         Case::Cradle => {
-            let speeds: Vec<String> = end.iter().map(|b| format!("{:.2}", b.velocity[0])).collect();
+            let speeds: Vec<String> = end
+                .iter()
+                .map(|b| format!("{:.2}", b.velocity[0]))
+                .collect();
             format!("x speeds {} m/s", speeds.join(", "))
         }
         Case::Wheel => format!("spin {:.3} rad/s", dot(end[0].omega, end[0].axis)),
@@ -157,7 +160,10 @@ fn bob_start(release_deg: f64) -> [f64; 3] {
 /// The moments (axial, across) of the case's moving bodies about their centres.
 fn moments(case: Case, mass: f64) -> (f64, f64) {
     match case {
-        Case::Pendulum { .. } => (0.4 * mass * BOB_RADIUS * BOB_RADIUS, 0.4 * mass * BOB_RADIUS * BOB_RADIUS),
+        Case::Pendulum { .. } => (
+            0.4 * mass * BOB_RADIUS * BOB_RADIUS,
+            0.4 * mass * BOB_RADIUS * BOB_RADIUS,
+        ),
         Case::Wheel => (
             0.5 * mass * WHEEL_RADIUS * WHEEL_RADIUS,
             mass * (WHEEL_RADIUS * WHEEL_RADIUS / 4.0 + WHEEL_HALF * WHEEL_HALF / 3.0),
@@ -178,7 +184,12 @@ fn fixstep_world(case: Case) -> World<Fx> {
     let (body, joint) = match case {
         Case::Pendulum { release_deg, rod } => {
             let at = bob_start(release_deg);
-            let mut bob = BodyDesc::new(Shape::Sphere { radius: fx(BOB_RADIUS) }, v3(at));
+            let mut bob = BodyDesc::new(
+                Shape::Sphere {
+                    radius: fx(BOB_RADIUS),
+                },
+                v3(at),
+            );
             bob.density = fx(DENSITY);
             let joint = if rod {
                 JointDesc::new(JointKind::Rod { length: None }, 0, 1, Vec3::ZERO)
@@ -288,7 +299,9 @@ fn rapier_world(case: Case) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
             let pivot = world.insert_body(RigidBodyBuilder::fixed());
             let at = bob_start(release_deg);
             let (bob, _) = world.insert(
-                RigidBodyBuilder::dynamic().translation(vector(at)).can_sleep(false),
+                RigidBodyBuilder::dynamic()
+                    .translation(vector(at))
+                    .can_sleep(false),
                 ColliderBuilder::ball(BOB_RADIUS as f32).density(DENSITY as f32),
             );
             // The bob's anchor is the pivot, in the bob's frame (not turned at the start).
@@ -315,7 +328,11 @@ fn rapier_world(case: Case) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
         }
         Case::Cradle => {
             for k in 0..6 {
-                let (x, v) = if k == 0 { (-2.0, CRADLE_SPEED) } else { (f64::from(k - 1), 0.0) };
+                let (x, v) = if k == 0 {
+                    (-2.0, CRADLE_SPEED)
+                } else {
+                    (f64::from(k - 1), 0.0)
+                };
                 let (ball, _) = world.insert(
                     RigidBodyBuilder::dynamic()
                         .translation(vector([x, 0.0, 0.0]))
@@ -367,8 +384,14 @@ pub fn table(rapier: &str) {
     );
     println!("|---|---|---|---|---|---|");
     let cases = [
-        Case::Pendulum { release_deg: 90.0, rod: false },
-        Case::Pendulum { release_deg: 150.0, rod: false },
+        Case::Pendulum {
+            release_deg: 90.0,
+            rod: false,
+        },
+        Case::Pendulum {
+            release_deg: 150.0,
+            rod: false,
+        },
         Case::Wheel,
         Case::Cradle,
     ];
@@ -381,7 +404,10 @@ pub fn table(rapier: &str) {
         if let Case::Pendulum { release_deg, .. } = case {
             rows.push((
                 "fixstep I32F32, `Rod` joint (the bob does not turn)".into(),
-                fixstep_drift(Case::Pendulum { release_deg, rod: true }),
+                fixstep_drift(Case::Pendulum {
+                    release_deg,
+                    rod: true,
+                }),
             ));
         }
         rows.push((rapier.to_string(), rapier_drift(case)));
