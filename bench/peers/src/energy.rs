@@ -1,8 +1,8 @@
 //! `energy`: how much energy joints and touching contacts make or lose, fixstep beside
 //! Rapier on the same mechanical systems (issue [energy]). No timing: each run steps a
 //! fresh world at dt = 1/60 s with each engine's default solver (fixstep's 5 substeps,
-//! Rapier's 4 solver iterations; Rapier's gyroscopic forces at its default, off, which
-//! changes nothing for these bodies) and prints the energy drift, (E_end − E₀) and the
+//! Rapier's 4 solver iterations; Rapier's gyroscopic forces at its default, on) and
+//! prints the energy drift, (E_end − E₀) and the
 //! largest |E − E₀| over the run, as a percentage of the case's energy scale:
 //!
 //! - **pendulum 90° and 150°**: a ball of radius 0.1 m on a massless arm of 1.5 m from a
