@@ -13,9 +13,9 @@
 //! pushed during the step (a point with a nonzero normal impulse), with every pushing
 //! contact of those bodies, static and kinematic partners included. A chain is resolved
 //! here when one of its contacts between two moving bodies bounces (restitution e > 0, an
-//! approach faster than the threshold when the step began) and it has at least two
-//! contacts, however many points it has; other bounces keep the one-contact pass
-//! ([`ContactBlock::apply_restitution`]). For a chain:
+//! approach faster than the threshold when the step began), it has at least two
+//! contacts, and at most [`MAX_CHAIN_POINTS`] points; other bounces keep the one-contact
+//! pass ([`ContactBlock::apply_restitution`]). For a chain:
 //!
 //! 1. **Undo** the normal impulse P each of its points applied over the step (the sum of
 //!    the substeps' accumulated impulses): the bodies get back the velocities the step
@@ -30,11 +30,7 @@
 //!
 //!    with m_n the point's effective mass; stop when no point closes faster than
 //!    [`resolved_speed`] (2⁻¹⁶ m/s), or after 4 resolutions per point. A closing that
-//!    remains is the next step's contact solver's. The fastest is kept on top of a
-//!    binary heap and a resolution updates only the points sharing a moving body with it,
-//!    so a chain of P points costs O(P log P) for a bounded number of contacts per body
-//!    (a scan of every point per resolution, as until the limit of 128 points was lifted,
-//!    cost O(P²)); the order of resolutions, and so every bit, is the scan's.
+//!    remains is the next step's contact solver's.
 //!
 //! Each resolution changes the kinetic energy by ½ λ (v_n before + v_n after) =
 //! ½ λ (u − c) ≤ 0, so the pass never adds energy; with e = 1 each is an elastic
@@ -47,6 +43,10 @@ use super::super::body::{SolverBody, pair};
 use super::super::bounce::BouncePass;
 use super::ContactBlock;
 use crate::math::Real;
+
+/// The most points a chain may have for this pass to resolve it (its cost grows as the
+/// square of the points: each resolution looks for the fastest closing among them).
+pub(crate) const MAX_CHAIN_POINTS: usize = 128;
 
 /// Closing speeds at or below this are resolved, m/s (2⁻¹⁶).
 fn resolved_speed<R: Real>() -> R {
@@ -80,14 +80,6 @@ pub(crate) struct BounceChains<R: Real> {
     points: Vec<u32>,
     bounces: Vec<bool>,
     chain_points: Vec<ChainPoint<R>>,
-    /// The chain points each moving body takes part in: those of solver body i are
-    /// `touching[first[i]..first[i + 1]]`, indices into `chain_points`.
-    first: Vec<u32>,
-    touching: Vec<u32>,
-    /// The chain being resolved as a binary max-heap of its points (indices into
-    /// `chain_points`), the fastest closing on top, and each point's place in it.
-    heap: Vec<u32>,
-    place: Vec<u32>,
 }
 
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -143,7 +135,11 @@ impl<R: Real> BounceChains<R> {
                 }
             }
         }
-        let resolved = |chains: &Self, root: usize| chains.bounces[root] && chains.lanes[root] >= 2;
+        let resolved = |chains: &Self, root: usize| {
+            chains.bounces[root]
+                && chains.lanes[root] >= 2
+                && chains.points[root] as usize <= MAX_CHAIN_POINTS
+        };
         if !(0..n).any(|root| resolved(self, root)) {
             return;
         }
@@ -180,7 +176,6 @@ impl<R: Real> BounceChains<R> {
         }
         self.chain_points
             .sort_unstable_by_key(|cp| (cp.chain, cp.order));
-        self.list_touching(bodies);
         let mut start = 0;
         while start < self.chain_points.len() {
             let chain = self.chain_points[start].chain;
@@ -189,187 +184,68 @@ impl<R: Real> BounceChains<R> {
                     .iter()
                     .take_while(|cp| cp.chain == chain)
                     .count();
-            self.resolve_chain(start..end, blocks, bodies, pass);
+            resolve_chain(&mut self.chain_points[start..end], blocks, bodies, pass);
             start = end;
         }
     }
+}
 
-    /// Lists, for every moving body, the chain points it takes part in (`first`,
-    /// `touching`), in chain-point order: a counting sort over the bodies.
-    fn list_touching(&mut self, bodies: &[SolverBody<R>]) {
-        let moving = |i: u32| bodies[i as usize].inv_mass > R::ZERO;
-        self.first.clear();
-        self.first.resize(bodies.len() + 1, 0);
-        for cp in &self.chain_points {
-            for i in [cp.a, cp.b] {
-                if moving(i) {
-                    self.first[i as usize + 1] += 1;
-                }
-            }
-        }
-        for i in 1..self.first.len() {
-            self.first[i] += self.first[i - 1];
-        }
-        self.touching.clear();
-        self.touching.resize(self.first[bodies.len()] as usize, 0);
-        // `place` counts each body's points filled so far.
-        self.place.clear();
-        self.place.resize(bodies.len(), 0);
-        for (k, cp) in self.chain_points.iter().enumerate() {
-            for i in [cp.a, cp.b] {
-                if moving(i) {
-                    let at = self.first[i as usize] + self.place[i as usize];
-                    self.touching[at as usize] = k as u32;
-                    self.place[i as usize] += 1;
-                }
-            }
-        }
+/// Undoes the step's normal impulses of one chain's points and resolves them one at a
+/// time, the fastest closing first (the module documentation's steps 1 and 2).
+fn resolve_chain<R: Real>(
+    points: &mut [ChainPoint<R>],
+    blocks: &mut [ContactBlock<R>],
+    bodies: &mut [SolverBody<R>],
+    pass: &BouncePass<R>,
+) {
+    for cp in points.iter() {
+        let block = &blocks[cp.block as usize];
+        let undo = -block.points[usize::from(cp.point)].step_impulse[usize::from(cp.lane)];
+        block.push_point(bodies, cp.lane.into(), cp.point.into(), undo);
     }
-
-    /// Undoes the step's normal impulses of one chain's points (`chain`, a range of
-    /// `chain_points`) and resolves them one at a time, the fastest closing first (the
-    /// module documentation's steps 1 and 2). The fastest is kept on top of a binary heap
-    /// ordered by closing speed, then by chain-point order (the first among equals), and a
-    /// resolution updates only the points that share a moving body with it: the work is
-    /// O(log P) per point touched, not O(P) per resolution.
-    fn resolve_chain(
-        &mut self,
-        chain: std::ops::Range<usize>,
-        blocks: &mut [ContactBlock<R>],
-        bodies: &mut [SolverBody<R>],
-        pass: &BouncePass<R>,
-    ) {
-        let base = chain.start;
-        let points = &mut self.chain_points[chain];
-        for cp in points.iter() {
-            let block = &blocks[cp.block as usize];
-            let undo = -block.points[usize::from(cp.point)].step_impulse[usize::from(cp.lane)];
-            block.push_point(bodies, cp.lane.into(), cp.point.into(), undo);
+    for cp in points.iter_mut() {
+        cp.closing =
+            -blocks[cp.block as usize].normal_speed(bodies, cp.lane.into(), cp.point.into());
+    }
+    let settled = resolved_speed::<R>();
+    for _ in 0..4 * points.len() {
+        let mut fastest = 0;
+        for (k, cp) in points.iter().enumerate() {
+            if cp.closing > points[fastest].closing {
+                fastest = k;
+            }
         }
-        for cp in points.iter_mut() {
-            cp.closing =
-                -blocks[cp.block as usize].normal_speed(bodies, cp.lane.into(), cp.point.into());
+        let cp = points[fastest];
+        if cp.closing <= settled {
+            break;
         }
-        let mut heap = Heap {
-            points,
-            heap: &mut self.heap,
-            place: &mut self.place,
+        let block = &blocks[cp.block as usize];
+        let (l, p) = (usize::from(cp.lane), usize::from(cp.point));
+        let restitution = block.restitution[l];
+        let leaving = if cp.closing > pass.threshold {
+            restitution * cp.closing
+        } else {
+            R::ZERO
         };
-        heap.build();
-        let settled = resolved_speed::<R>();
-        for _ in 0..4 * heap.points.len() {
-            let cp = heap.points[heap.heap[0] as usize];
-            if cp.closing <= settled {
-                break;
-            }
-            let block = &blocks[cp.block as usize];
-            let (l, p) = (usize::from(cp.lane), usize::from(cp.point));
-            let restitution = block.restitution[l];
-            let leaving = if cp.closing > pass.threshold {
-                restitution * cp.closing
-            } else {
-                R::ZERO
-            };
-            let impulse = block.points[p].normal_mass[l] * (leaving + cp.closing);
-            block.push_point(bodies, l, p, impulse);
-            for i in [cp.a, cp.b] {
-                if bodies[i as usize].inv_mass == R::ZERO {
-                    continue;
-                }
-                let around = self.first[i as usize] as usize..self.first[i as usize + 1] as usize;
-                for &k in &self.touching[around] {
-                    let k = k as usize - base;
-                    let other = heap.points[k];
-                    heap.points[k].closing = -blocks[other.block as usize].normal_speed(
-                        bodies,
-                        other.lane.into(),
-                        other.point.into(),
-                    );
-                    heap.restore(k);
-                }
-            }
-        }
-        for cp in heap.points.iter() {
-            if cp.closing < -settled {
-                blocks[cp.block as usize].points[usize::from(cp.point)].normal_impulse
-                    [usize::from(cp.lane)] = R::ZERO;
+        let impulse = block.points[p].normal_mass[l] * (leaving + cp.closing);
+        block.push_point(bodies, l, p, impulse);
+        let touched = |i: u32| i == cp.a || i == cp.b;
+        for other in points.iter_mut() {
+            let shares = (touched(other.a) && bodies[other.a as usize].inv_mass > R::ZERO)
+                || (touched(other.b) && bodies[other.b as usize].inv_mass > R::ZERO);
+            if shares {
+                other.closing = -blocks[other.block as usize].normal_speed(
+                    bodies,
+                    other.lane.into(),
+                    other.point.into(),
+                );
             }
         }
     }
-}
-
-/// A binary max-heap over one chain's points (indices into `points`), ordered by closing
-/// speed and then by index, the smaller first: its top is the first point of the largest
-/// closing, as a scan in order would find it. `place[k]` is point k's place in `heap`.
-struct Heap<'a, R: Real> {
-    points: &'a mut [ChainPoint<R>],
-    heap: &'a mut Vec<u32>,
-    place: &'a mut Vec<u32>,
-}
-
-impl<R: Real> Heap<'_, R> {
-    /// Whether point `i` comes before point `j`.
-    fn before(&self, i: u32, j: u32) -> bool {
-        let (ci, cj) = (
-            self.points[i as usize].closing,
-            self.points[j as usize].closing,
-        );
-        ci > cj || (ci == cj && i < j)
-    }
-
-    fn swap(&mut self, x: usize, y: usize) {
-        self.heap.swap(x, y);
-        self.place[self.heap[x] as usize] = x as u32;
-        self.place[self.heap[y] as usize] = y as u32;
-    }
-
-    /// Orders every point (Floyd's heap construction).
-    fn build(&mut self) {
-        let n = self.points.len();
-        self.heap.clear();
-        self.heap.extend(0..n as u32);
-        self.place.clear();
-        self.place.extend(0..n as u32);
-        for x in (0..n / 2).rev() {
-            self.down(x);
-        }
-    }
-
-    /// Moves point `k`, whose closing changed, to its place.
-    fn restore(&mut self, k: usize) {
-        let x = self.place[k] as usize;
-        let x = self.up(x);
-        self.down(x);
-    }
-
-    fn up(&mut self, mut x: usize) -> usize {
-        while x > 0 {
-            let parent = (x - 1) / 2;
-            if !self.before(self.heap[x], self.heap[parent]) {
-                break;
-            }
-            self.swap(x, parent);
-            x = parent;
-        }
-        x
-    }
-
-    fn down(&mut self, mut x: usize) {
-        let n = self.heap.len();
-        loop {
-            let (left, right) = (2 * x + 1, 2 * x + 2);
-            let mut best = x;
-            if left < n && self.before(self.heap[left], self.heap[best]) {
-                best = left;
-            }
-            if right < n && self.before(self.heap[right], self.heap[best]) {
-                best = right;
-            }
-            if best == x {
-                return;
-            }
-            self.swap(x, best);
-            x = best;
+    for cp in points.iter() {
+        if cp.closing < -settled {
+            blocks[cp.block as usize].points[usize::from(cp.point)].normal_impulse
+                [usize::from(cp.lane)] = R::ZERO;
         }
     }
 }
