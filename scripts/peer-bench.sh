@@ -10,7 +10,8 @@
 #   ./scripts/peer-bench.sh --threads N [ROUNDS] [SCENE ...]
 # SCENE also takes `queries` (rays and sphere overlaps on balls and pyramid, queries/s) and
 # `filters` (fixstep's balls with non-default filters against the default) and `characters`
-# (1000 characters among 10,000 boxes beside Rapier's KinematicCharacterController).
+# (1000 characters among 10,000 boxes beside Rapier's KinematicCharacterController) and `energy`
+# (energy drift of pendulums, a spinning hinge wheel and a touching cradle; no timing).
 # --wasm: what a browser game pays. Builds the comparison for wasm32-wasip1, with Rapier's
 # enhanced-determinism mode only (its cross-platform mode, the one fixstep is compared
 # with), once plain and once with RUSTFLAGS="-C target-feature=+simd128" (fixstep's
@@ -36,7 +37,7 @@ while [[ $# -gt 0 ]]; do
         echo "error: --threads takes a positive whole number, not \`$threads\`" >&2
         exit 2
       fi ;;
-    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "error: unknown option \`$a\` (see --help)" >&2; exit 2 ;;
     *) args+=("$a") ;;
   esac

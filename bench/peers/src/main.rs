@@ -35,10 +35,14 @@
 //! Characters (`characters`, [`characters`]): 1000 kinematic characters among 10,000 static
 //! boxes, fixstep's beside Rapier's `KinematicCharacterController`, ms per tick.
 //!
+//! Energy (`energy`, [`energy`]): the energy drift of pendulums, a spinning hinge wheel
+//! and a touching cradle, fixstep's beside Rapier's (no timing).
+//!
 //! Usage: `fixstep-peers [ROUNDS] [SCENE …]`, SCENE one of pyramid, balls, falling, water,
-//! dam_break, queries, filters, characters; none means every one.
+//! dam_break, queries, filters, characters, energy; none means every one.
 
 mod characters;
+mod energy;
 mod fixstep_side;
 mod quality;
 mod queries;
@@ -116,7 +120,7 @@ fn main() {
             && !OTHER_BENCHES.contains(&w.as_str())
     }) {
         eprintln!(
-            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, hills, hills_mesh, water, dam_break, queries, filters, characters"
+            "error: no scene `{unknown}`; the scenes are pyramid, balls, falling, hills, hills_mesh, water, dam_break, queries, filters, characters, energy"
         );
         std::process::exit(2);
     }
@@ -181,13 +185,16 @@ fn main() {
     if other("characters") {
         characters::table(rounds, rapier);
     }
+    if other("energy") {
+        energy::table(rapier);
+    }
     for scene in fluids {
         fluid_table(scene, rounds);
     }
 }
 
 /// The benches that are not a scene of their own.
-const OTHER_BENCHES: [&str; 3] = ["queries", "filters", "characters"];
+const OTHER_BENCHES: [&str; 4] = ["queries", "filters", "characters", "energy"];
 
 /// fixstep's `balls` (500 steps, sleeping off) with the default filter and with every body
 /// on layer 1 interacting with every layer, interleaved: the cost of the collide stage's

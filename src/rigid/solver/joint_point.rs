@@ -62,6 +62,7 @@ impl<R: Real> PointBlock<R> {
 
     /// ½ h κ for anchors `r_a`, `r_b` (m) on bodies turning at their current ω, over a
     /// substep of `h` seconds: κ = ω_b × (ω_b × r_b) − ω_a × (ω_a × r_a) (m/s²).
+    #[inline]
     pub fn drift_of(
         r_a: Vec3<R>,
         r_b: Vec3<R>,
@@ -74,6 +75,7 @@ impl<R: Real> PointBlock<R> {
     }
 
     /// Ċ + ½ h κ for the bodies' current velocities, m/s.
+    #[inline]
     pub fn velocity(&self, ba: &SolverBody<R>, bb: &SolverBody<R>) -> Vec3<R> {
         (bb.v + bb.w.cross(self.r_b)) - (ba.v + ba.w.cross(self.r_a)) + self.drift
     }

@@ -141,6 +141,7 @@ impl<R: Real> JointRow<R> {
     }
 
     /// Ċ + ½ h κ for the bodies' current velocities (Ċ alone for a row without drift).
+    #[inline]
     pub fn velocity(&self, ba: &SolverBody<R>, bb: &SolverBody<R>) -> R {
         (bb.v - ba.v).dot_fused(self.linear) + bb.w.dot_fused(self.angular_b)
             - ba.w.dot_fused(self.angular_a)
