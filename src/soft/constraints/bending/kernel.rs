@@ -1,5 +1,5 @@
 //! The bending rows of I32F32 on the lanes of [`Wide`] (every backend): eight hinges side by
-//! side, one `i64` lane per hinge, with the bits of the scalar row ([`Hinges::solve_row`]).
+//! side, one `i64` lane per hinge, with the bits of the scalar row ([`HingeRun::solve_row`]).
 //!
 //! Hinges that share no vertex read nothing the others write, so solving eight of them
 //! together gives the bits of solving them one after another; the blocks of eight
