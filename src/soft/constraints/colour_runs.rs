@@ -27,6 +27,7 @@ pub(crate) struct ColourRuns<const K: usize> {
     /// The same, row by row.
     pub local_rows: Vec<[u32; K]>,
     /// All true: the blocks of eight rows of a chunk share no vertex.
+    #[cfg(vector_kernels)]
     pub independent: Vec<bool>,
 }
 
@@ -79,6 +80,7 @@ impl<const K: usize> ColourRuns<K> {
             offsets,
             local,
             local_rows,
+            #[cfg(vector_kernels)]
             independent: vec![true; chunk.div_ceil(8)],
         }
     }
