@@ -104,7 +104,7 @@ run_target() {
   local inputs=("corpus/$t" "seeds/$t")
   mkdir -p "fuzz/corpus/$t"
   # The kept inputs are replayed, and mutated only by an open-ended run (`run TARGET`
-  # without seconds): a timed run (the test command's 10 s) that mutates a kept time-out
+  # without seconds): a timed run (the test command's 5 s) that mutates a kept time-out
   # can find a variant slower still, failing the test command for a known reason that no
   # change under test caused.
   if [[ -d fuzz/regressions/$t && ( $mode == replay || $mode == forever ) ]]; then

@@ -5,7 +5,7 @@
 # again in release (each run re-simulates every committed replay), the determinism matrix's
 # i686 row, the lints for i686, the wasm package and the live page in headless Chromium
 # (scripts/web-test.sh), and the fuzz smoke run (every seed and kept crash through every
-# fuzz target, then 10 s of fuzzing per target). It ends with one line totalling both test
+# fuzz target, then 5 s of fuzzing per target). It ends with one line totalling both test
 # runs: `tests: N passed, N failed`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -54,7 +54,7 @@ cargo clippy -p fixstep --all-targets --locked --target i686-unknown-linux-gnu \
 # The wasm package and the live page in headless Chromium: the page's checksums are the
 # native ones, every committed replay verifies in the browser (docs/web.md).
 ./scripts/web-test.sh
-./scripts/fuzz.sh smoke 10
+./scripts/fuzz.sh smoke 5
 
 awk '/^test result:/ { passed += $4; failed += $6 }
      END { printf "tests: %d passed, %d failed\n", passed, failed }' "$log"
