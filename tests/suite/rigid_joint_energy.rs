@@ -68,6 +68,12 @@ fn body(world: &World<Fx>, k: usize) -> Handle {
         .expect("body")
 }
 
+/// The mass of body `k` (kg).
+fn mass(world: &World<Fx>, k: usize) -> f64 {
+    let rigid = world.rigid().expect("rigid");
+    rigid.mass(body(world, k)).expect("live").to_f64()
+}
+
 // ---------------------------------------------------------------------------------------
 // The heavy top.
 
@@ -243,7 +249,7 @@ fn pendulum_world(release_deg: f64) -> World<Fx> {
 fn sphere_energy(world: &World<Fx>, k: usize, radius: f64) -> f64 {
     let rigid = world.rigid().expect("rigid");
     let h = body(world, k);
-    let m = rigid.mass(h).expect("live").to_f64();
+    let m = mass(world, k);
     let v = f3(rigid.linear_velocity(h).expect("live"));
     let w = f3(rigid.angular_velocity(h).expect("live"));
     let y = rigid.position(h).expect("live").y.to_f64();
@@ -263,12 +269,7 @@ struct PendulumRun {
 fn run_pendulum(release_deg: f64, periods: usize) -> PendulumRun {
     let mut world = pendulum_world(release_deg);
     let h = body(&world, 1);
-    let m = world
-        .rigid()
-        .expect("rigid")
-        .mass(h)
-        .expect("live")
-        .to_f64();
+    let m = mass(&world, 1);
     let e0 = sphere_energy(&world, 1, BOB_RADIUS);
     let reference = pendulum_period(ROD, release_deg.to_radians());
     let ticks = ((periods as f64 + 0.75) * reference / DT) as usize;
@@ -438,12 +439,7 @@ fn hinge_wheel_keeps_its_spin_and_energy() {
     ] {
         let mut world = wheel_world(axis);
         let h = body(&world, 1);
-        let m = world
-            .rigid()
-            .expect("rigid")
-            .mass(h)
-            .expect("live")
-            .to_f64();
+        let m = mass(&world, 1);
         let i3 = 0.5 * m * WHEEL_RADIUS * WHEEL_RADIUS;
         let i1 = m * (WHEEL_RADIUS * WHEEL_RADIUS / 4.0 + WHEEL_HALF * WHEEL_HALF / 3.0);
         let energy = |w: &World<Fx>| {
